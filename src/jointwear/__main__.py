@@ -1,0 +1,5 @@
+"""``python -m jointwear``."""
+
+from jointwear.cli import main
+
+main()

@@ -1,0 +1,62 @@
+"""The ``jointwear`` command line.
+
+Each command lives in its own module and registers itself on :data:`app`.
+Errors the user can fix (:class:`~jointwear.errors.JointwearError`, bad
+options) end with a one-line message on stderr and exit status 2; anything
+else is an internal error (exit 1). ``--debug`` shows the traceback.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import click
+import typer
+
+from jointwear.cli.common import app, err_console
+from jointwear.errors import JointwearError
+
+# command modules register themselves on ``app`` when imported
+from jointwear.cli import contact_cmd  # noqa: F401  isort: skip
+from jointwear.cli import dynamics_cmd  # noqa: F401  isort: skip
+from jointwear.cli import run_cmd  # noqa: F401  isort: skip
+from jointwear.cli import reproduce_cmd  # noqa: F401  isort: skip
+
+__all__ = ["app", "main"]
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Entry point of the ``jointwear`` console script."""
+    args = list(sys.argv[1:] if argv is None else argv)
+    debug = "--debug" in args
+    command = typer.main.get_command(app)
+    try:
+        command.main(args=args, prog_name="jointwear", standalone_mode=False)
+    except JointwearError as exc:
+        if debug:
+            raise
+        err_console.print(f"error: {exc}", markup=False, highlight=False, soft_wrap=True)
+        sys.exit(2)
+    except click.exceptions.Exit as exc:
+        sys.exit(exc.exit_code)
+    except click.ClickException as exc:
+        if debug:
+            raise
+        message = exc.format_message().replace("\n", " ")
+        err_console.print(f"error: {message}", markup=False, highlight=False, soft_wrap=True)
+        sys.exit(2)
+    except click.exceptions.Abort:
+        err_console.print("aborted")
+        sys.exit(130)
+    except KeyboardInterrupt:
+        sys.exit(130)
+    except Exception as exc:
+        if debug:
+            raise
+        err_console.print(
+            f"internal error: {type(exc).__name__}: {exc} (rerun with --debug for the traceback)",
+            markup=False,
+            highlight=False,
+            soft_wrap=True,
+        )
+        sys.exit(1)

@@ -1,0 +1,77 @@
+"""Shared pieces of the CLI: the app, consoles, common options, output helpers."""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+from rich.console import Console
+
+from jointwear.config import Config, load_config
+from jointwear.errors import ConfigError
+
+__all__ = [
+    "ConfigArg",
+    "DebugOpt",
+    "JsonOpt",
+    "SetOpt",
+    "app",
+    "console",
+    "emit_json",
+    "err_console",
+    "load",
+]
+
+app = typer.Typer(
+    name="jointwear",
+    help="Wear of planar revolute joints with clearance (NLCP / Winkler / Hertz + Archard).",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+console = Console(highlight=False)
+err_console = Console(stderr=True, highlight=False)
+
+ConfigArg = Annotated[Path, typer.Argument(help="Config file (TOML).", show_default=False)]
+SetOpt = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--set",
+        help="Override a config value: section.key=VALUE "
+        '(units allowed, e.g. joint.clearance="0.2 mm").',
+    ),
+]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print exactly one JSON object on stdout.")]
+DebugOpt = Annotated[bool, typer.Option("--debug", help="Show tracebacks.")]
+
+
+@app.callback()
+def _root(debug: DebugOpt = False) -> None:
+    """Wear of planar revolute joints with clearance."""
+
+
+def load(config: Path, overrides: list[str] | None) -> Config:
+    """Load a config file with ``--set`` overrides (errors name the file or key)."""
+    if not config.exists():
+        raise ConfigError(f"{config}: file not found")
+    return load_config(config, overrides or [])
+
+
+def emit_json(data: dict[str, Any]) -> None:
+    """Print one JSON object on stdout (non-finite numbers become null)."""
+
+    def clean(value: Any) -> Any:
+        if (isinstance(value, float) and value != value) or value in (float("inf"), float("-inf")):
+            return None
+        if isinstance(value, dict):
+            return {k: clean(v) for k, v in value.items()}
+        if isinstance(value, list | tuple):
+            return [clean(v) for v in value]
+        return value
+
+    sys.stdout.write(json.dumps(clean(data)) + "\n")
+    sys.stdout.flush()

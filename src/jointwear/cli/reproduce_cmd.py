@@ -1,0 +1,64 @@
+"""``jointwear reproduce``: the paper's tables and figures, with a report."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from jointwear.cli.common import JsonOpt, SetOpt, app, console, emit_json, err_console
+from jointwear.config import parse_override
+
+
+@app.command()
+def reproduce(
+    out: Annotated[
+        Path, typer.Option("--out", help="Folder for report.md, figures/ and results/.")
+    ] = Path("reproduction"),
+    case: Annotated[
+        list[str] | None, typer.Option("--case", help="Run only these paper cases (repeatable).")
+    ] = None,
+    calibrate: Annotated[
+        bool,
+        typer.Option(
+            "--calibrate/--no-calibrate",
+            help="Calibrate the undisclosed parameters on Table 3, Winkler, 120 rpm first.",
+        ),
+    ] = True,
+    set_: SetOpt = None,
+    json_: JsonOpt = False,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q")] = False,
+) -> None:
+    """Run the paper's cases (Tables 3-5, Figs. 8-15) and write OUT/report.md."""
+    from jointwear.reproduce import case_names
+    from jointwear.reproduce import reproduce as run_reproduction
+
+    if case:
+        known = case_names()
+        for name in case:
+            if name not in known:
+                from jointwear.errors import ConfigError
+                from jointwear.registry import suggest
+
+                raise ConfigError(f"--case: unknown paper case {name!r}{suggest(name, known)}")
+    overrides = dict(parse_override(o) for o in (set_ or []))
+
+    def progress(name: str, done: int, total: int) -> None:
+        if not quiet and not json_ and name != "done":
+            err_console.print(f"[{done + 1}/{total}] {name}", highlight=False)
+
+    report = run_reproduction(
+        out, progress=progress, calibrate=calibrate, cases=case, overrides=overrides
+    )
+    if json_:
+        from jointwear.reproduce import _jsonable
+
+        emit_json(_jsonable({k: v for k, v in report.items()}))
+        return
+    holds = sum(t["holds"] for t in report["trends"])
+    console.print(
+        f"report: {out / 'report.md'}  ({len(report['cases'])} cases, "
+        f"trends holding {holds}/{len(report['trends'])}, "
+        f"{report['total_runtime_s']:.1f} s)"
+    )

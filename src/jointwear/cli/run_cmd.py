@@ -1,0 +1,183 @@
+"""``jointwear run`` and ``jointwear plot``."""
+
+from __future__ import annotations
+
+import math
+import shutil
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.table import Table
+
+from jointwear.cli.common import (
+    ConfigArg,
+    JsonOpt,
+    SetOpt,
+    app,
+    console,
+    emit_json,
+    err_console,
+    load,
+)
+
+OutOpt = Annotated[
+    Path | None,
+    typer.Option(
+        "--out", help="Write result.nc, metrics.csv, config.toml, summary.json and plots here."
+    ),
+]
+QuietOpt = Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")]
+
+
+class ProgressBar:
+    """A rich progress bar on stderr that appears only for runs longer than a second.
+
+    Off when ``quiet`` or when stderr is not a terminal.
+    """
+
+    def __init__(self, description: str, quiet: bool = False, delay: float = 1.0) -> None:
+        self.enabled = not quiet and sys.stderr.isatty()
+        self.description = description
+        self.delay = delay
+        self.start = time.perf_counter()
+        self._bar = None
+        self._task = None
+
+    def __call__(self, done: int, total: int) -> None:
+        if not self.enabled:
+            return
+        if self._bar is None:
+            if time.perf_counter() - self.start < self.delay or done >= total:
+                return
+            from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+            self._bar = Progress(
+                "{task.description}",
+                BarColumn(),
+                MofNCompleteColumn(),
+                TimeRemainingColumn(),
+                console=err_console,
+                transient=True,
+            )
+            self._bar.start()
+            self._task = self._bar.add_task(self.description, total=total)
+        self._bar.update(self._task, completed=done)
+
+    def close(self) -> None:
+        if self._bar is not None:
+            self._bar.stop()
+            self._bar = None
+
+    def __enter__(self) -> ProgressBar:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+def write_outputs(result, out: Path, plots: bool = True) -> None:
+    """Write a run's files into ``out``: all or nothing (staged, then moved in)."""
+    from jointwear.io import write_json
+    from jointwear.results import write_metrics_csv
+
+    out.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=".staging-", dir=out))
+    try:
+        result.to_netcdf(staging / "result.nc")
+        write_metrics_csv(result.dataset, staging / "metrics.csv")
+        (staging / "config.toml").write_text(
+            "# fully resolved configuration, SI units\n" + result.config.to_toml(), encoding="utf-8"
+        )
+        write_json(staging / "summary.json", result.summary())
+        if plots:
+            from jointwear.plots import plot_result
+
+            plot_result(result.dataset, staging / "plots")
+        for item in staging.iterdir():
+            target = out / item.name
+            if target.is_dir() and item.is_dir():
+                shutil.rmtree(target)
+            item.replace(target)
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
+
+
+def summary_table(summary: dict, title: str) -> Table:
+    table = Table(title=title)
+    table.add_column("metric")
+    table.add_column("value", justify="right")
+    table.add_row("wear peak", f"{summary['peak_wear_depth_m'] * 1e3:.6g} mm")
+    table.add_row("wear width", f"{summary['wear_width_deg']:.4g}°")
+    table.add_row("wear mass", f"{summary['wear_mass_kg'] * 1e3:.6g} g")
+    table.add_row("wear volume", f"{summary['wear_volume_m3'] * 1e9:.6g} mm³")
+    table.add_row("min. wall left", f"{summary['min_wall_thickness_m'] * 1e3:.6g} mm")
+    table.add_row("revolutions", f"{summary['revolutions']}")
+    table.add_row("contour updates", f"{summary['contour_updates']}")
+    table.add_row("run time", f"{summary['runtime_s']:.3g} s")
+    return table
+
+
+@app.command()
+def run(
+    config: ConfigArg,
+    set_: SetOpt = None,
+    out: OutOpt = None,
+    json_: JsonOpt = False,
+    quiet: QuietOpt = False,
+    plots: Annotated[
+        bool, typer.Option("--plots/--no-plots", help="Draw figures into OUT/plots.")
+    ] = True,
+) -> None:
+    """Simulate wear over revolutions (dynamics -> pressure -> Archard -> contour update)."""
+    from jointwear.simulation import Simulation
+
+    cfg = load(config, set_)
+    simulation = Simulation(cfg)
+    with ProgressBar("revolutions", quiet=quiet) as bar:
+        result = simulation.run(progress=bar)
+    if out is not None:
+        write_outputs(result, out, plots=plots)
+    summary = result.summary()
+    if json_:
+        emit_json(summary)
+    else:
+        console.print(summary_table(summary, f"{config.name}: {summary['contact_model']}"))
+        if out is not None:
+            console.print(f"results in {out}/")
+
+
+@app.command()
+def plot(
+    result: Annotated[Path, typer.Argument(help="A result.nc written by `jointwear run --out`.")],
+    out: Annotated[
+        Path | None,
+        typer.Option("--out", help="Folder for the figures (default: next to the result, plots/)."),
+    ] = None,
+    magnification: Annotated[
+        str, typer.Option(help='Polar wear magnification, a number or "auto".')
+    ] = "auto",
+) -> None:
+    """Redraw the figures of a saved result."""
+    from jointwear.errors import ConfigError
+    from jointwear.plots import plot_result
+    from jointwear.results import read_result
+
+    dataset = read_result(result)
+    if magnification != "auto":
+        try:
+            value = float(magnification)
+        except ValueError:
+            raise ConfigError(
+                f"--magnification: expected a number or 'auto', got {magnification!r}"
+            ) from None
+        if not (math.isfinite(value) and value > 0):
+            raise ConfigError("--magnification: must be a positive number")
+    else:
+        value = "auto"
+    target = out if out is not None else result.parent / "plots"
+    paths = plot_result(dataset, target, magnification=value)
+    console.print(f"{len(paths)} files written to {target}/")

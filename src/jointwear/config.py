@@ -1,0 +1,395 @@
+"""Validated configuration: TOML in, SI floats out.
+
+Every quantity in a config file is a plain number (SI) or a string with units
+(``"0.2 mm"``, ``"240 rpm"``). :func:`load_config` reads a file, applies
+``--set section.key=VALUE`` overrides and returns a :class:`Config` whose
+fields are SI floats. Any problem raises :class:`~jointwear.errors.ConfigError`
+with a one-line message that starts with the dotted key.
+
+Defaults come from a named parameter set (:mod:`jointwear.parameter_sets`),
+``nlcp-paper`` unless the file says ``parameter_set = "..."``.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import tomllib
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
+
+from jointwear.errors import ConfigError
+from jointwear.parameter_sets import get_parameter_set
+from jointwear.registry import suggest
+from jointwear.units import to_si
+
+__all__ = [
+    "Config",
+    "ContactConfig",
+    "DynamicsConfig",
+    "JointConfig",
+    "MaterialConfig",
+    "MechanismConfig",
+    "SimulationConfig",
+    "apply_overrides",
+    "config_from_dict",
+    "load_config",
+    "parse_override",
+]
+
+
+def _si(kind: str):
+    def convert(value: Any) -> Any:
+        if value is None:
+            return None
+        try:
+            return to_si(value, kind, "§")
+        except ConfigError as exc:
+            raise ValueError(str(exc).removeprefix("§: ")) from None
+
+    return BeforeValidator(convert)
+
+
+Length = Annotated[float, _si("length"), Field(gt=0)]
+NonNegLength = Annotated[float, _si("length"), Field(ge=0)]
+Mass = Annotated[float, _si("mass"), Field(gt=0)]
+NonNegMass = Annotated[float, _si("mass"), Field(ge=0)]
+Force = Annotated[float, _si("force"), Field(ge=0)]
+Stiffness = Annotated[float, _si("stiffness"), Field(ge=0)]
+Pressure = Annotated[float, _si("pressure"), Field(gt=0)]
+AngularVelocity = Annotated[float, _si("angular_velocity"), Field(gt=0)]
+Acceleration = Annotated[float, _si("acceleration"), Field(ge=0)]
+Density = Annotated[float, _si("density"), Field(gt=0)]
+WearCoefficient = Annotated[float, _si("wear_coefficient"), Field(ge=0)]
+PoissonRatio = Annotated[float, _si("dimensionless"), Field(gt=-1.0, lt=0.5)]
+
+
+class _Section(BaseModel):
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True)
+
+
+class MechanismConfig(_Section):
+    """Slider-crank data (paper Table 1, read in SI) and operating point."""
+
+    crank_length: Length
+    rod_length: Length
+    crank_mass: NonNegMass
+    rod_mass: NonNegMass
+    slider_mass: NonNegMass
+    rod_inertia: Annotated[float | None, _si("moment_of_inertia"), Field(ge=0)] = None
+    spring_stiffness: Stiffness
+    spring_preload: Force
+    spring_mode: Literal["pull", "push"] = "pull"
+    crank_speed: AngularVelocity
+    gravity: Acceleration = 9.81
+    bushing_body: Literal["slider", "rod"] = "slider"
+
+    @model_validator(mode="after")
+    def _assembles(self) -> MechanismConfig:
+        if self.crank_length >= self.rod_length:
+            raise ValueError(
+                f"mechanism.crank_length: the mechanism cannot assemble with crank_length "
+                f"({self.crank_length:g} m) >= rod_length ({self.rod_length:g} m)"
+            )
+        return self
+
+    @property
+    def rod_centroidal_inertia(self) -> float:
+        """Rod inertia about its centre [kg m^2]; ``m2 l2^2 / 12`` unless given."""
+        if self.rod_inertia is not None:
+            return self.rod_inertia
+        return self.rod_mass * self.rod_length**2 / 12.0
+
+
+class JointConfig(_Section):
+    """Clearance joint geometry (paper Table 2, read in SI)."""
+
+    pin_radius: Length
+    clearance: Length
+    axial_length: Length
+    bushing_thickness: Length
+
+    @property
+    def bushing_radius(self) -> float:
+        """Unworn bushing inner radius [m] = pin radius + radial clearance."""
+        return self.pin_radius + self.clearance
+
+
+class MaterialConfig(_Section):
+    """Elastic (and, for the bushing, wear) properties of one body."""
+
+    youngs_modulus: Pressure
+    poisson_ratio: PoissonRatio
+    density: Density | None = None
+    wear_coefficient: WearCoefficient | None = None
+
+
+class MaterialsConfig(_Section):
+    pin: MaterialConfig
+    bushing: MaterialConfig
+
+    @model_validator(mode="after")
+    def _bushing_complete(self) -> MaterialsConfig:
+        for key in ("density", "wear_coefficient"):
+            if getattr(self.bushing, key) is None:
+                raise ValueError(f"materials.bushing.{key}: missing (needed for wear)")
+        return self
+
+
+class ContactConfig(_Section):
+    """Contact pressure model and the load-balance solver."""
+
+    model: str = "winkler"
+    exponent: Annotated[float, Field(gt=0, le=10)] = 1.5
+    nodes: Annotated[int, Field(ge=16, le=200_000)] = 360
+    tolerance: Annotated[float, _si("force"), Field(gt=0)] = 1e-12
+    max_iterations: Annotated[int, Field(ge=1, le=10_000)] = 100
+    foundation_modulus: Literal["youngs", "constrained"] = "youngs"
+    spring_area: Annotated[float | None, _si("area"), Field(gt=0)] = None
+    balance: Literal["paper", "equilibrium"] = "paper"
+    nlcp_variant: Literal["paper", "mesh-independent"] = "paper"
+
+    @field_validator("model")
+    @classmethod
+    def _known_model(cls, value: str) -> str:
+        from jointwear.contact import CONTACT_MODELS
+
+        if value not in CONTACT_MODELS:
+            raise ValueError(f"unknown contact model {value!r}{suggest(value, CONTACT_MODELS)}")
+        return value
+
+
+class DynamicsConfig(_Section):
+    """Which dynamics model produces the joint load."""
+
+    model: str = "massless-link"
+    strict: bool = False
+    fixed_point_tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-12
+    max_iterations: Annotated[int, Field(ge=1, le=1000)] = 50
+
+
+class SimulationConfig(_Section):
+    """Time discretisation, number of revolutions and contour updates."""
+
+    steps_per_revolution: Annotated[int, Field(ge=8, le=1_000_000)] = 360
+    revolutions: Annotated[int, Field(ge=1, le=10**9)] = 1
+    update_contour: bool = False
+    update_every: Annotated[int, Field(ge=1)] | Literal["adaptive"] = 1
+    adaptive_tolerance: Annotated[float, Field(gt=0, lt=1)] = 2e-3
+    sliding: Literal["relative-rotation", "contact-azimuth"] = "relative-rotation"
+    width_threshold: Annotated[float, Field(gt=0, lt=1)] = 0.01
+    saved_profiles: Annotated[int, Field(ge=1, le=100_000)] = 11
+    checkpoint_every: Annotated[int, Field(ge=0)] = 0
+
+
+class Config(_Section):
+    """A whole jointwear configuration (all values SI)."""
+
+    parameter_set: str = "nlcp-paper"
+    mechanism: MechanismConfig
+    joint: JointConfig
+    materials: MaterialsConfig
+    contact: ContactConfig = ContactConfig()
+    dynamics: DynamicsConfig = DynamicsConfig()
+    simulation: SimulationConfig = SimulationConfig()
+
+    @property
+    def bushing_radius(self) -> float:
+        """Unworn bushing inner radius [m]."""
+        return self.joint.bushing_radius
+
+    @property
+    def default_spring_area(self) -> float:
+        """Area of a 1 degree spring at the unworn bushing radius [m^2]."""
+        return self.joint.bushing_radius * math.radians(1.0) * self.joint.axial_length
+
+    @property
+    def spring_area(self) -> float:
+        """NLCP spring area [m^2]: ``contact.spring_area`` or the 1 degree default."""
+        if self.contact.spring_area is not None:
+            return self.contact.spring_area
+        return self.default_spring_area
+
+    def to_dict(self) -> dict[str, Any]:
+        """Fully resolved config as plain data (SI numbers, every default written)."""
+        data = self.model_dump(mode="json")
+        data["mechanism"]["rod_inertia"] = self.mechanism.rod_centroidal_inertia
+        data["contact"]["spring_area"] = self.spring_area
+        return data
+
+    def to_toml(self) -> str:
+        """The resolved config as TOML text (SI units, noted in comments)."""
+        return _dump_toml(self.to_dict())
+
+    def replace(self, overrides: Mapping[str, Any]) -> Config:
+        """Return a new config with dotted-key overrides applied and validated."""
+        data = self.to_dict()
+        apply_overrides(data, overrides)
+        return config_from_dict(data, defaults=False)
+
+
+# ---------------------------------------------------------------- loading
+
+
+def _deep_merge(base: dict[str, Any], update: Mapping[str, Any]) -> dict[str, Any]:
+    out = copy.deepcopy(base)
+    for key, value in update.items():
+        if isinstance(value, Mapping) and isinstance(out.get(key), dict):
+            out[key] = _deep_merge(out[key], value)
+        else:
+            out[key] = copy.deepcopy(value)
+    return out
+
+
+def parse_override(text: str) -> tuple[str, Any]:
+    """Split ``section.key=VALUE``; VALUE is read as a TOML literal, else kept as text."""
+    key, sep, raw = text.partition("=")
+    key = key.strip()
+    if not sep or not key:
+        raise ConfigError(f"--set {text!r}: expected section.key=VALUE")
+    raw = raw.strip()
+    try:
+        value = tomllib.loads(f"v = {raw}")["v"]
+    except tomllib.TOMLDecodeError:
+        value = raw
+    return key, value
+
+
+def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any] | Iterable[str]) -> None:
+    """Apply dotted-key overrides in place (a mapping, or ``key=value`` strings)."""
+    items = (
+        overrides.items()
+        if isinstance(overrides, Mapping)
+        else (parse_override(o) for o in overrides)
+    )
+    for dotted, value in items:
+        parts = dotted.split(".")
+        node = data
+        for part in parts[:-1]:
+            child = node.setdefault(part, {})
+            if not isinstance(child, dict):
+                raise ConfigError(f"{dotted}: {part!r} is a value, not a section")
+            node = child
+        node[parts[-1]] = value
+
+
+def _field_names(loc: tuple[Any, ...]) -> list[str]:
+    model: Any = Config
+    for part in loc[:-1]:
+        field = model.model_fields.get(part) if hasattr(model, "model_fields") else None
+        if field is None:
+            return []
+        model = field.annotation
+    return list(getattr(model, "model_fields", {}))
+
+
+def _message(error: Mapping[str, Any]) -> str:
+    loc = tuple(p for p in error["loc"] if not isinstance(p, int))
+    key = ".".join(str(p) for p in loc) or "config"
+    kind = error["type"]
+    if kind == "extra_forbidden":
+        return f"{key}: unknown key{suggest(str(loc[-1]), _field_names(loc))}"
+    if kind == "missing":
+        return f"{key}: missing"
+    msg = error["msg"].removeprefix("Value error, ")
+    if kind == "literal_error":
+        expected = error.get("ctx", {}).get("expected", "")
+        options = [o.strip().strip("'") for o in expected.replace(" or ", ",").split(",")]
+        return f"{key}: {error['input']!r} is not allowed{suggest(str(error['input']), options)}"
+    if kind in {"finite_number"}:
+        return f"{key}: must be finite, got {error['input']!r}"
+    if msg.startswith(key + ":") or (msg.split(":")[0].count(".") and ":" in msg):
+        return msg
+    return f"{key}: {msg}"
+
+
+def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
+    """Validate a (nested) config mapping into a :class:`Config`.
+
+    Parameters
+    ----------
+    data : mapping
+        Nested sections; quantities as SI numbers or strings with units.
+    defaults : bool
+        Merge the named parameter set's values underneath ``data``.
+    """
+    data = dict(data)
+    if defaults:
+        name = data.get("parameter_set", "nlcp-paper")
+        if not isinstance(name, str):
+            raise ConfigError(f"parameter_set: expected a name, got {name!r}")
+        data = _deep_merge(get_parameter_set(name), data)
+    try:
+        return Config.model_validate(data)
+    except ValidationError as exc:
+        raise ConfigError(_message(exc.errors()[0])) from None
+
+
+def load_config(
+    path: str | Path | None = None, overrides: Iterable[str] | Mapping[str, Any] = ()
+) -> Config:
+    """Read a TOML config, apply overrides, validate.
+
+    Parameters
+    ----------
+    path : path-like, optional
+        TOML file; ``None`` uses the parameter set's defaults only.
+    overrides : iterable of str or mapping
+        ``"section.key=VALUE"`` strings (CLI ``--set``) or a dotted-key mapping.
+    """
+    data: dict[str, Any] = {}
+    if path is not None:
+        path = Path(path)
+        try:
+            text = path.read_text(encoding="utf-8")
+        except FileNotFoundError:
+            raise ConfigError(f"{path}: file not found") from None
+        except (OSError, UnicodeDecodeError) as exc:
+            raise ConfigError(f"{path}: cannot read ({exc})") from None
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as exc:
+            raise ConfigError(f"{path}: not valid TOML ({exc})") from None
+    apply_overrides(data, overrides)
+    return config_from_dict(data)
+
+
+def _toml_value(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return f'"{value}"'
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, list):
+        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
+    return str(value)
+
+
+def _dump_toml(data: Mapping[str, Any], prefix: str = "") -> str:
+    lines: list[str] = []
+    tables: list[tuple[str, Mapping[str, Any]]] = []
+    for key, value in data.items():
+        if isinstance(value, Mapping):
+            tables.append((f"{prefix}{key}", value))
+        elif value is not None:
+            lines.append(f"{key} = {_toml_value(value)}")
+    out = "\n".join(lines)
+    for name, table in tables:
+        body = _dump_toml(table, prefix=f"{name}.")
+        header = (
+            f"\n\n[{name}]\n" if any(not isinstance(v, Mapping) for v in table.values()) else "\n"
+        )
+        out += header + body if body else ""
+    return out.strip() + "\n" if not prefix else out

@@ -1,0 +1,223 @@
+"""Hertz contact of a pin in a hole (paper eqs. 1-3), the non-conformal baseline.
+
+Force law (eq. 1) with the stiffness of eq. (2) for internal contact
+(radii of opposite curvature, ``R_j > R_i``):
+
+.. math::
+    F = K \\delta^n, \\qquad
+    K = \\frac{4}{3\\pi(\\sigma_i + \\sigma_j)}
+        \\left[\\frac{R_i R_j}{R_j - R_i}\\right]^{1/2}, \\qquad
+    \\sigma_k = \\frac{1-\\nu_k^2}{\\pi E_k}.
+
+Pressure profile: Hertz line contact of two cylinders (Johnson §4.2) with the
+conformal relative radius ``R* = R_p R_b / (R_b - R_p)`` and load per unit
+length ``F' = F / b``:
+
+.. math::
+    a = \\sqrt{\\frac{4 F' R^*}{\\pi E^*}}, \\qquad
+    p_0 = \\frac{2 F'}{\\pi a}, \\qquad
+    p(x) = p_0 \\sqrt{1 - x^2/a^2},
+
+with ``x = R_b (theta - psi)`` the arc length from the compression centre.
+Hertz assumes the contact is small compared with the radii; for a small
+clearance the contact arc ``a / R_b`` is not small, which is why the paper
+(and this package) treat Hertz as the baseline the Winkler-type models
+improve on. On the node grid the profile is scaled so that its discrete
+resultant equals the load exactly (the same balance the spring models meet).
+
+References
+----------
+.. [1] Johnson, K. L.: Contact Mechanics. Cambridge University Press (1985), §4.2.
+.. [2] Hertz, H.: Über die Berührung fester elastischer Körper (1882).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from jointwear.contact.laws import ContactParameters, effective_modulus
+from jointwear.contact.solution import ContactSolution
+from jointwear.errors import ContactError
+from jointwear.geometry.contour import BushingContour, Pin
+
+__all__ = ["HertzLaw", "half_width", "peak_pressure", "pressure_profile", "solve", "stiffness"]
+
+FloatArray = NDArray[np.float64]
+
+
+def stiffness(
+    pin_radius: float,
+    bushing_radius: float,
+    pin_youngs_modulus: float,
+    pin_poisson_ratio: float,
+    bushing_youngs_modulus: float,
+    bushing_poisson_ratio: float,
+) -> float:
+    """Contact stiffness ``K`` of eq. (2) for a pin in a hole [N/m^1.5].
+
+    Parameters
+    ----------
+    pin_radius : float
+        ``R_i`` [m].
+    bushing_radius : float
+        ``R_j`` [m], > ``pin_radius``.
+    pin_youngs_modulus, bushing_youngs_modulus : float
+        Young's moduli [Pa].
+    pin_poisson_ratio, bushing_poisson_ratio : float
+        Poisson's ratios [-].
+    """
+    modulus = effective_modulus(
+        pin_youngs_modulus, pin_poisson_ratio, bushing_youngs_modulus, bushing_poisson_ratio
+    )
+    relative = pin_radius * bushing_radius / (bushing_radius - pin_radius)
+    return 4.0 / 3.0 * modulus * np.sqrt(relative)
+
+
+def half_width(
+    load: ArrayLike, axial_length: float, relative_radius: float, modulus: float
+) -> FloatArray:
+    """Hertz line-contact half-width ``a = sqrt(4 F R* / (pi b E*))`` [m].
+
+    Parameters
+    ----------
+    load : array_like
+        Normal load ``F`` [N].
+    axial_length : float
+        Contact length ``b`` [m].
+    relative_radius : float
+        ``R*`` [m].
+    modulus : float
+        ``E*`` [Pa].
+    """
+    return np.sqrt(4 * np.asarray(load, float) * relative_radius / (np.pi * axial_length * modulus))
+
+
+def peak_pressure(
+    load: ArrayLike, axial_length: float, relative_radius: float, modulus: float
+) -> FloatArray:
+    """Hertz line-contact peak pressure ``p0 = 2 F / (pi a b)`` [Pa].
+
+    Parameters are those of :func:`half_width`.
+    """
+    a = half_width(load, axial_length, relative_radius, modulus)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(a > 0, 2 * np.asarray(load, float) / (np.pi * a * axial_length), 0.0)
+
+
+def pressure_profile(x: ArrayLike, a: ArrayLike, p0: ArrayLike) -> FloatArray:
+    """Elliptical Hertz profile ``p0 sqrt(1 - x^2/a^2)`` [Pa] at arc positions ``x`` [m]."""
+    x, a, p0 = (np.asarray(v, float) for v in (x, a, p0))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        inside = np.clip(1.0 - (x / a) ** 2, 0.0, None)
+    return np.where(a > 0, p0 * np.sqrt(inside), 0.0)
+
+
+@dataclass(frozen=True)
+class HertzLaw:
+    """Hertz model bound to its parameters (closed form, no spring balance).
+
+    Parameters
+    ----------
+    parameters : ContactParameters
+        Geometry and materials.
+    """
+
+    parameters: ContactParameters
+    name: str = "hertz"
+
+    def solve(
+        self, contour: BushingContour, pin: Pin, load: ArrayLike, azimuth: ArrayLike, **_: object
+    ) -> ContactSolution:
+        return solve(contour, pin, load, azimuth, self.parameters)
+
+
+def solve(
+    contour: BushingContour,
+    pin: Pin,
+    load: ArrayLike,
+    azimuth: ArrayLike,
+    parameters: ContactParameters,
+) -> ContactSolution:
+    """Hertz pressure on the bushing nodes for many loads.
+
+    Parameters
+    ----------
+    contour : BushingContour
+        Bushing contour (its radius at the compression centre is used).
+    pin : Pin
+        The pin.
+    load : array_like, shape (M,)
+        Load magnitudes [N].
+    azimuth : array_like, shape (M,)
+        Load directions in the bushing frame [rad].
+    parameters : ContactParameters
+        Materials, exponent and axial length.
+
+    Returns
+    -------
+    ContactSolution
+    """
+    contour.check_pin(pin)
+    load = np.asarray(load, float).ravel()
+    azimuth = np.broadcast_to(np.asarray(azimuth, float).ravel(), load.shape)
+    if np.any(~np.isfinite(load)) or np.any(load < 0):
+        raise ContactError("load: must be finite and >= 0")
+    b = contour.axial_length
+    r_b = contour.radius_at(azimuth)
+    r_p = pin.radius
+    modulus = parameters.effective_modulus
+    k = np.array(
+        [
+            stiffness(
+                r_p,
+                rb,
+                parameters.pin_youngs_modulus,
+                parameters.pin_poisson_ratio,
+                parameters.bushing_youngs_modulus,
+                parameters.bushing_poisson_ratio,
+            )
+            for rb in np.unique(r_b)
+        ]
+    )
+    k = np.interp(r_b, np.unique(r_b), k) if k.size > 1 else np.full_like(r_b, k[0])
+    penetration = (load / k) ** (1.0 / parameters.exponent)
+    relative = r_p * r_b / (r_b - r_p)
+    a = half_width(load, b, relative, modulus)
+    p0 = peak_pressure(load, b, relative, modulus)
+
+    phi = np.angle(np.exp(1j * (contour.theta[None, :] - azimuth[:, None])))
+    x = r_b[:, None] * phi
+    profile = pressure_profile(x, a[:, None], p0[:, None])
+    # contacts narrower than a node: share the load between the two nearest nodes
+    narrow = (profile > 0).sum(axis=1) == 0
+    if np.any(narrow & (load > 0)):
+        rows = np.flatnonzero(narrow & (load > 0))
+        pos = np.mod(azimuth[rows], 2 * np.pi) / contour.dtheta
+        lo = np.floor(pos).astype(int) % contour.nodes
+        frac = pos - np.floor(pos)
+        profile[rows, lo] = 1.0 - frac
+        profile[rows, (lo + 1) % contour.nodes] = frac
+    area = contour.spring_area[None, :]
+    carried = (profile * area * np.cos(phi)).sum(axis=1)
+    scale = np.where(carried > 0, load / np.where(carried > 0, carried, 1.0), 0.0)
+    pressure = profile * scale[:, None]
+    force = pressure * area
+    half_angle = np.where(narrow, 0.0, a / r_b)
+    contact = pressure > 0
+    return ContactSolution(
+        pressure=pressure,
+        eccentricity=np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
+        * ((r_b - r_p) + penetration)[:, None],
+        penetration=penetration,
+        normal_force=(force * np.cos(phi)).sum(axis=1),
+        tangential_force=(force * np.sin(phi)).sum(axis=1),
+        half_angle_left=half_angle,
+        half_angle_right=half_angle,
+        springs_left=(contact & (phi > 0)).sum(axis=1),
+        springs_right=(contact & (phi < 0)).sum(axis=1),
+        iterations=np.zeros(load.size, dtype=np.int64),
+        model="hertz",
+    )

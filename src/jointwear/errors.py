@@ -1,0 +1,63 @@
+"""Exception types of jointwear.
+
+Every error a user can cause derives from :class:`JointwearError`; the CLI turns
+these into a one-line message and exit status 2. Anything else is a bug (exit 1).
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "ConfigError",
+    "ContactError",
+    "ContactLossWarning",
+    "ConvergenceError",
+    "DataError",
+    "GeometryError",
+    "JointwearError",
+    "MechanismError",
+    "WearThroughError",
+]
+
+
+class JointwearError(Exception):
+    """Base class of all errors caused by input or by physics the model cannot handle."""
+
+
+class ConfigError(JointwearError, ValueError):
+    """A configuration value is missing, unknown, of the wrong unit or out of range.
+
+    The message starts with the dotted key, e.g. ``joint.clearance: must be > 0``.
+    """
+
+
+class DataError(JointwearError, ValueError):
+    """A data file (measured points, result file, sweep file) cannot be used."""
+
+
+class GeometryError(JointwearError, ValueError):
+    """The joint geometry is impossible (pin not inside bushing, bad contour ...)."""
+
+
+class ContactError(JointwearError):
+    """The contact problem has no solution (e.g. the load pushes the pin through the wall)."""
+
+
+class ConvergenceError(ContactError):
+    """An iterative solver did not converge within its iteration budget."""
+
+
+class MechanismError(JointwearError):
+    """The mechanism cannot assemble or its model assumptions are violated."""
+
+
+class WearThroughError(JointwearError):
+    """Wear has consumed the whole bushing wall."""
+
+
+class ContactLossWarning(UserWarning):
+    """The joint force reverses relative to the rod, so pin and bushing would separate.
+
+    The massless-link dynamics model assumes continuous contact; where the force
+    reverses its results are not physical. ``dynamics.strict = true`` turns this
+    warning into :class:`MechanismError`.
+    """

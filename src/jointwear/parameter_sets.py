@@ -1,0 +1,73 @@
+"""Named parameter sets: plain data, the SI unit in every key name (PyBaMM style).
+
+A parameter set supplies the defaults of a configuration; a config file names
+one with ``parameter_set = "..."`` and overrides any key.
+
+``nlcp-paper`` holds the slider-crank and joint of the NLCP paper (Tables 1-2),
+read in SI as ``SPEC.md`` section 3 explains (the paper prints g and mm where
+kg and m reproduce its results). The paper does not give the joint's axial
+length, the bushing wall thickness, the spring preload or the PTFE density;
+the values here are the ones calibrated on the single row Table 3, Winkler,
+120 rpm, 0.05 mm (see ``docs/reproduction.md``), rounded.
+"""
+
+from __future__ import annotations
+
+from types import MappingProxyType
+from typing import Any
+
+__all__ = ["PARAMETER_SETS", "get_parameter_set"]
+
+NLCP_PAPER: dict[str, Any] = {
+    # Table 1 (printed in g and mm; SI magnitudes reproduce the paper)
+    "mechanism.crank_length [m]": 0.07,
+    "mechanism.rod_length [m]": 0.2,
+    "mechanism.crank_mass [kg]": 0.46,
+    "mechanism.rod_mass [kg]": 1.09,
+    "mechanism.slider_mass [kg]": 5.0,
+    "mechanism.spring_stiffness [N/m]": 1800.0,
+    # not in the paper: calibrated / assumed
+    "mechanism.spring_preload [N]": 20.0,
+    "mechanism.spring_mode": "pull",
+    "mechanism.gravity [m/s**2]": 9.81,
+    "mechanism.crank_speed [rad/s]": 4.0 * 3.141592653589793,  # 120 rpm
+    # Table 2
+    "joint.pin_radius [m]": 7.45e-3,
+    "joint.clearance [m]": 0.05e-3,
+    # not in the paper: calibrated
+    "joint.axial_length [m]": 20e-3,
+    "joint.bushing_thickness [m]": 2.5e-3,
+    "materials.pin.youngs_modulus [Pa]": 2.09e11,
+    "materials.pin.poisson_ratio [1]": 0.28,
+    "materials.bushing.youngs_modulus [Pa]": 5.0e8,
+    "materials.bushing.poisson_ratio [1]": 0.38,
+    "materials.bushing.density [kg/m**3]": 2200.0,
+    "materials.bushing.wear_coefficient [1/Pa]": 5.05e-13,
+}
+
+PARAMETER_SETS: MappingProxyType[str, dict[str, Any]] = MappingProxyType({"nlcp-paper": NLCP_PAPER})
+
+
+def get_parameter_set(name: str) -> dict[str, Any]:
+    """Return a parameter set as a nested dict of SI values (unit stripped from keys).
+
+    Parameters
+    ----------
+    name : str
+        Name of the set, e.g. ``"nlcp-paper"``.
+    """
+    from jointwear.errors import ConfigError
+    from jointwear.registry import suggest
+
+    if name not in PARAMETER_SETS:
+        raise ConfigError(
+            f"parameter_set: unknown parameter set {name!r}{suggest(name, PARAMETER_SETS)}"
+        )
+    nested: dict[str, Any] = {}
+    for flat_key, value in PARAMETER_SETS[name].items():
+        path = flat_key.split(" [")[0].split(".")
+        node = nested
+        for part in path[:-1]:
+            node = node.setdefault(part, {})
+        node[path[-1]] = value
+    return nested

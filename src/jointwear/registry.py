@@ -1,0 +1,69 @@
+"""Registries of named models (pvlib's pattern: a model is a name or a callable)."""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Callable, Iterable
+from typing import Generic, TypeVar
+
+from jointwear.errors import ConfigError
+
+__all__ = ["Registry", "suggest"]
+
+T = TypeVar("T")
+
+
+def suggest(name: str, options: Iterable[str]) -> str:
+    """Return ``"; did you mean 'x'?"`` for the closest option, or a list of options."""
+    options = list(options)
+    close = difflib.get_close_matches(str(name), options, n=1, cutoff=0.5)
+    if close:
+        return f"; did you mean {close[0]!r}?"
+    return f"; choose from {', '.join(repr(o) for o in options)}"
+
+
+class Registry(Generic[T]):
+    """A name -> object mapping that fails early with a best-match suggestion.
+
+    Parameters
+    ----------
+    kind : str
+        What is registered (used in messages), e.g. ``"contact model"``.
+    key : str
+        The config key that selects an entry, e.g. ``"contact.model"``.
+    """
+
+    def __init__(self, kind: str, key: str) -> None:
+        self.kind = kind
+        self.key = key
+        self._entries: dict[str, T] = {}
+
+    def register(self, name: str) -> Callable[[T], T]:
+        def decorator(obj: T) -> T:
+            self._entries[name] = obj
+            return obj
+
+        return decorator
+
+    def add(self, name: str, obj: T) -> None:
+        self._entries[name] = obj
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._entries
+
+    def __iter__(self):
+        return iter(self._entries)
+
+    def items(self):
+        return self._entries.items()
+
+    def names(self) -> list[str]:
+        return list(self._entries)
+
+    def get(self, name: str) -> T:
+        try:
+            return self._entries[name]
+        except KeyError:
+            raise ConfigError(
+                f"{self.key}: unknown {self.kind} {name!r}{suggest(name, self._entries)}"
+            ) from None

@@ -1,0 +1,308 @@
+"""Reproduce the paper: every table row and figure case, calibrated on one row.
+
+Protocol (SPEC §4): the parameters the paper does not give (joint axial length
+``b``, bushing wall thickness ``L``, spring preload) are calibrated on **one**
+row, Table 3, Winkler, 120 rpm, 0.05 mm, one revolution; every other row is
+then a prediction with those values, reported next to the paper with its
+deviation. No row is tuned on its own.
+"""
+
+from __future__ import annotations
+
+import math
+import platform
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from importlib.resources import files
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from jointwear.calibration import CalibrationResult, Parameter, calibrate_metrics
+from jointwear.config import Config, load_config
+
+__all__ = [
+    "CALIBRATION_CASE",
+    "CALIBRATION_PARAMETERS",
+    "PAPER_ROWS",
+    "TRENDS",
+    "PaperRow",
+    "calibrate_on_paper",
+    "case_config",
+    "case_names",
+    "deviation",
+    "reproduce",
+]
+
+
+@dataclass(frozen=True)
+class PaperRow:
+    """One row of the paper's Tables 3-5, in SI.
+
+    Parameters
+    ----------
+    table : str
+        Table of the paper.
+    peak : float
+        Wear peak [m].
+    width : float
+        Wear width [deg].
+    mass : float
+        Wear mass [kg].
+    time : float
+        The paper's run time [s].
+    """
+
+    table: str
+    peak: float
+    width: float
+    mass: float
+    time: float
+
+
+#: the paper prints mm and g; converted here (1e-5 mm = 1e-8 m, 1e-6 g = 1e-9 kg)
+PAPER_ROWS: dict[str, PaperRow] = {
+    "table3_nlcp_120rpm": PaperRow("Table 3", 1.003e-8, 130, 3.381e-9, 2.11),
+    "table3_nlcp_240rpm": PaperRow("Table 3", 1.22e-8, 134, 4.357e-9, 1.81),
+    "table3_winkler_120rpm": PaperRow("Table 3", 1.056e-8, 115, 3.355e-9, 2.12),
+    "table3_winkler_240rpm": PaperRow("Table 3", 1.26e-8, 118, 4.326e-9, 1.61),
+    "table4_nlcp_clearance_0.2mm": PaperRow("Table 4", 1.44e-8, 102, 4.23e-9, 1.68),
+    "table4_winkler_clearance_0.2mm": PaperRow("Table 4", 1.46e-8, 90, 4.21e-9, 1.34),
+    "table5_nlcp_10000r": PaperRow("Table 5", 0.062e-3, 169, 0.0354e-3, 19.81),
+    "table5_nlcp_15000r": PaperRow("Table 5", 0.0875e-3, 178, 0.0539e-3, 29.03),
+    "table5_winkler_10000r": PaperRow("Table 5", 0.061e-3, 165, 0.0353e-3, 14.12),
+    "table5_winkler_15000r": PaperRow("Table 5", 0.0859e-3, 176, 0.0538e-3, 21.09),
+}
+
+CALIBRATION_CASE = "table3_winkler_120rpm"
+CALIBRATION_PARAMETERS = (
+    Parameter("joint.axial_length", 5e-3, 80e-3),
+    Parameter("joint.bushing_thickness", 0.3e-3, 10e-3),
+    Parameter("mechanism.spring_preload", 0.0, 400.0),
+)
+
+
+def case_names() -> list[str]:
+    """Names of the paper cases shipped with the package (``examples/paper``)."""
+    return sorted(
+        p.name.removesuffix(".toml")
+        for p in files("jointwear.paper_cases").iterdir()
+        if p.name.endswith(".toml")
+    )
+
+
+def case_config(name: str, overrides: dict[str, Any] | None = None) -> Config:
+    """The config of a paper case, with optional dotted-key overrides."""
+    from jointwear.errors import ConfigError
+    from jointwear.registry import suggest
+
+    names = case_names()
+    if name not in names:
+        raise ConfigError(f"case: unknown paper case {name!r}{suggest(name, names)}")
+    path = files("jointwear.paper_cases") / f"{name}.toml"
+    return load_config(Path(str(path)), overrides or {})
+
+
+def _metrics(summary: dict[str, Any]) -> tuple[float, float, float]:
+    return summary["peak_wear_depth_m"], summary["wear_width_deg"], summary["wear_mass_kg"]
+
+
+# ---------------------------------------------------------------- trends
+@dataclass(frozen=True)
+class Trend:
+    statement: str
+    check: Callable[[dict[str, dict[str, Any]]], tuple[bool, str]]
+
+
+def _grows(results, low, high, keys=("peak", "width", "mass"), shrink=()):
+    ok, parts = True, []
+    for key in keys:
+        a, b = results[low][key], results[high][key]
+        good = b < a if key in shrink else b > a
+        ok &= good
+        parts.append(f"{key} {a:.4g} -> {b:.4g}")
+    return ok, "; ".join(parts)
+
+
+def _both_models(fn):
+    def check(results):
+        oks, texts = [], []
+        for model in ("nlcp", "winkler"):
+            ok, text = fn(results, model)
+            oks.append(ok)
+            texts.append(f"{model}: {text}")
+        return all(oks), " | ".join(texts)
+
+    return check
+
+
+TRENDS = (
+    Trend(
+        "faster crank (120 -> 240 rpm) -> larger peak, width and mass",
+        _both_models(lambda r, m: _grows(r, f"table3_{m}_120rpm", f"table3_{m}_240rpm")),
+    ),
+    Trend(
+        "larger clearance (0.05 -> 0.2 mm, 240 rpm) -> larger peak and mass, smaller width",
+        _both_models(
+            lambda r, m: _grows(
+                r, f"table3_{m}_240rpm", f"table4_{m}_clearance_0.2mm", shrink=("width",)
+            )
+        ),
+    ),
+    Trend(
+        "more revolutions (10000 -> 15000) -> larger peak, width and mass",
+        _both_models(lambda r, m: _grows(r, f"table5_{m}_10000r", f"table5_{m}_15000r")),
+    ),
+    Trend(
+        "contour update -> lower peak and wider zone than without (NLCP, 10000 r)",
+        lambda r: _grows(
+            r, "fig13_nlcp_no_update", "fig14_nlcp_update", keys=("peak", "width"), shrink=("peak",)
+        ),
+    ),
+    Trend(
+        "NLCP -> wider zone than Winkler (one revolution, 120 and 240 rpm)",
+        lambda r: (
+            all(
+                r[f"table3_nlcp_{s}"]["width"] > r[f"table3_winkler_{s}"]["width"]
+                for s in ("120rpm", "240rpm")
+            ),
+            ", ".join(
+                f"{s}: {r[f'table3_nlcp_{s}']['width']:.4g} vs "
+                f"{r[f'table3_winkler_{s}']['width']:.4g} deg"
+                for s in ("120rpm", "240rpm")
+            ),
+        ),
+    ),
+    Trend(
+        "NLCP -> lower peak than Winkler (one revolution, 120 and 240 rpm)",
+        lambda r: (
+            all(
+                r[f"table3_nlcp_{s}"]["peak"] < r[f"table3_winkler_{s}"]["peak"]
+                for s in ("120rpm", "240rpm")
+            ),
+            ", ".join(
+                f"{s}: {r[f'table3_nlcp_{s}']['peak']:.4g} vs "
+                f"{r[f'table3_winkler_{s}']['peak']:.4g} m"
+                for s in ("120rpm", "240rpm")
+            ),
+        ),
+    ),
+    Trend(
+        "larger clearance (0.05 -> 0.2 mm, 120 rpm, 10000 r, NLCP) -> larger peak and mass, "
+        "smaller width",
+        lambda r: _grows(r, "table5_nlcp_10000r", "fig15_nlcp_clearance_0.2mm", shrink=("width",)),
+    ),
+)
+
+
+# ---------------------------------------------------------------- driver
+def calibrate_on_paper(base_overrides: dict[str, Any] | None = None) -> CalibrationResult:
+    """Calibrate ``CALIBRATION_PARAMETERS`` on the calibration row."""
+    row = PAPER_ROWS[CALIBRATION_CASE]
+    config = case_config(CALIBRATION_CASE, base_overrides)
+    targets = {"peak_wear_depth_m": row.peak, "wear_width_deg": row.width, "wear_mass_kg": row.mass}
+    return calibrate_metrics(config, targets, CALIBRATION_PARAMETERS)
+
+
+def reproduce(
+    out: str | Path,
+    progress: Callable[[str, int, int], None] | None = None,
+    calibrate: bool = True,
+    cases: list[str] | None = None,
+    overrides: dict[str, Any] | None = None,
+) -> dict[str, Any]:
+    """Run every paper case and write ``out/report.md`` and figures.
+
+    Parameters
+    ----------
+    out : path-like
+        Output folder.
+    progress : callable, optional
+        ``progress(case, done, total)``.
+    calibrate : bool
+        Calibrate on the calibration row first (else use the configs' values).
+    cases : list of str, optional
+        Subset of cases (default all).
+    overrides : dict, optional
+        Dotted-key overrides applied to every case before calibration.
+
+    Returns
+    -------
+    dict
+        ``{"calibration": {...}, "cases": {name: summary}, "trends": [...]}``.
+    """
+    from jointwear.simulation import Simulation
+
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    started = time.perf_counter()
+    overrides = dict(overrides or {})
+    calibration = None
+    if calibrate:
+        calibration = calibrate_on_paper(overrides)
+        overrides.update(calibration.values)
+    names = cases or case_names()
+    summaries: dict[str, dict[str, Any]] = {}
+    datasets: dict[str, Any] = {}
+    for i, name in enumerate(names):
+        if progress is not None:
+            progress(name, i, len(names))
+        config = case_config(name, overrides)
+        result = Simulation(config).run()
+        summary = result.summary()
+        summary.update(zip(("peak", "width", "mass"), _metrics(summary), strict=True))
+        summaries[name] = summary
+        datasets[name] = result.dataset
+        result.to_netcdf(out / "results" / f"{name}.nc")
+    if progress is not None:
+        progress("done", len(names), len(names))
+    trends = []
+    for trend in TRENDS:
+        try:
+            ok, detail = trend.check(summaries)
+        except KeyError:
+            continue
+        trends.append({"statement": trend.statement, "holds": bool(ok), "detail": detail})
+    from jointwear.report import figures, write_report
+
+    figure_paths = figures(datasets, out / "figures")
+    report = {
+        "calibration": None
+        if calibration is None
+        else {
+            "case": CALIBRATION_CASE,
+            "values": calibration.values,
+            "residuals": calibration.residuals.tolist(),
+            "labels": calibration.labels,
+            "evaluations": calibration.evaluations,
+        },
+        "cases": summaries,
+        "trends": trends,
+        "total_runtime_s": time.perf_counter() - started,
+        "machine": f"{platform.processor() or platform.machine()}, {platform.system()}, "
+        f"Python {platform.python_version()}",
+    }
+    write_report(report, out / "report.md", figure_paths)
+    from jointwear.io import write_json
+
+    write_json(out / "report.json", _jsonable(report))
+    return report
+
+
+def _jsonable(value: Any) -> Any:
+    if isinstance(value, dict):
+        return {k: _jsonable(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def deviation(ours: float, paper: float) -> float:
+    """Relative deviation ``ours / paper - 1`` [-]."""
+    return ours / paper - 1.0

@@ -1,0 +1,211 @@
+"""Results as data: an xarray Dataset (netCDF) and a CSV of per-update metrics.
+
+Every variable carries ``units`` and ``long_name`` attributes (CF style); the
+fully resolved configuration is stored as TOML text in the ``config``
+attribute, so a result file alone says how it was made.
+"""
+
+from __future__ import annotations
+
+import csv
+import datetime as _dt
+import math
+import tomllib
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import xarray as xr
+
+from jointwear.errors import DataError
+from jointwear.io import atomic_path, atomic_write
+
+if TYPE_CHECKING:
+    from jointwear.config import Config
+    from jointwear.contact import ContactSolution
+    from jointwear.simulation import Simulation, SimulationState
+
+__all__ = ["build_dataset", "config_of", "read_result", "write_metrics_csv", "write_netcdf"]
+
+#: how many crank angles keep a full pressure distribution
+PRESSURE_SNAPSHOTS = 72
+
+_HISTORY_META = {
+    "peak_wear_depth": ("m", "largest wear depth of the bushing"),
+    "wear_width": ("rad", "angular width of the worn zone"),
+    "wear_area": ("m2", "cross-section area removed by wear"),
+    "wear_volume": ("m3", "worn volume"),
+    "wear_mass": ("kg", "worn mass"),
+    "min_wall_thickness": ("m", "smallest remaining bushing wall thickness"),
+    "contact_iterations": ("1", "contact balance iterations of the revolution"),
+}
+
+
+def _var(dims, values, units: str, long_name: str) -> xr.Variable:
+    return xr.Variable(dims, np.asarray(values), attrs={"units": units, "long_name": long_name})
+
+
+def build_dataset(
+    simulation: Simulation,
+    state: SimulationState,
+    initial: ContactSolution,
+    final: ContactSolution,
+    runtime: float,
+) -> xr.Dataset:
+    """Assemble the result Dataset of a finished run (SI units)."""
+    from jointwear import __version__
+
+    config = simulation.config
+    joint_load = simulation.joint_load
+    nodes = config.contact.nodes
+    theta = 2 * np.pi * np.arange(nodes) / nodes
+    revolutions = np.array(sorted(state.profiles), dtype=np.int64)
+    profiles = np.array([state.profiles[r] for r in revolutions]).reshape(len(revolutions), nodes)
+    steps = joint_load.load.size
+    snapshot = np.unique(
+        np.linspace(0, steps, min(PRESSURE_SNAPSHOTS, steps), endpoint=False).astype(int)
+    )
+    sliding = simulation.sliding_distance
+    wear_rate = state.wear_rate if state.wear_rate is not None else np.zeros(nodes)
+    data_vars = {
+        "wear_depth": _var(
+            ("revolution", "theta"), profiles, "m", "radial wear depth of the bushing"
+        ),
+        "wear_rate": _var(
+            ("theta",), wear_rate, "m", "wear depth per revolution at the last update"
+        ),
+        "bushing_radius": _var(
+            ("theta",),
+            state.radius
+            if config.simulation.update_contour
+            else config.joint.bushing_radius + profiles[-1],
+            "m",
+            "final inner radius of the bushing",
+        ),
+        "joint_load": _var(("step",), joint_load.load, "N", "joint load magnitude"),
+        "load_azimuth": _var(
+            ("step",),
+            joint_load.azimuth,
+            "rad",
+            "direction of the load on the bushing, bushing frame",
+        ),
+        "relative_rotation": _var(
+            ("step",),
+            joint_load.relative_rotation,
+            "rad",
+            "rotation of the pin relative to the bushing over the step",
+        ),
+        "sliding_distance": _var(("step",), sliding, "m", "sliding distance over the step"),
+        "crank_torque": _var(("step",), joint_load.crank_torque, "N m", "crank driving torque"),
+        "pressure_initial": _var(
+            ("snapshot", "theta"),
+            initial.pressure[snapshot],
+            "Pa",
+            "contact pressure on the unworn bushing",
+        ),
+        "pressure_final": _var(
+            ("snapshot", "theta"),
+            final.pressure[snapshot],
+            "Pa",
+            "contact pressure on the final contour",
+        ),
+        "contact_half_angle": _var(
+            ("step",),
+            0.5 * (initial.half_angle_left + initial.half_angle_right),
+            "rad",
+            "mean contact half-angle on the unworn bushing",
+        ),
+    }
+    for name, values in state.history.items():
+        if name == "revolution":
+            continue
+        units, long_name = _HISTORY_META[name]
+        data_vars[name] = _var(("update",), values, units, long_name)
+    coords = {
+        "theta": _var(("theta",), theta, "rad", "bushing angle"),
+        "revolution": _var(("revolution",), revolutions, "1", "revolutions completed"),
+        "step": _var(("step",), np.arange(steps), "1", "time step of the revolution"),
+        "crank_angle": _var(("step",), joint_load.crank_angle, "rad", "crank angle"),
+        "snapshot": _var(
+            ("snapshot",),
+            joint_load.crank_angle[snapshot],
+            "rad",
+            "crank angle of the pressure snapshot",
+        ),
+        "update": _var(
+            ("update",), np.arange(len(state.history["revolution"])), "1", "contour update"
+        ),
+        "update_revolution": _var(
+            ("update",),
+            np.asarray(state.history["revolution"], dtype=np.int64),
+            "1",
+            "revolutions completed at the update",
+        ),
+    }
+    attrs = {
+        "title": "jointwear wear simulation",
+        "contact_model": final.model,
+        "runtime_s": runtime,
+        "jointwear_version": __version__,
+        "created": _dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),
+        "config": config.to_toml(),
+        "Conventions": "CF-1.10",
+    }
+    return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+
+def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
+    """Write a result Dataset to netCDF-4 (h5netcdf) atomically."""
+    with atomic_path(path) as tmp:
+        dataset.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=False)
+
+
+def read_result(path: str | Path) -> xr.Dataset:
+    """Read a result file written by :func:`write_netcdf` (loaded into memory).
+
+    Raises
+    ------
+    DataError
+        If the file is missing, unreadable or not a jointwear result.
+    """
+    path = Path(path)
+    if not path.exists():
+        raise DataError(f"{path}: file not found")
+    try:
+        with xr.open_dataset(path, engine="h5netcdf") as handle:
+            dataset = handle.load()
+    except Exception as exc:
+        raise DataError(f"{path}: not a readable netCDF result ({type(exc).__name__})") from None
+    for required in ("wear_depth", "peak_wear_depth"):
+        if required not in dataset:
+            raise DataError(f"{path}: not a jointwear result (no {required!r} variable)")
+    return dataset
+
+
+def config_of(dataset: xr.Dataset) -> Config:
+    """The configuration stored in a result Dataset."""
+    from jointwear.config import config_from_dict
+
+    try:
+        data: dict[str, Any] = tomllib.loads(dataset.attrs["config"])
+    except (KeyError, tomllib.TOMLDecodeError) as exc:
+        raise DataError(f"result: no readable stored config ({exc})") from None
+    return config_from_dict(data, defaults=False)
+
+
+def write_metrics_csv(dataset: xr.Dataset, path: str | Path) -> None:
+    """Per-update metrics as CSV, units in the header."""
+    columns = [
+        ("revolution", dataset["update_revolution"].values, 1.0),
+        ("peak_wear_depth [m]", dataset["peak_wear_depth"].values, 1.0),
+        ("wear_width [deg]", dataset["wear_width"].values, 180.0 / math.pi),
+        ("wear_area [m^2]", dataset["wear_area"].values, 1.0),
+        ("wear_volume [m^3]", dataset["wear_volume"].values, 1.0),
+        ("wear_mass [kg]", dataset["wear_mass"].values, 1.0),
+        ("min_wall_thickness [m]", dataset["min_wall_thickness"].values, 1.0),
+    ]
+    with atomic_write(path, newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow([name for name, _, _ in columns])
+        for i in range(len(columns[0][1])):
+            writer.writerow([f"{values[i] * scale:.10g}" for _, values, scale in columns])

@@ -1,0 +1,1 @@
+"""Tribology: sliding, Archard wear and wear metrics."""

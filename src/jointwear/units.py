@@ -1,0 +1,120 @@
+"""Quantities with units at the boundaries (config, CLI, reports).
+
+Inside the package everything is an SI ``float``. This module is the only
+place that converts: :func:`to_si` accepts a number (already SI) or a string
+such as ``"0.2 mm"`` or ``"240 rpm"`` and returns the SI magnitude, after
+checking the dimension.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import cache
+from typing import Any
+
+import pint
+
+from jointwear.errors import ConfigError
+
+__all__ = ["DIMENSIONS", "format_quantity", "to_si", "ureg"]
+
+ureg = pint.UnitRegistry()
+ureg.define("rpm = revolution / minute")
+
+#: SI unit used for each physical kind of parameter.
+DIMENSIONS: dict[str, str] = {
+    "length": "m",
+    "area": "m**2",
+    "mass": "kg",
+    "force": "N",
+    "stiffness": "N/m",
+    "pressure": "Pa",
+    "angular_velocity": "rad/s",
+    "angle": "rad",
+    "acceleration": "m/s**2",
+    "density": "kg/m**3",
+    "wear_coefficient": "1/Pa",
+    "moment_of_inertia": "kg*m**2",
+    "time": "s",
+    "dimensionless": "",
+}
+
+
+@cache
+def _unit(kind: str) -> pint.Unit:
+    return ureg.Unit(DIMENSIONS[kind])
+
+
+def to_si(value: Any, kind: str, key: str = "value") -> float:
+    """Convert a number or a string with units to an SI float.
+
+    Parameters
+    ----------
+    value : float or str
+        A plain number (taken as SI) or a string with a unit, e.g. ``"7.5 mm"``.
+    kind : str
+        Physical kind, a key of :data:`DIMENSIONS`, e.g. ``"length"``.
+    key : str
+        Name used in error messages (dotted config key).
+
+    Returns
+    -------
+    float
+        Magnitude in the SI unit of ``kind``.
+
+    Raises
+    ------
+    ConfigError
+        If the string does not parse, has the wrong dimension or is not finite.
+    """
+    if isinstance(value, bool):
+        raise ConfigError(f"{key}: expected a number or a quantity string, got a boolean")
+    if isinstance(value, int | float):
+        magnitude = float(value)
+    elif isinstance(value, str):
+        try:
+            quantity = ureg.Quantity(value.strip())
+        except Exception as exc:
+            raise ConfigError(f"{key}: cannot read {value!r} as a quantity ({exc})") from None
+        if isinstance(quantity, int | float):
+            magnitude = float(quantity)
+        else:
+            target = _unit(kind)
+            if not quantity.check(target.dimensionality) and not (
+                kind == "angular_velocity" and quantity.check("1/[time]")
+            ):
+                expected = DIMENSIONS[kind] or "dimensionless"
+                raise ConfigError(
+                    f"{key}: {value!r} has dimension {quantity.dimensionality}, "
+                    f"expected a {kind.replace('_', ' ')} (e.g. in {expected})"
+                )
+            magnitude = float(quantity.to(target).magnitude)
+    else:
+        raise ConfigError(f"{key}: expected a number or a quantity string, got {value!r}")
+    if not math.isfinite(magnitude):
+        raise ConfigError(f"{key}: must be finite, got {value!r}")
+    return magnitude
+
+
+def format_quantity(value: float, unit: str, digits: int = 6) -> str:
+    """Format an SI value in a display unit, e.g. ``format_quantity(5e-5, "mm")``.
+
+    Parameters
+    ----------
+    value : float
+        SI magnitude.
+    unit : str
+        Display unit understood by pint.
+    digits : int
+        Significant digits.
+    """
+    quantity = ureg.Quantity(value, ureg.Unit(_si_unit_for(unit))).to(unit)
+    return f"{quantity.magnitude:.{digits}g} {unit}"
+
+
+def _si_unit_for(unit: str) -> str:
+    dimensionality = ureg.Unit(unit).dimensionality
+    for si in DIMENSIONS.values():
+        if si and ureg.Unit(si).dimensionality == dimensionality:
+            return si
+    return str(ureg.Quantity(1, unit).to_base_units().units)
