@@ -175,8 +175,18 @@ class DynamicsConfig(_Section):
 
     model: str = "massless-link"
     strict: bool = False
+    scheme: Literal["fixed-point", "paper"] = "fixed-point"
     fixed_point_tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-12
     max_iterations: Annotated[int, Field(ge=1, le=1000)] = 50
+
+    @field_validator("model")
+    @classmethod
+    def _known_model(cls, value: str) -> str:
+        from jointwear.mechanism import DYNAMICS_MODELS
+
+        if value not in DYNAMICS_MODELS:
+            raise ValueError(f"unknown dynamics model {value!r}{suggest(value, DYNAMICS_MODELS)}")
+        return value
 
 
 class SimulationConfig(_Section):

@@ -219,15 +219,24 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines += [
         "## Trends the paper states",
         "",
-        "| trend | holds | numbers (ours) |",
-        "|---|---|---|",
+        "Each trend is checked on our results and, where the paper gives table values, on "
+        "the paper's own numbers.",
+        "",
+        "| trend | ours | paper's tables | numbers (ours) | numbers (paper) |",
+        "|---|---|---|---|---|",
     ]
+
+    def verdict(ok):
+        return "n/a" if ok is None else ("holds" if ok else "**fails**")
+
     for trend in report["trends"]:
         lines.append(
-            f"| {trend['statement']} | {'holds' if trend['holds'] else '**fails**'} | "
-            f"{trend['detail']} |"
+            f"| {trend['statement']} | {verdict(trend['holds'])} | "
+            f"{verdict(trend.get('paper_tables_hold'))} | {trend['detail']} | "
+            f"{trend.get('paper_detail', '')} |"
         )
     lines.append("")
+    lines += _trend_notes(report["trends"])
 
     others = [n for n in report["cases"] if n not in PAPER_ROWS]
     if others:
@@ -254,6 +263,25 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines += ["## Notes", "", _NOTES]
     with atomic_write(path, encoding="utf-8") as handle:
         handle.write("\n".join(lines) + "\n")
+
+
+def _trend_notes(trends: list[dict]) -> list[str]:
+    notes = []
+    for trend in trends:
+        if trend["holds"]:
+            continue
+        if trend.get("paper_tables_hold") is False:
+            notes.append(
+                f"* *{trend['statement']}*: fails in ours **and in the paper's own tables** "
+                f"({trend['paper_detail']}); the paper's text and tables disagree, and ours "
+                "side with the tables."
+            )
+        else:
+            notes.append(
+                f"* *{trend['statement']}*: fails in ours; see the discussion in "
+                "docs/reproduction.md."
+            )
+    return ["Where a trend fails:", "", *notes, ""] if notes else []
 
 
 _NOTES = """\

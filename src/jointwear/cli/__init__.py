@@ -19,6 +19,7 @@ from jointwear.errors import JointwearError
 # command modules register themselves on ``app`` when imported
 from jointwear.cli import contact_cmd  # noqa: F401  isort: skip
 from jointwear.cli import dynamics_cmd  # noqa: F401  isort: skip
+from jointwear.cli import measure_cmd  # noqa: F401  isort: skip
 from jointwear.cli import run_cmd  # noqa: F401  isort: skip
 from jointwear.cli import reproduce_cmd  # noqa: F401  isort: skip
 

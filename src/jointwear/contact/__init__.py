@@ -73,7 +73,7 @@ def contact_law(model: str | Callable[..., Any] | SpringLaw, parameters: Contact
     """
     if isinstance(model, str):
         return CONTACT_MODELS.get(model)(parameters)
-    if isinstance(model, SpringLaw | hertz.HertzLaw):
+    if isinstance(model, SpringLaw) or hasattr(model, "solve"):
         return model
     return CallableSpringLaw(model)
 
@@ -107,7 +107,8 @@ def solve(
         Passed to :func:`solve_contact` (``balance``, ``tolerance``, ...).
     """
     law = contact_law(model, parameters)
-    if isinstance(law, hertz.HertzLaw):
-        return law.solve(contour, pin, load, azimuth)
+    if hasattr(law, "solve"):
+        # closed-form or reference models (Hertz, exact/FE references) solve themselves
+        return law.solve(contour, pin, load, azimuth, **options)
     options.setdefault("max_penetration", parameters.bushing_thickness)
     return solve_contact(contour, pin, load, azimuth, law, **options)
