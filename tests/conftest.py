@@ -1,0 +1,61 @@
+"""Shared fixtures: the paper's joint (Table 2 read in SI, see SPEC.md §3)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from jointwear.config import Config, load_config
+from jointwear.contact import ContactParameters
+from jointwear.geometry import BushingContour, Pin
+
+REPO = Path(__file__).resolve().parents[1]
+PAPER_CONFIG = REPO / "examples" / "paper" / "table3_winkler_120rpm.toml"
+
+
+def scar(nodes: int, depth: float = 20e-6, centre_deg: float = 20.0,
+         width_deg: float = 12.0) -> np.ndarray:
+    """Gaussian wear scar [m] at the node angles, one-sided about the load line at 0 deg."""
+    theta = 2 * np.pi * np.arange(nodes) / nodes
+    phi = np.angle(np.exp(1j * theta))  # wrapped to (-pi, pi]
+    return depth * np.exp(-(((phi - np.radians(centre_deg)) / np.radians(width_deg)) ** 2))
+
+
+@pytest.fixture(scope="session")
+def paper_config_path() -> Path:
+    return PAPER_CONFIG
+
+
+@pytest.fixture(scope="session")
+def paper_config() -> Config:
+    return load_config(PAPER_CONFIG)
+
+
+@pytest.fixture(scope="session")
+def params(paper_config: Config) -> ContactParameters:
+    """Contact parameters of the paper's joint (R_p = 7.45 mm, c = 0.05 mm, PTFE bushing)."""
+    return ContactParameters.from_config(paper_config)
+
+
+@pytest.fixture(scope="session")
+def pin(params: ContactParameters) -> Pin:
+    return Pin(params.pin_radius)
+
+
+@pytest.fixture(scope="session")
+def clearance(params: ContactParameters) -> float:
+    return params.bushing_radius - params.pin_radius
+
+
+@pytest.fixture(scope="session")
+def circle(params: ContactParameters) -> BushingContour:
+    """Unworn bushing, 360 nodes (the paper's 1 degree spacing)."""
+    return BushingContour.circle(params.bushing_radius, 360, params.axial_length)
+
+
+@pytest.fixture(scope="session")
+def worn(params: ContactParameters) -> BushingContour:
+    """Bushing with a 20 um one-sided wear scar centred 20 deg counter-clockwise of 0 deg."""
+    return BushingContour.from_wear_profile(params.bushing_radius, scar(360), params.axial_length)
