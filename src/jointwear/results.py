@@ -76,9 +76,7 @@ def build_dataset(
         ),
         "bushing_radius": _var(
             ("theta",),
-            state.radius
-            if config.simulation.update_contour
-            else config.joint.bushing_radius + profiles[-1],
+            config.joint.bushing_radius + state.wear_depth,
             "m",
             "final inner radius of the bushing",
         ),

@@ -67,8 +67,9 @@ class SimulationState:
     ----------
     revolution : int
         Revolutions completed.
-    radius : ndarray, shape (N,)
-        Current bushing radii [m].
+    wear_depth : ndarray, shape (N,)
+        Accumulated radial wear depth [m] (the contour is the unworn circle plus
+        this; kept as depth, not radius, so small depths carry full precision).
     wear_rate : ndarray, shape (N,) or None
         Wear depth per revolution on the current contour [m].
     interval : int
@@ -84,7 +85,7 @@ class SimulationState:
     """
 
     revolution: int
-    radius: FloatArray
+    wear_depth: FloatArray
     wear_rate: FloatArray | None = None
     interval: int = 1
     history: dict[str, list[float]] = field(
@@ -209,7 +210,7 @@ class Simulation:
 
     def initial_state(self) -> SimulationState:
         """State before the first revolution."""
-        return SimulationState(revolution=0, radius=self.initial_contour().radius.copy())
+        return SimulationState(revolution=0, wear_depth=np.zeros(self.config.contact.nodes))
 
     def contact(
         self, contour: BushingContour, state: SimulationState | None = None
@@ -241,7 +242,7 @@ class Simulation:
     # ---------------------------------------------------------------- loop
     def step(self, state: SimulationState) -> SimulationState:
         """One contour update: solve a revolution, apply its wear over the next interval."""
-        contour = self._contour(state.radius)
+        contour = self._contour(state.wear_depth)
         solution = self.contact(contour, state)
         rate = self.wear_per_revolution(solution)
         interval = self._interval(
@@ -251,13 +252,13 @@ class Simulation:
         new = replace(
             state,
             revolution=state.revolution + interval,
-            radius=worn.radius.copy(),
+            wear_depth=worn.wear_depth,
             wear_rate=rate,
             interval=interval,
             warm_offset=_along_load(solution, self.joint_load.azimuth),
             window=_window_nodes(solution, contour),
         )
-        self._record(new, worn, solution)
+        self._record(new, new.wear_depth, solution)
         return new
 
     def run(
@@ -293,7 +294,9 @@ class Simulation:
         if progress is not None:
             progress(total, total)
         final_solution = (
-            self.contact(self._contour(state.radius)) if first_solution is None else first_solution
+            self.contact(self._contour(state.wear_depth))
+            if first_solution is None
+            else first_solution
         )
         initial_solution = first_solution or self.contact(self.initial_contour())
         runtime = time.perf_counter() - start
@@ -305,19 +308,27 @@ class Simulation:
     # ---------------------------------------------------------------- helpers
     def _linear(self, state: SimulationState) -> tuple[SimulationState, ContactSolution]:
         total = self.config.simulation.revolutions
-        contour = self._contour(state.radius)
+        contour = self._contour(state.wear_depth)
         solution = self.contact(contour)
         rate = self.wear_per_revolution(solution)
         for revolution in self._profile_revolutions():
             worn = update_contour(contour, rate * revolution, self.config.joint.bushing_thickness)
-            state = replace(state, revolution=revolution, wear_rate=rate, interval=revolution)
-            self._record(state, worn, solution)
+            state = replace(
+                state,
+                revolution=revolution,
+                wear_rate=rate,
+                interval=revolution,
+                wear_depth=worn.wear_depth,
+            )
+            self._record(state, state.wear_depth, solution)
         state.revolution = total
         return state, solution
 
-    def _contour(self, radius: FloatArray) -> BushingContour:
+    def _contour(self, wear_depth: FloatArray) -> BushingContour:
         joint = self.config.joint
-        return BushingContour(radius, joint.axial_length, joint.bushing_radius)
+        return BushingContour.from_wear_profile(
+            joint.bushing_radius, wear_depth, joint.axial_length
+        )
 
     def _profile_revolutions(self) -> list[int]:
         sim = self.config.simulation
@@ -335,12 +346,9 @@ class Simulation:
             remaining,
         )
 
-    def _record(
-        self, state: SimulationState, worn: BushingContour, solution: ContactSolution
-    ) -> None:
+    def _record(self, state: SimulationState, depth: FloatArray, solution: ContactSolution) -> None:
         joint = self.config.joint
-        depth = worn.wear_depth
-        area = metrics.removed_area(joint.bushing_radius, worn.radius)
+        area = metrics.worn_area(joint.bushing_radius, depth)
         row = {
             "revolution": state.revolution,
             "peak_wear_depth": metrics.wear_peak(depth),

@@ -65,11 +65,16 @@ class BushingContour:
         Axial length ``b`` of the joint [m].
     original_radius : float, optional
         Radius of the unworn bushing [m]; default the mean of ``radius``.
+    wear : array_like, shape (N,), optional
+        Wear depth that made ``radius`` from ``original_radius`` [m]. Kept
+        alongside the radius because ``radius - original_radius`` loses the
+        digits of a micrometre depth on a millimetre radius.
     """
 
     radius: FloatArray
     axial_length: float
     original_radius: float = field(default=np.nan)
+    wear: FloatArray | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         radius = np.asarray(self.radius, dtype=float)
@@ -85,6 +90,12 @@ class BushingContour:
         object.__setattr__(self, "radius", radius)
         if not np.isfinite(self.original_radius):
             object.__setattr__(self, "original_radius", float(radius.mean()))
+        if self.wear is not None:
+            wear = np.array(self.wear, dtype=float)
+            if wear.shape != radius.shape:
+                raise GeometryError("bushing contour: wear must have one value per node")
+            wear.setflags(write=False)
+            object.__setattr__(self, "wear", wear)
 
     # ---------------------------------------------------------------- builders
     @classmethod
@@ -108,7 +119,7 @@ class BushingContour:
     ) -> BushingContour:
         """A circle of ``radius`` worn by ``wear_depth`` [m] at the node angles."""
         wear = np.asarray(wear_depth, dtype=float)
-        return cls(radius + wear, axial_length, float(radius))
+        return cls(radius + wear, axial_length, float(radius), wear)
 
     @classmethod
     def from_points(
@@ -170,6 +181,8 @@ class BushingContour:
     @property
     def wear_depth(self) -> FloatArray:
         """Radial wear depth relative to the unworn circle [m]."""
+        if self.wear is not None:
+            return self.wear
         return self.radius - self.original_radius
 
     @property
@@ -179,8 +192,12 @@ class BushingContour:
 
     def worn(self, wear_depth: ArrayLike) -> BushingContour:
         """A new contour grown radially by ``wear_depth`` [m] at every node."""
+        increment = np.asarray(wear_depth, float)
         return BushingContour(
-            self.radius + np.asarray(wear_depth, float), self.axial_length, self.original_radius
+            self.radius + increment,
+            self.axial_length,
+            self.original_radius,
+            self.wear_depth + increment,
         )
 
     def radius_at(self, angle: ArrayLike) -> FloatArray:
@@ -193,7 +210,10 @@ class BushingContour:
 
     def rotated(self, shift: int) -> BushingContour:
         """The contour rotated by ``shift`` nodes (``shift * dtheta`` [rad])."""
-        return BushingContour(np.roll(self.radius, shift), self.axial_length, self.original_radius)
+        wear = None if self.wear is None else np.roll(self.wear, shift)
+        return BushingContour(
+            np.roll(self.radius, shift), self.axial_length, self.original_radius, wear
+        )
 
     def check_pin(self, pin: Pin) -> None:
         """Raise :class:`GeometryError` unless the pin fits inside the contour."""

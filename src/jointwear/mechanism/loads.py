@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from typing import Any, Literal
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 __all__ = ["JointLoad", "wrap_angle"]
 
@@ -106,6 +106,59 @@ class JointLoad:
     model: str = "massless-link"
     iterations: int = 0
     converged: bool = True
+
+    @classmethod
+    def from_history(
+        cls,
+        load: ArrayLike,
+        azimuth: ArrayLike,
+        relative_rotation: ArrayLike,
+        crank_speed: float = 2.0 * np.pi,
+        bushing_body: Literal["slider", "rod"] = "slider",
+    ) -> JointLoad:
+        """A joint load from arrays, e.g. exported by another multibody code.
+
+        Parameters
+        ----------
+        load : array_like, shape (N,)
+            Load magnitude at each step [N].
+        azimuth : array_like, shape (N,)
+            Direction in which the pin presses on the bushing, bushing frame [rad].
+        relative_rotation : array_like, shape (N,)
+            Rotation of the pin relative to the bushing over each step [rad].
+        crank_speed : float
+            Angular velocity of the cycle, ``2 pi / period`` [rad/s].
+        bushing_body : {"slider", "rod"}
+            Body that carries the bushing (informative).
+
+        Returns
+        -------
+        JointLoad
+            Steps equally spaced over one cycle; torque and positions are NaN.
+        """
+        from jointwear.errors import DataError
+
+        load = np.asarray(load, dtype=float).ravel()
+        azimuth = np.asarray(azimuth, dtype=float).ravel()
+        rotation = np.asarray(relative_rotation, dtype=float).ravel()
+        if not (load.size == azimuth.size == rotation.size) or load.size < 2:
+            raise DataError("load history: load, azimuth and relative_rotation need one "
+                            "value per step (at least 2 steps)")
+        if not (np.all(np.isfinite(load)) and np.all(np.isfinite(azimuth))
+                and np.all(np.isfinite(rotation))):
+            raise DataError("load history: values must be finite")
+        if np.any(load < 0):
+            raise DataError("load history: load magnitudes must be >= 0")
+        steps = load.size
+        angle = 2.0 * np.pi * np.arange(steps) / steps
+        nan = np.full(steps, np.nan)
+        return cls(
+            crank_angle=angle, time=angle / crank_speed, load=load, azimuth=azimuth,
+            relative_rotation=rotation, crank_torque=nan, force_x=load * np.cos(azimuth),
+            force_y=load * np.sin(azimuth), slider_position=nan, rod_angle=nan,
+            contact_lost=False, contact_lost_angles=np.zeros(0), crank_speed=crank_speed,
+            bushing_body=bushing_body, model="history",
+        )
 
     @property
     def steps(self) -> int:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["removed_area", "wear_mass", "wear_peak", "wear_volume", "wear_width"]
+__all__ = ["removed_area", "wear_mass", "wear_peak", "wear_volume", "wear_width", "worn_area"]
 
 
 def wear_peak(wear_depth: ArrayLike) -> float:
@@ -73,6 +73,25 @@ def removed_area(original_radius: float | ArrayLike, radius: ArrayLike) -> float
     radius = np.asarray(radius, dtype=float)
     original = np.broadcast_to(np.asarray(original_radius, dtype=float), radius.shape)
     return float(0.5 * np.sum((radius - original) * (radius + original)) * 2 * np.pi / radius.size)
+
+
+def worn_area(original_radius: float | ArrayLike, wear_depth: ArrayLike) -> float:
+    """Area removed by a wear-depth profile, exact for a polar contour [m^2].
+
+    Same as :func:`removed_area` with ``radius = original + wear_depth``, written
+    as ``1/2 sum h_j (2 r_0 + h_j) dtheta`` so that micrometre depths on a
+    millimetre radius keep full precision.
+
+    Parameters
+    ----------
+    original_radius : float or array_like, shape (N,)
+        Radius before wear [m].
+    wear_depth : array_like, shape (N,)
+        Radial wear depth [m].
+    """
+    depth = np.asarray(wear_depth, dtype=float)
+    original = np.broadcast_to(np.asarray(original_radius, dtype=float), depth.shape)
+    return float(0.5 * np.sum(depth * (2 * original + depth)) * 2 * np.pi / depth.size)
 
 
 def wear_volume(removed_area: float, axial_length: float) -> float:

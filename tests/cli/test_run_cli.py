@@ -1,0 +1,140 @@
+"""``jointwear run``, ``plot`` and ``reproduce`` from the command line."""
+
+from __future__ import annotations
+
+import json
+import tomllib
+
+import pytest
+
+from jointwear.cli import main
+from jointwear.config import config_from_dict
+
+FAST = ["--set", "contact.nodes=120", "--set", "simulation.steps_per_revolution=90"]
+REQUIRED = {
+    "peak_wear_depth_m",
+    "wear_width_deg",
+    "wear_mass_kg",
+    "wear_volume_m3",
+    "revolutions",
+    "contact_model",
+    "runtime_s",
+}
+
+
+def run_cli(args, capsys):
+    with pytest.raises(SystemExit) as exit_info:
+        main(args)
+    captured = capsys.readouterr()
+    return exit_info.value.code, captured.out, captured.err
+
+
+def ok_cli(args, capsys):
+    main(args)
+    return capsys.readouterr()
+
+
+def test_run_json_is_exactly_one_object(paper_config_path, capsys) -> None:
+    out = ok_cli(["run", str(paper_config_path), *FAST, "--json"], capsys).out
+    data = json.loads(out)
+    assert out.count("\n") == 1
+    assert set(data) >= REQUIRED
+    assert data["revolutions"] == 1
+    assert data["contact_model"] == "asymmetric-winkler"
+
+
+def test_run_accepts_units_in_overrides(paper_config_path, capsys) -> None:
+    base = json.loads(ok_cli(["run", str(paper_config_path), *FAST, "--json"], capsys).out)
+    wide = json.loads(
+        ok_cli(
+            [
+                "run",
+                str(paper_config_path),
+                *FAST,
+                "--json",
+                "--set",
+                'joint.clearance="0.2 mm"',
+                "--set",
+                "mechanism.crank_speed=240 rpm",
+            ],
+            capsys,
+        ).out
+    )
+    assert wide["wear_width_deg"] < base["wear_width_deg"]
+    assert wide["peak_wear_depth_m"] > base["peak_wear_depth_m"]
+
+
+def test_run_out_writes_everything(paper_config_path, tmp_path, capsys) -> None:
+    out = tmp_path / "run"
+    ok_cli(["run", str(paper_config_path), *FAST, "--out", str(out), "--quiet"], capsys)
+    names = {p.name for p in out.iterdir()}
+    assert {"result.nc", "metrics.csv", "config.toml", "summary.json", "plots"} <= names
+    assert not [n for n in names if n.startswith(".")]
+    for figure in ("wear_polar", "wear_profiles", "pressure", "joint_load", "wear_history"):
+        assert (out / "plots" / f"{figure}.png").stat().st_size > 1000
+        assert (out / "plots" / f"{figure}.svg").exists()
+    # every default is written: the saved config alone reproduces the run
+    saved = tomllib.loads((out / "config.toml").read_text())
+    assert saved["contact"]["spring_area"] > 0
+    assert saved["mechanism"]["rod_inertia"] == pytest.approx(1.09 * 0.2**2 / 12)
+    config = config_from_dict(saved, defaults=False)
+    assert config.contact.nodes == 120
+
+
+def test_plot_redraws_from_a_saved_result(paper_config_path, tmp_path, capsys) -> None:
+    out = tmp_path / "run"
+    ok_cli(["run", str(paper_config_path), *FAST, "--out", str(out), "--no-plots", "-q"], capsys)
+    assert not (out / "plots").exists()
+    ok_cli(["plot", str(out / "result.nc"), "--magnification", "1000"], capsys)
+    assert (out / "plots" / "wear_polar.png").exists()
+
+
+def test_bad_config_fails_cleanly_and_writes_nothing(paper_config_path, tmp_path, capsys) -> None:
+    out = tmp_path / "run"
+    code, _stdout, stderr = run_cli(
+        ["run", str(paper_config_path), "--out", str(out), "--set", "joint.clearance=-1"], capsys
+    )
+    assert code == 2
+    assert stderr.count("\n") == 1
+    assert "joint.clearance" in stderr
+    assert "Traceback" not in stderr
+    assert not out.exists()
+
+
+def test_wear_through_fails_cleanly_and_writes_nothing(paper_config_path, tmp_path, capsys) -> None:
+    out = tmp_path / "run"
+    code, _, stderr = run_cli(
+        [
+            "run",
+            str(paper_config_path),
+            *FAST,
+            "--out",
+            str(out),
+            "--set",
+            "materials.bushing.wear_coefficient=1e-6",
+            "--set",
+            "simulation.revolutions=100",
+            "--set",
+            "simulation.update_contour=true",
+        ],
+        capsys,
+    )
+    assert code == 2
+    assert "bushing_thickness" in stderr
+    assert "wall" in stderr
+    assert not out.exists() or not any(out.iterdir())
+
+
+def test_plot_of_a_broken_file(tmp_path, capsys) -> None:
+    broken = tmp_path / "broken.nc"
+    broken.write_text("nope")
+    code, _, stderr = run_cli(["plot", str(broken)], capsys)
+    assert code == 2
+    assert "broken.nc" in stderr
+
+
+def test_debug_shows_the_traceback(paper_config_path) -> None:
+    from jointwear.errors import ConfigError
+
+    with pytest.raises(ConfigError):
+        main(["--debug", "run", str(paper_config_path), "--set", "joint.clearance=-1"])
