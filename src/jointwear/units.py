@@ -78,15 +78,20 @@ def to_si(value: Any, kind: str, key: str = "value") -> float:
             raise ConfigError(f"{key}: cannot read {value!r} as a quantity ({exc})") from None
         if isinstance(quantity, int | float):
             magnitude = float(quantity)
+        elif quantity.unitless:
+            # a bare number written as text ("7.5e-3") is SI, as a number would be
+            magnitude = float(quantity.magnitude)
         else:
             target = _unit(kind)
             if not quantity.check(target.dimensionality) and not (
                 kind == "angular_velocity" and quantity.check("1/[time]")
             ):
                 expected = DIMENSIONS[kind] or "dimensionless"
+                what = kind.replace("_", " ")
+                article = "an" if what[0] in "aeiou" else "a"
                 raise ConfigError(
                     f"{key}: {value!r} has dimension {quantity.dimensionality}, "
-                    f"expected a {kind.replace('_', ' ')} (e.g. in {expected})"
+                    f"expected {article} {what} (e.g. in {expected})"
                 )
             magnitude = float(quantity.to(target).magnitude)
     else:
