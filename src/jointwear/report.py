@@ -238,6 +238,8 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines.append("")
     lines += _trend_notes(report["trends"])
 
+    lines += _sensitivity_lines(report.get("sensitivity") or [])
+
     others = [n for n in report["cases"] if n not in PAPER_ROWS]
     if others:
         lines += [
@@ -263,6 +265,33 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines += ["## Notes", "", _NOTES]
     with atomic_write(path, encoding="utf-8") as handle:
         handle.write("\n".join(lines) + "\n")
+
+
+def _sensitivity_lines(variants: list[dict]) -> list[str]:
+    if not variants:
+        return []
+    lines = [
+        "## Sensitivity to what the paper leaves open",
+        "",
+        "Each variant changes one reading, is re-calibrated on the same single row, and "
+        "re-predicts the one-revolution rows. Mean |deviation| over the predicted rows "
+        "(peak / width / mass), and the calibrated values:",
+        "",
+        "| variant | mean abs. dev. peak | width | mass | b [mm] | L [mm] | preload [N] |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for variant in variants:
+        devs = [d for name, d in variant["deviations"].items() if "winkler_120rpm" not in name]
+        means = [sum(abs(d[k]) for d in devs) / len(devs) for k in ("peak", "width", "mass")]
+        cal = variant["calibrated"]
+        lines.append(
+            f"| {variant['variant']} | {means[0] * 100:.1f} % | {means[1] * 100:.1f} % | "
+            f"{means[2] * 100:.1f} % | {cal['joint.axial_length'] * 1e3:.3g} | "
+            f"{cal['joint.bushing_thickness'] * 1e3:.3g} | "
+            f"{cal['mechanism.spring_preload']:.4g} |"
+        )
+    lines.append("")
+    return lines
 
 
 def _trend_notes(trends: list[dict]) -> list[str]:

@@ -35,6 +35,7 @@ __all__ = [
     "check_trends",
     "deviation",
     "reproduce",
+    "sensitivity",
 ]
 
 
@@ -261,12 +262,63 @@ def calibrate_on_paper(base_overrides: dict[str, Any] | None = None) -> Calibrat
     return calibrate_metrics(config, targets, CALIBRATION_PARAMETERS)
 
 
+#: alternative readings of what the paper leaves open, each re-calibrated on the
+#: calibration row and re-predicting the one-revolution rows (no per-row tuning)
+SENSITIVITY = {
+    "paper's sliding reading (contact azimuth)": {"simulation.sliding": "contact-azimuth"},
+    "constrained Winkler modulus": {"contact.foundation_modulus": "constrained"},
+    "spring pushing the slider towards the crank": {"mechanism.spring_mode": "push"},
+}
+
+
+def sensitivity(overrides: dict[str, Any] | None = None) -> list[dict[str, Any]]:
+    """Re-run the calibration protocol under each alternative reading in ``SENSITIVITY``.
+
+    Returns, per variant, the calibrated values and the deviation from the paper
+    of every one-revolution row (Tables 3 and 4).
+    """
+    from jointwear.simulation import Simulation
+
+    rows = [n for n, r in PAPER_ROWS.items() if r.table in ("Table 3", "Table 4")]
+    out = []
+    for label, variant in SENSITIVITY.items():
+        base = {**(overrides or {}), **variant}
+        calibration = calibrate_on_paper(base)
+        settings = {**base, **calibration.values}
+        deviations = {}
+        for name in rows:
+            summary = Simulation(case_config(name, settings)).run().summary()
+            row = PAPER_ROWS[name]
+            ours = _metrics(summary)
+            deviations[name] = {
+                key: deviation(value, paper)
+                for key, value, paper in zip(
+                    ("peak", "width", "mass"), ours, (row.peak, row.width, row.mass), strict=True
+                )
+            }
+        w120, w240 = (PAPER_ROWS[f"table3_winkler_{s}"] for s in ("120rpm", "240rpm"))
+        ratio = ((1 + deviations["table3_winkler_240rpm"]["mass"]) * w240.mass) / (
+            (1 + deviations["table3_winkler_120rpm"]["mass"]) * w120.mass
+        )
+        out.append(
+            {
+                "variant": label,
+                "settings": variant,
+                "calibrated": calibration.values,
+                "deviations": deviations,
+                "mass_ratio_240_120": ratio,
+            }
+        )
+    return out
+
+
 def reproduce(
     out: str | Path,
     progress: Callable[[str, int, int], None] | None = None,
     calibrate: bool = True,
     cases: list[str] | None = None,
     overrides: dict[str, Any] | None = None,
+    with_sensitivity: bool | None = None,
 ) -> dict[str, Any]:
     """Run every paper case and write ``out/report.md`` and figures.
 
@@ -282,6 +334,9 @@ def reproduce(
         Subset of cases (default all).
     overrides : dict, optional
         Dotted-key overrides applied to every case before calibration.
+    with_sensitivity : bool, optional
+        Also re-run the protocol under the alternative readings of
+        ``SENSITIVITY`` (default: when all cases are run with calibration).
 
     Returns
     -------
@@ -294,6 +349,7 @@ def reproduce(
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
     overrides = dict(overrides or {})
+    overrides_in = dict(overrides)
     calibration = None
     if calibrate:
         calibration = calibrate_on_paper(overrides)
@@ -314,6 +370,9 @@ def reproduce(
     if progress is not None:
         progress("done", len(names), len(names))
     trends = check_trends(summaries)
+    if with_sensitivity is None:
+        with_sensitivity = calibrate and cases is None
+    variants = sensitivity(overrides_in) if with_sensitivity else []
     from jointwear.report import figures, write_report
 
     figure_paths = figures(datasets, out / "figures")
@@ -329,6 +388,7 @@ def reproduce(
         },
         "cases": summaries,
         "trends": trends,
+        "sensitivity": variants,
         "total_runtime_s": time.perf_counter() - started,
         "machine": f"{platform.processor() or platform.machine()}, {platform.system()}, "
         f"Python {platform.python_version()}",
