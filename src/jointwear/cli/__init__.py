@@ -20,10 +20,19 @@ from jointwear.errors import JointwearError
 from jointwear.cli import contact_cmd  # noqa: F401  isort: skip
 from jointwear.cli import dynamics_cmd  # noqa: F401  isort: skip
 from jointwear.cli import measure_cmd  # noqa: F401  isort: skip
+from jointwear.cli import compare_cmd  # noqa: F401  isort: skip
+from jointwear.cli import calibrate_cmd  # noqa: F401  isort: skip
 from jointwear.cli import run_cmd  # noqa: F401  isort: skip
 from jointwear.cli import reproduce_cmd  # noqa: F401  isort: skip
+from jointwear.cli import compare_models_cmd  # noqa: F401  isort: skip
+from jointwear.cli import sweep_cmd  # noqa: F401  isort: skip
 
 __all__ = ["app", "main"]
+
+# typer >= 0.20 parses with its own copy of click (typer._click): catch both
+_EXIT = (click.exceptions.Exit, getattr(typer, "Exit", click.exceptions.Exit))
+_ABORT = (click.exceptions.Abort, getattr(typer, "Abort", click.exceptions.Abort))
+_USAGE_ERRORS = (click.ClickException, getattr(typer, "TyperException", click.ClickException))
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -38,15 +47,16 @@ def main(argv: list[str] | None = None) -> None:
             raise
         err_console.print(f"error: {exc}", markup=False, highlight=False, soft_wrap=True)
         sys.exit(2)
-    except click.exceptions.Exit as exc:
+    except _EXIT as exc:
         sys.exit(exc.exit_code)
-    except click.ClickException as exc:
+    except _USAGE_ERRORS as exc:
         if debug:
             raise
-        message = exc.format_message().replace("\n", " ")
-        err_console.print(f"error: {message}", markup=False, highlight=False, soft_wrap=True)
+        message = (getattr(exc, "format_message", None) or exc.__str__)().replace("\n", " ")
+        if message.strip():  # empty for a bare `jointwear` (the help was shown)
+            err_console.print(f"error: {message}", markup=False, highlight=False, soft_wrap=True)
         sys.exit(2)
-    except click.exceptions.Abort:
+    except _ABORT:
         err_console.print("aborted")
         sys.exit(130)
     except KeyboardInterrupt:

@@ -8,6 +8,8 @@ Every model is selected by name (``CONTACT_MODELS``) or passed as a callable
 ``winkler``            linear springs, symmetric about the load (eqs. 4-5)
 ``asymmetric-winkler`` linear springs on the real contour (eq. 6)
 ``nlcp``               power-law springs, cylinder on plane (eq. 7)
+``persson``            reference: exact elastic pin in a hole (circular bushings)
+``fem``                reference: finite elements of the wall in a rigid housing
 =====================  =====================================================
 """
 
@@ -29,6 +31,7 @@ from jointwear.contact.laws import (
 )
 from jointwear.contact.solution import ContactSolution
 from jointwear.geometry.contour import BushingContour, Pin
+from jointwear.references import fem_model, persson_model
 from jointwear.registry import Registry
 
 __all__ = [
@@ -52,12 +55,17 @@ CONTACT_MODELS.add("hertz", hertz.HertzLaw)
 CONTACT_MODELS.add("winkler", winkler.spring_law)
 CONTACT_MODELS.add("asymmetric-winkler", asymmetric_winkler.spring_law)
 CONTACT_MODELS.add("nlcp", nlcp.spring_law)
+# reference solutions (issue 8): exact elasticity and finite elements
+CONTACT_MODELS.add("persson", persson_model)
+CONTACT_MODELS.add("fem", fem_model)
 
 MODEL_DESCRIPTIONS = {
     "hertz": "Hertz force law F = K delta^n with the line-contact pressure profile (eqs. 1-3)",
     "winkler": "linear Winkler springs p = E_w/L delta, symmetric about the load (eqs. 4-5)",
     "asymmetric-winkler": "Winkler springs on the real (worn) contour, N = N_L + N_R (eq. 6)",
     "nlcp": "nonlinear springs p = K delta^n / A, cylinder on plane (eq. 7)",
+    "persson": "reference: exact elastic pin in a hole (Persson), circular bushings only",
+    "fem": "reference: finite elements of the bushing wall in a rigid housing (scikit-fem)",
 }
 
 

@@ -1,0 +1,52 @@
+"""Reference solutions for the contact pressure models (issue 8).
+
+The paper compares NLCP with Winkler but neither with an exact solution. This
+package provides two references with the contact-model interface
+(``.solve(contour, pin, load, azimuth, **options) -> ContactSolution``):
+
+=============  ==============================================================
+``persson``    exact plane-strain elasticity of a pin in a hole (Persson's
+               problem), numerically exact, circular bushings only
+               (:mod:`jointwear.references.persson`)
+``fem``        finite elements (scikit-fem) of the real bushing wall in a
+               rigid housing, unilateral contact with the rigid pin, worn
+               contours too (:mod:`jointwear.references.fem`)
+=============  ==============================================================
+
+:mod:`jointwear.references.compare` tabulates every contact model against them
+and :mod:`jointwear.references.calibrate` fits Winkler's and NLCP's constants to
+a reference. Submodules are imported lazily: this package is imported by
+:mod:`jointwear.contact` to register the models.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+__all__ = ["fem_model", "persson_model"]
+
+
+def persson_model(parameters: Any) -> Any:
+    """Factory of the ``persson`` contact model.
+
+    Parameters
+    ----------
+    parameters : ContactParameters
+        Geometry and materials (SI).
+    """
+    from jointwear.references.persson import PerssonModel
+
+    return PerssonModel(parameters)
+
+
+def fem_model(parameters: Any) -> Any:
+    """Factory of the ``fem`` contact model.
+
+    Parameters
+    ----------
+    parameters : ContactParameters
+        Geometry and materials (SI).
+    """
+    from jointwear.references.fem import FemModel
+
+    return FemModel(parameters)
