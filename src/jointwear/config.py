@@ -171,13 +171,42 @@ class ContactConfig(_Section):
 
 
 class DynamicsConfig(_Section):
-    """Which dynamics model produces the joint load."""
+    """Which dynamics model produces the joint load, and its settings.
+
+    The keys from ``force_law`` on belong to ``model = "contact-impact"``
+    (:mod:`jointwear.mechanism.contact_impact`); velocities are m/s or strings
+    with units (``"0.1 mm/s"``).
+    """
 
     model: str = "massless-link"
     strict: bool = False
     scheme: Literal["fixed-point", "paper"] = "fixed-point"
     fixed_point_tolerance: Annotated[float, Field(gt=0, lt=1)] = 1e-12
     max_iterations: Annotated[int, Field(ge=1, le=1000)] = 50
+    # contact-impact model
+    force_law: Literal["lankarani-nikravesh", "hunt-crossley", "flores", "nlcp", "winkler"] = (
+        "lankarani-nikravesh"
+    )
+    restitution: Annotated[float, Field(gt=0, le=1)] = 0.9
+    friction_coefficient: Annotated[float, Field(ge=0, le=10)] = 0.0
+    friction_velocity_tolerance: Annotated[float, _si("velocity"), Field(gt=0)] = 1e-4
+    friction_velocity_full: Annotated[float | None, _si("velocity"), Field(gt=0)] = None
+    impact_velocity_floor: Annotated[float, _si("velocity"), Field(gt=0)] = 1e-3
+    integrator: Literal["LSODA", "Radau", "BDF", "RK45", "DOP853"] = "LSODA"
+    rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
+    atol: Annotated[float, Field(gt=0)] = 1e-10
+    revolutions_settle: Annotated[int, Field(ge=0, le=10_000)] = 2
+    max_step: Annotated[float | None, _si("time"), Field(gt=0)] = None
+
+    @model_validator(mode="after")
+    def _friction_ramp(self) -> DynamicsConfig:
+        full = self.friction_velocity_full
+        if full is not None and full <= self.friction_velocity_tolerance:
+            raise ValueError(
+                f"dynamics.friction_velocity_full: must be > friction_velocity_tolerance "
+                f"({self.friction_velocity_tolerance:g} m/s), got {full:g} m/s"
+            )
+        return self
 
     @field_validator("model")
     @classmethod
@@ -244,12 +273,22 @@ class Config(_Section):
 
     def replace(self, overrides: Mapping[str, Any]) -> Config:
         """Return a new config with dotted-key overrides applied and validated."""
-        data = self.to_dict()
+        # the raw fields, not to_dict(): derived defaults (rod inertia from the rod
+        # mass, spring area from the axial length) must follow the overrides
+        data = _without_none(self.model_dump(mode="json"))
         apply_overrides(data, overrides)
         return config_from_dict(data, defaults=False)
 
 
 # ---------------------------------------------------------------- loading
+
+
+def _without_none(data: Mapping[str, Any]) -> dict[str, Any]:
+    return {
+        key: _without_none(value) if isinstance(value, Mapping) else value
+        for key, value in data.items()
+        if value is not None
+    }
 
 
 def _deep_merge(base: dict[str, Any], update: Mapping[str, Any]) -> dict[str, Any]:
@@ -304,8 +343,36 @@ def _field_names(loc: tuple[Any, ...]) -> list[str]:
     return list(getattr(model, "model_fields", {}))
 
 
+def _key_loc(loc: tuple[Any, ...]) -> tuple[Any, ...]:
+    """The config key of an error location (without pydantic's union-branch tags)."""
+    out: list[Any] = []
+    model: Any = Config
+    for part in loc:
+        if isinstance(part, int):
+            continue
+        if model is None:  # past a value: e.g. 'constrained-int' of an int | Literal field
+            break
+        out.append(part)
+        field = getattr(model, "model_fields", {}).get(part)
+        annotation = getattr(field, "annotation", None)
+        is_model = isinstance(annotation, type) and hasattr(annotation, "model_fields")
+        model = annotation if is_model else None
+    return tuple(out)
+
+
+def _first_error(errors: list[Any]) -> Mapping[str, Any]:
+    """The error to report; for text given to an ``int | Literal`` key, the Literal one."""
+    first = errors[0]
+    if isinstance(first.get("input"), str):
+        key = _key_loc(tuple(first["loc"]))
+        for error in errors:
+            if error["type"] == "literal_error" and _key_loc(tuple(error["loc"])) == key:
+                return error
+    return first
+
+
 def _message(error: Mapping[str, Any]) -> str:
-    loc = tuple(p for p in error["loc"] if not isinstance(p, int))
+    loc = _key_loc(tuple(error["loc"]))
     key = ".".join(str(p) for p in loc) or "config"
     kind = error["type"]
     if kind == "extra_forbidden":
@@ -343,7 +410,7 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
     try:
         return Config.model_validate(data)
     except ValidationError as exc:
-        raise ConfigError(_message(exc.errors()[0])) from None
+        raise ConfigError(_message(_first_error(exc.errors()))) from None
 
 
 def load_config(

@@ -31,6 +31,7 @@ DIMENSIONS: dict[str, str] = {
     "pressure": "Pa",
     "angular_velocity": "rad/s",
     "angle": "rad",
+    "velocity": "m/s",
     "acceleration": "m/s**2",
     "density": "kg/m**3",
     "wear_coefficient": "1/Pa",

@@ -22,7 +22,7 @@ from jointwear.cli.common import (
     load,
 )
 from jointwear.io import atomic_write
-from jointwear.mechanism import JointLoad, joint_load
+from jointwear.mechanism import JointLoad, joint_load, solve_contact_impact
 
 CsvOpt = Annotated[
     Path | None,
@@ -59,9 +59,16 @@ def dynamics(
     if strict:
         overrides.append("dynamics.strict=true")
     cfg = load(config, overrides)
+    extra: dict[str, object] = {}
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        result = joint_load(cfg)
+        if cfg.dynamics.model == "contact-impact":
+            # the richer solution: impacts, free flight, difference from massless-link
+            solution = solve_contact_impact(cfg)
+            result = solution.load
+            extra = solution.summary()
+        else:
+            result = joint_load(cfg)
     # warnings go to stderr as one line each, so stdout stays a single JSON object
     for warning in caught:
         err_console.print(f"warning: {warning.message}", markup=False, highlight=False,
@@ -73,6 +80,7 @@ def dynamics(
         "spring_mode": cfg.mechanism.spring_mode,
         "clearance_m": cfg.joint.clearance,
         "crank_speed_rpm": cfg.mechanism.crank_speed * 60.0 / (2.0 * math.pi),
+        **extra,
     }
     if json_:
         emit_json(summary)
@@ -99,6 +107,21 @@ def dynamics(
         ("fixed-point iterations", str(summary["iterations"])),
         ("contact lost", "yes" if summary["contact_lost"] else "no"),
     ]
+    if extra:
+        rows += [
+            ("force law / c_e / mu",
+             f"{summary['force_law']} / {summary['restitution']:.4g} / "
+             f"{summary['friction_coefficient']:.4g}"),
+            ("impacts in the revolution", str(summary["impacts"])),
+            ("free-flight fraction", f"{summary['free_flight_fraction']:.4g}"),
+            ("max penetration", f"{summary['max_penetration_m'] * 1e6:.4g} µm"),
+            ("|F - F_massless| rms / max",
+             f"{summary['load_difference_rms_n']:.4g} N / "
+             f"{summary['load_difference_max_n']:.4g} N"),
+            ("integration (" + str(summary["integrator"]) + ")",
+             f"{summary['integration_runtime_s']:.3g} s, "
+             f"{summary['rhs_evaluations']} evaluations"),
+        ]
     for name, value in rows:
         table.add_row(name, value)
     console.print(table)

@@ -8,6 +8,9 @@ by ``dynamics.model`` through :data:`DYNAMICS_MODELS`:
 =================  ==========================================================
 ``massless-link``  slider-crank, clearance as a massless link along the
                    load (continuous contact), paper eqs. (10)-(12)
+``contact-impact`` slider-crank with the pin free in the clearance: contact
+                   force law with hysteresis damping, Coulomb friction,
+                   event-driven integration (:mod:`.contact_impact`)
 =================  ==========================================================
 """
 
@@ -16,6 +19,14 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from jointwear.config import Config
+from jointwear.mechanism import force_laws
+from jointwear.mechanism.contact_impact import (
+    ContactImpactSettings,
+    ContactImpactSolution,
+    JointContact,
+    contact_impact_load,
+    solve_contact_impact,
+)
 from jointwear.mechanism.loads import JointLoad, wrap_angle
 from jointwear.mechanism.slider_crank import (
     JointReaction,
@@ -44,14 +55,19 @@ from jointwear.registry import Registry
 __all__ = [
     "DYNAMICS_MODELS",
     "DYNAMICS_MODEL_DESCRIPTIONS",
+    "ContactImpactSettings",
+    "ContactImpactSolution",
+    "JointContact",
     "JointLoad",
     "JointReaction",
     "MasslessLinkSolution",
     "SliderCrank",
     "SliderCrankMotion",
     "clearance_motion",
+    "contact_impact_load",
     "contact_loss",
     "crank_angle_grid",
+    "force_laws",
     "ideal_motion",
     "inverse_dynamics",
     "joint_load",
@@ -63,6 +79,7 @@ __all__ = [
     "slider_acceleration",
     "slider_position",
     "slider_velocity",
+    "solve_contact_impact",
     "solve_massless_link",
     "spectral_derivative",
     "spring_force",
@@ -74,10 +91,13 @@ DYNAMICS_MODELS: Registry[Callable[[Config], JointLoad]] = Registry(
     "dynamics model", "dynamics.model"
 )
 DYNAMICS_MODELS.add("massless-link", massless_link_load)
+DYNAMICS_MODELS.add("contact-impact", contact_impact_load)
 
 DYNAMICS_MODEL_DESCRIPTIONS = {
     "massless-link": "clearance as a massless link along the load, continuous contact "
     "(eqs. 10-12)",
+    "contact-impact": "pin free in the clearance: contact force law with hysteresis damping "
+    "and friction, event-driven integration (no continuous-contact assumption)",
 }
 
 

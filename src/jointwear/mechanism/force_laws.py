@@ -1,0 +1,551 @@
+r"""Continuous contact force laws for the pin–bushing impact (``dynamics.force_law``).
+
+The contact–impact dynamics (:mod:`jointwear.mechanism.contact_impact`) lets the pin
+move freely inside the bushing; while it penetrates the wall, the normal force
+comes from one of the laws below, and Coulomb friction acts along the wall.
+
+**Point laws** (the pin-in-hole as one Hertz contact, penetration
+``delta = |e| - c`` of the pin-centre offset ``e`` beyond the radial clearance
+``c = R_b - R_p``). All are Hertz's elastic force with a hysteresis damping term,
+
+.. math::
+
+    F_N = K \delta^n \left(1 + \chi \frac{\dot\delta}{\dot\delta^{(-)}}\right),
+    \qquad F_N \leftarrow \max(F_N, 0),
+
+with ``delta_dot^(-)`` the normal approach velocity at the start of the contact
+(recorded at the contact-start event) and ``chi`` the hysteresis factor
+(:func:`hysteresis_factor`):
+
+============================  ===========================  =====================
+``lankarani-nikravesh`` [1]_  ``chi = 3 (1 - c_e^2) / 4``  derived for ``c_e -> 1``
+``hunt-crossley`` [2]_ [3]_   ``chi = 3 (1 - c_e) / 2``    derived for ``c_e -> 1``
+``flores`` [4]_               ``chi = 8 (1 - c_e) / (5 c_e)``  any ``c_e`` (soft materials)
+============================  ===========================  =====================
+
+``K`` is eq. (2) of the NLCP paper with ``R_i = R_p`` (pin) and ``R_j = R_b``
+(bushing, internal contact, :func:`pin_in_hole_stiffness`), ``n = 1.5``.
+The clip ``max(F_N, 0)`` removes the small tensile force the damping term gives
+near the end of the restitution phase when ``chi delta_dot^(+)/delta_dot^(-) > 1``
+(low ``c_e``); the contact then ends with ``delta > 0`` still (the wall recovers
+after the pin has left).
+
+**Distributed laws** ``nlcp`` and ``winkler``: the pressure model of the wear
+pipeline (:mod:`jointwear.contact`) integrated over the current bushing contour
+for the displaced pin (:func:`spring_resultant`). Each node ``j`` of the contour
+is a radial spring with the exact penetration ``delta_j(e) = max(t_j(e) - r_j, 0)``
+(:meth:`jointwear.geometry.BushingContour.penetration`), pressure ``p(delta_j)``
+from the spring law and area ``A_j``; the elastic force on the bushing is the
+gradient of the stored energy
+
+.. math::
+
+    V(\mathbf e) = \sum_j A_j \int_0^{\delta_j} p(s)\,ds, \qquad
+    \mathbf F_{el} = \nabla_{\mathbf e} V = \sum_j A_j\, p(\delta_j)\, \nabla t_j ,
+
+which is the radial-spring resultant ``sum_j A_j p_j u_j`` up to terms of order
+``|e| / R_p`` (about 1 % of each spring's force, mostly cancelling between the two
+sides), and is exactly conservative. The same hysteresis damping as
+Lankarani–Nikravesh multiplies it.
+
+**Friction** (:func:`friction_force`): Coulomb with Ambrósio's dynamic correction
+coefficient [5]_, ``F_T = -mu c_d(v_T) F_N sign(v_T)``, ``c_d`` rising from 0 at
+``|v_T| <= v_0`` to 1 at ``|v_T| >= v_1`` (here a C1 cubic ramp instead of the
+original linear one, so the right-hand side of the equations of motion stays
+differentiable).
+
+References
+----------
+.. [1] Lankarani, H. M., Nikravesh, P. E.: A contact force model with hysteresis
+   damping for impact analysis of multibody systems. J. Mech. Des. 112, 369-376
+   (1990).
+.. [2] Hunt, K. H., Crossley, F. R. E.: Coefficient of restitution interpreted as
+   damping in vibroimpact. J. Appl. Mech. 42, 440-445 (1975).
+.. [3] Marhefka, D. W., Orin, D. E.: A compliant contact model with nonlinear
+   damping for simulation of robotic systems. IEEE Trans. SMC A 29, 566-572 (1999).
+.. [4] Flores, P., Machado, M., Silva, M. T., Martins, J. M.: On the continuous
+   contact force models for soft materials in multibody dynamics. Multibody
+   Syst. Dyn. 25, 357-375 (2011).
+.. [5] Ambrósio, J. A. C.: Impact of rigid and flexible multibody systems:
+   deformation description and contact models. In: Virtual Nonlinear Multibody
+   Systems, NATO Sci. Ser. 103, 57-81 (2003).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import brentq
+
+from jointwear.contact import hertz
+from jointwear.contact.laws import PowerLaw, SpringLaw
+from jointwear.errors import ConfigError
+from jointwear.geometry.contour import BushingContour, Pin, ray_distance, ray_distance_derivative
+
+__all__ = [
+    "DISTRIBUTED_LAWS",
+    "FORCE_LAWS",
+    "POINT_LAWS",
+    "ForceLaw",
+    "dissipative_force",
+    "elastic_force",
+    "elastic_potential",
+    "flores",
+    "friction_force",
+    "friction_ramp",
+    "hunt_crossley",
+    "hysteresis_factor",
+    "hysteresis_restitution",
+    "lankarani_nikravesh",
+    "pin_in_hole_stiffness",
+    "spring_gap",
+    "spring_resultant",
+]
+
+FloatArray = NDArray[np.float64]
+ForceLaw = Literal["lankarani-nikravesh", "hunt-crossley", "flores", "nlcp", "winkler"]
+
+#: laws with one Hertz contact ``F = K delta^n (...)``
+POINT_LAWS: tuple[str, ...] = ("lankarani-nikravesh", "hunt-crossley", "flores")
+#: laws integrated over the bushing contour with a :mod:`jointwear.contact` spring law
+DISTRIBUTED_LAWS: tuple[str, ...] = ("nlcp", "winkler")
+#: every name accepted by ``dynamics.force_law``
+FORCE_LAWS: tuple[str, ...] = POINT_LAWS + DISTRIBUTED_LAWS
+
+
+def hysteresis_factor(law: str, restitution: float) -> float:
+    """Hysteresis factor ``chi`` of a dissipative contact law [-].
+
+    Parameters
+    ----------
+    law : str
+        One of :data:`FORCE_LAWS`; ``"nlcp"`` and ``"winkler"`` use the
+        Lankarani–Nikravesh factor.
+    restitution : float
+        Coefficient of restitution ``c_e``, ``0 < c_e <= 1`` [-].
+
+    Returns
+    -------
+    float
+        ``3 (1 - c_e^2) / 4`` (Lankarani–Nikravesh, nlcp, winkler),
+        ``3 (1 - c_e) / 2`` (Hunt–Crossley) or ``8 (1 - c_e) / (5 c_e)`` (Flores)
+        [-]; zero for ``c_e = 1`` (elastic contact).
+
+    Raises
+    ------
+    ConfigError
+        For an unknown law or ``c_e`` outside ``(0, 1]``.
+    """
+    if not 0.0 < restitution <= 1.0:
+        raise ConfigError(f"dynamics.restitution: must be in (0, 1], got {restitution!r}")
+    if law in ("lankarani-nikravesh", "nlcp", "winkler"):
+        return 0.75 * (1.0 - restitution**2)
+    if law == "hunt-crossley":
+        return 1.5 * (1.0 - restitution)
+    if law == "flores":
+        return 1.6 * (1.0 - restitution) / restitution
+    raise ConfigError(
+        f"dynamics.force_law: unknown force law {law!r}; choose from "
+        + ", ".join(repr(name) for name in FORCE_LAWS)
+    )
+
+
+def hysteresis_restitution(hysteresis: float) -> float:
+    r"""Coefficient of restitution that a hysteresis factor actually produces [-].
+
+    For every force of the form ``F = f(delta) (1 + chi delta'/delta'^-)`` (any
+    elastic law ``f``: Hertz, NLCP or Winkler resultants) a single impact of a
+    free body ends with the normal velocity ``-e delta'^-``, where ``e`` depends on
+    ``chi`` only. With ``u = delta' / delta'^-``, ``m delta'' = -F`` gives
+    ``m delta'^-^2 u du / (1 + chi u) = -f(delta) d delta``; over the compression
+    (``u: 1 -> 0``) and restitution (``u: 0 -> -e``) the right side integrates to
+    zero, so
+
+    .. math:: \int_1^{-e} \frac{u\,du}{1 + \chi u} = 0
+              \iff \chi (1 + e) = \ln\frac{1 + \chi}{1 - \chi e},
+
+    independent of the mass, the impact velocity, ``K`` and ``n``. Since
+    ``e < 1/chi``, the damped force never turns tensile during a free impact.
+
+    Parameters
+    ----------
+    hysteresis : float
+        ``chi >= 0`` [-] (:func:`hysteresis_factor`).
+
+    Returns
+    -------
+    float
+        Effective coefficient of restitution ``e`` in ``(0, 1]`` [-].
+    """
+    chi = float(hysteresis)
+    if chi < 0.0 or not math.isfinite(chi):
+        raise ConfigError(f"hysteresis factor must be finite and >= 0, got {hysteresis!r}")
+    if chi == 0.0:
+        return 1.0
+
+    def balance(e: float) -> float:
+        if chi < 0.5:
+            # the integral as a power series in chi: well conditioned for small chi
+            total, power, k = 0.0, 1.0, 0
+            while True:
+                term = power * ((-e) ** (k + 2) - 1.0) / (k + 2)
+                total += term
+                k += 1
+                power *= -chi
+                if abs(power) < 1e-18 or k > 200:
+                    return total
+        return chi * (1.0 + e) - math.log1p(chi) + math.log1p(-chi * e)
+
+    upper = min(1.0, (1.0 - 1e-15) / chi)
+    return float(brentq(balance, 0.0, upper, xtol=1e-15, rtol=1e-14))
+
+
+def pin_in_hole_stiffness(
+    pin_radius: float,
+    bushing_radius: float,
+    pin_youngs_modulus: float,
+    pin_poisson_ratio: float,
+    bushing_youngs_modulus: float,
+    bushing_poisson_ratio: float,
+) -> float:
+    """Hertz stiffness ``K`` of a pin in a hole, eq. (2) with ``R_i = R_p``, ``R_j = R_b``.
+
+    .. math:: K = \\frac{4}{3\\pi(\\sigma_p + \\sigma_b)}
+              \\left[\\frac{R_p R_b}{R_b - R_p}\\right]^{1/2}
+
+    Parameters
+    ----------
+    pin_radius : float
+        Pin radius ``R_p`` [m].
+    bushing_radius : float
+        Bushing inner radius ``R_b > R_p`` [m].
+    pin_youngs_modulus, bushing_youngs_modulus : float
+        Young's moduli [Pa].
+    pin_poisson_ratio, bushing_poisson_ratio : float
+        Poisson's ratios [-].
+
+    Returns
+    -------
+    float
+        ``K`` [N/m^1.5].
+    """
+    return float(
+        hertz.stiffness(
+            pin_radius, bushing_radius, pin_youngs_modulus, pin_poisson_ratio,
+            bushing_youngs_modulus, bushing_poisson_ratio,
+        )
+    )
+
+
+def elastic_force(penetration: ArrayLike, stiffness: float, exponent: float = 1.5) -> FloatArray:
+    """Hertz's elastic force ``K delta^n`` (eq. 1), zero without penetration [N].
+
+    Parameters
+    ----------
+    penetration : array_like
+        Penetration ``delta`` [m]; ``<= 0`` means no contact.
+    stiffness : float
+        ``K`` [N/m^n].
+    exponent : float
+        ``n`` [-].
+    """
+    delta = np.maximum(np.asarray(penetration, dtype=float), 0.0)
+    return stiffness * delta**exponent
+
+
+def elastic_potential(
+    penetration: ArrayLike, stiffness: float, exponent: float = 1.5
+) -> FloatArray:
+    """Energy stored by the elastic force ``K delta^(n+1) / (n+1)`` [J].
+
+    Parameters
+    ----------
+    penetration : array_like
+        Penetration ``delta`` [m]; ``<= 0`` means no contact.
+    stiffness : float
+        ``K`` [N/m^n].
+    exponent : float
+        ``n`` [-].
+    """
+    delta = np.maximum(np.asarray(penetration, dtype=float), 0.0)
+    return stiffness * delta ** (exponent + 1.0) / (exponent + 1.0)
+
+
+def dissipative_force(
+    penetration: ArrayLike,
+    penetration_rate: ArrayLike,
+    impact_velocity: ArrayLike,
+    stiffness: float,
+    hysteresis: float,
+    exponent: float = 1.5,
+) -> FloatArray:
+    """Hertz force with hysteresis damping, ``max(K delta^n (1 + chi delta'/delta'^-), 0)`` [N].
+
+    Parameters
+    ----------
+    penetration : array_like
+        Penetration ``delta`` [m]; ``<= 0`` gives zero force.
+    penetration_rate : array_like
+        ``d delta / dt`` [m/s], positive while the pin moves into the wall.
+    impact_velocity : array_like
+        Approach velocity ``delta'^-`` at the start of the contact [m/s], > 0.
+    stiffness : float
+        ``K`` [N/m^n].
+    hysteresis : float
+        ``chi`` [-] (:func:`hysteresis_factor`).
+    exponent : float
+        ``n`` [-].
+
+    Returns
+    -------
+    ndarray
+        Normal contact force, never negative [N].
+    """
+    elastic = elastic_force(penetration, stiffness, exponent)
+    rate = np.asarray(penetration_rate, dtype=float) / np.asarray(impact_velocity, dtype=float)
+    return np.maximum(elastic * (1.0 + hysteresis * rate), 0.0)
+
+
+def lankarani_nikravesh(
+    penetration: ArrayLike,
+    penetration_rate: ArrayLike,
+    impact_velocity: ArrayLike,
+    stiffness: float,
+    restitution: float,
+    exponent: float = 1.5,
+) -> FloatArray:
+    """Lankarani–Nikravesh force ``K delta^n (1 + 3 (1 - c_e^2)/4 delta'/delta'^-)`` [N].
+
+    Derived for ``c_e`` close to 1 (the energy lost per impact is computed with
+    the elastic Hertz trajectory); it underestimates the dissipation for low
+    ``c_e``.
+
+    Parameters
+    ----------
+    penetration : array_like
+        Penetration ``delta`` [m].
+    penetration_rate : array_like
+        ``d delta / dt`` [m/s].
+    impact_velocity : array_like
+        Approach velocity at the start of the contact ``delta'^-`` [m/s].
+    stiffness : float
+        ``K`` [N/m^n].
+    restitution : float
+        Coefficient of restitution ``c_e`` [-].
+    exponent : float
+        ``n`` [-].
+    """
+    chi = hysteresis_factor("lankarani-nikravesh", restitution)
+    return dissipative_force(
+        penetration, penetration_rate, impact_velocity, stiffness, chi, exponent
+    )
+
+
+def hunt_crossley(
+    penetration: ArrayLike,
+    penetration_rate: ArrayLike,
+    impact_velocity: ArrayLike,
+    stiffness: float,
+    restitution: float,
+    exponent: float = 1.5,
+) -> FloatArray:
+    """Hunt–Crossley force ``K delta^n (1 + 3 (1 - c_e)/2 delta'/delta'^-)`` [N].
+
+    The damping ``lambda = 3 (1 - c_e) K / (2 delta'^-)`` of Hunt and Crossley's
+    linearisation in ``1 - c_e`` (valid for ``c_e`` close to 1).
+
+    Parameters
+    ----------
+    penetration : array_like
+        Penetration ``delta`` [m].
+    penetration_rate : array_like
+        ``d delta / dt`` [m/s].
+    impact_velocity : array_like
+        Approach velocity at the start of the contact ``delta'^-`` [m/s].
+    stiffness : float
+        ``K`` [N/m^n].
+    restitution : float
+        Coefficient of restitution ``c_e`` [-].
+    exponent : float
+        ``n`` [-].
+    """
+    chi = hysteresis_factor("hunt-crossley", restitution)
+    return dissipative_force(
+        penetration, penetration_rate, impact_velocity, stiffness, chi, exponent
+    )
+
+
+def flores(
+    penetration: ArrayLike,
+    penetration_rate: ArrayLike,
+    impact_velocity: ArrayLike,
+    stiffness: float,
+    restitution: float,
+    exponent: float = 1.5,
+) -> FloatArray:
+    """Flores et al. (2011) force ``K delta^n (1 + 8 (1 - c_e)/(5 c_e) delta'/delta'^-)`` [N].
+
+    Derived from the energy balance of the whole impact without assuming
+    ``c_e -> 1``; meant for soft materials and the whole range of ``c_e``.
+
+    Parameters
+    ----------
+    penetration : array_like
+        Penetration ``delta`` [m].
+    penetration_rate : array_like
+        ``d delta / dt`` [m/s].
+    impact_velocity : array_like
+        Approach velocity at the start of the contact ``delta'^-`` [m/s].
+    stiffness : float
+        ``K`` [N/m^n].
+    restitution : float
+        Coefficient of restitution ``c_e`` [-].
+    exponent : float
+        ``n`` [-].
+    """
+    chi = hysteresis_factor("flores", restitution)
+    return dissipative_force(
+        penetration, penetration_rate, impact_velocity, stiffness, chi, exponent
+    )
+
+
+def friction_ramp(
+    slip_speed: ArrayLike, tolerance: float, full_speed: float | None = None
+) -> FloatArray:
+    """Ambrósio's dynamic correction coefficient ``c_d(|v_T|)`` as a C1 ramp [-].
+
+    ``c_d = 0`` for ``|v_T| <= v_0``, ``c_d = 1`` for ``|v_T| >= v_1`` and the
+    cubic ``3 s^2 - 2 s^3``, ``s = (|v_T| - v_0) / (v_1 - v_0)``, in between.
+
+    Parameters
+    ----------
+    slip_speed : array_like
+        Tangential slip speed ``|v_T|`` [m/s].
+    tolerance : float
+        ``v_0`` [m/s], > 0.
+    full_speed : float, optional
+        ``v_1 > v_0`` [m/s]; default ``2 v_0``.
+    """
+    v1 = 2.0 * tolerance if full_speed is None else full_speed
+    s = np.clip((np.abs(np.asarray(slip_speed, dtype=float)) - tolerance) / (v1 - tolerance),
+                0.0, 1.0)
+    return s * s * (3.0 - 2.0 * s)
+
+
+def friction_force(
+    slip_velocity: ArrayLike,
+    normal_force: ArrayLike,
+    coefficient: float,
+    tolerance: float,
+    full_speed: float | None = None,
+) -> FloatArray:
+    """Regularised Coulomb friction ``-mu c_d(v_T) F_N sign(v_T)`` [N].
+
+    Parameters
+    ----------
+    slip_velocity : array_like
+        Signed tangential velocity ``v_T`` of the surface the force acts on,
+        relative to the other surface [m/s].
+    normal_force : array_like
+        Normal contact force ``F_N >= 0`` [N].
+    coefficient : float
+        Coulomb friction coefficient ``mu`` [-].
+    tolerance : float
+        ``v_0`` of :func:`friction_ramp` [m/s].
+    full_speed : float, optional
+        ``v_1`` of :func:`friction_ramp` [m/s].
+
+    Returns
+    -------
+    ndarray
+        Tangential force on that surface, opposing ``v_T`` [N].
+    """
+    v = np.asarray(slip_velocity, dtype=float)
+    ramp = friction_ramp(v, tolerance, full_speed)
+    return -coefficient * ramp * np.asarray(normal_force, dtype=float) * np.sign(v)
+
+
+# ------------------------------------------------------------------ distributed laws
+
+
+def _force_area(contour: BushingContour, law: SpringLaw) -> FloatArray | float:
+    """Area that turns each node's pressure into force [m^2]."""
+    return contour.spring_area if law.force_area is None else float(law.force_area)
+
+
+def spring_gap(contour: BushingContour, pin: Pin, eccentricity: ArrayLike) -> FloatArray:
+    """Signed gap function of the displaced pin, ``max_j (t_j - r_j)`` [m].
+
+    Positive where some node is penetrated (the largest penetration), negative
+    (minus the smallest gap) while the pin is free; zero at contact start/end.
+
+    Parameters
+    ----------
+    contour : BushingContour
+        Bushing contour.
+    pin : Pin
+        The pin.
+    eccentricity : array_like, shape (..., 2)
+        Pin-centre position relative to the bushing centre [m].
+    """
+    e = np.asarray(eccentricity, dtype=float)
+    t = ray_distance(contour.theta, e[..., 0:1], e[..., 1:2], pin.radius)
+    return np.max(t - contour.radius, axis=-1)
+
+
+def spring_resultant(
+    contour: BushingContour,
+    pin: Pin,
+    eccentricity: ArrayLike,
+    law: SpringLaw,
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Elastic force of the bushing springs on the displaced pin's wall, and its energy.
+
+    Parameters
+    ----------
+    contour : BushingContour
+        Current bushing contour (circular or worn).
+    pin : Pin
+        The pin.
+    eccentricity : array_like, shape (..., 2)
+        Pin-centre position relative to the bushing centre [m].
+    law : SpringLaw
+        Pressure law of the nodes (:func:`jointwear.contact.contact_law`), e.g. the
+        ``nlcp`` or ``winkler`` law. ``law.force_area`` (the paper's NLCP spring
+        area) or the node areas ``r_j dtheta b`` turn pressure into force.
+
+    Returns
+    -------
+    force : ndarray, shape (..., 2)
+        ``F_el = sum_j A_j p(delta_j) grad t_j``: the force with which the pin
+        presses on the bushing (the bushing pushes the pin with ``-F_el``) [N].
+    potential : ndarray, shape (...)
+        Stored energy ``sum_j A_j int_0^delta_j p`` [J]; exact for a
+        :class:`~jointwear.contact.laws.PowerLaw`, trapezoidal (4 panels per
+        node) for other laws.
+    max_penetration : ndarray, shape (...)
+        Largest node penetration [m].
+    """
+    e = np.asarray(eccentricity, dtype=float)
+    ex, ey = e[..., 0:1], e[..., 1:2]
+    theta = contour.theta
+    delta = np.maximum(ray_distance(theta, ex, ey, pin.radius) - contour.radius, 0.0)
+    pressure = np.asarray(law.pressure(delta), dtype=float)
+    area = _force_area(contour, law)
+    node_force = area * pressure
+    d_ex, d_ey = ray_distance_derivative(theta, ex, ey, pin.radius)
+    force = np.stack(
+        [np.sum(node_force * d_ex, axis=-1), np.sum(node_force * d_ey, axis=-1)], axis=-1
+    )
+    if isinstance(law, PowerLaw):
+        energy = law.coefficient * delta ** (law.exponent + 1.0) / (law.exponent + 1.0)
+    else:
+        fractions = np.linspace(0.0, 1.0, 5)
+        samples = np.stack([law.pressure(f * delta) for f in fractions], axis=0)
+        energy = np.trapezoid(samples, dx=0.25, axis=0) * delta
+    potential = np.sum(area * energy, axis=-1)
+    return force, potential, np.max(delta, axis=-1)
+
