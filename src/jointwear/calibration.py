@@ -105,8 +105,17 @@ def calibrate(
     residual: Callable[[Config], NDArray[np.float64]],
     labels: Sequence[str],
     initial: Mapping[str, float] | None = None,
+    max_evaluations: int = 200,
 ) -> CalibrationResult:
     """Least-squares fit of config parameters to any residual function.
+
+    Each parameter is searched on ``[0, 1]`` (:meth:`Parameter.to_unit`,
+    logarithmic when the bounds span more than a decade) by
+    :func:`scipy.optimize.least_squares` (trust region reflective, finite
+    difference Jacobian with a step of ``1e-4`` of the unit interval). Values
+    are applied with :meth:`Config.replace`, so derived defaults (the NLCP spring
+    area, the rod inertia) follow a fitted axial length or rod mass unless the
+    config sets them explicitly.
 
     Parameters
     ----------
@@ -120,6 +129,9 @@ def calibrate(
         Names of the residual entries.
     initial : mapping, optional
         Starting values [SI]; default the config's values (clipped into bounds).
+    max_evaluations : int
+        Largest number of residual evaluations of the optimiser (the Jacobian's
+        finite differences not counted by scipy's limit).
     """
     if not parameters:
         raise ConfigError("calibrate: name at least one parameter to fit")
@@ -148,7 +160,7 @@ def calibrate(
         xtol=1e-10,
         ftol=1e-10,
         gtol=1e-10,
-        max_nfev=200,
+        max_nfev=max_evaluations,
     )
     if not np.all(np.isfinite(solution.fun)):
         raise ConvergenceError("calibrate: the residual is not finite at the optimum")

@@ -1,0 +1,244 @@
+"""Calibration to measured profiles recovers a known wear coefficient.
+
+Truth: a simulation with a known K_d; "measurement": its worn contour seen by a
+synthetic instrument (random spacing, 0.7 um noise, shifted and rotated frame);
+the calibration starts ten times off and must come back within 2 %.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from jointwear import Simulation
+from jointwear.calibration import Parameter
+from jointwear.config import Config
+from jointwear.errors import ConfigError, DataError, WearThroughError
+from jointwear.measurement.calibrate import (
+    DEFAULT_BOUNDS,
+    MeasuredCase,
+    calibrate_paper_row,
+    calibrate_profiles,
+    key_unit,
+    parse_case,
+    parse_fit,
+    resolve_key,
+    resolve_parameter,
+)
+from jointwear.measurement.synthetic import synthesize_measurement
+
+KD = "materials.bushing.wear_coefficient"
+TRUE_KD = 3e-12  # [1/Pa]
+NOISE = 0.7e-6  # [m]
+
+
+def short_config(paper_config: Config, update: bool, **overrides: object) -> Config:
+    return paper_config.replace(
+        {
+            "contact.nodes": 180,
+            "simulation.steps_per_revolution": 60,
+            "simulation.revolutions": 3000,
+            "simulation.update_contour": update,
+            "simulation.update_every": 100,
+            **overrides,
+        }
+    )
+
+
+def measure(config: Config, seed: int, rotation_deg: float, name: str,
+            overrides: dict[str, object] | None = None) -> MeasuredCase:
+    """Simulate with the true K_d and 'measure' the worn bushing."""
+    truth = config.replace({KD: TRUE_KD, **(overrides or {})})
+    depth = Simulation(truth).run().wear_depth
+    x, y = synthesize_measurement(
+        depth, truth.bushing_radius, 3600, NOISE, seed, (1.0e-3, 4.0e-3),
+        math.radians(rotation_deg),
+    )
+    return MeasuredCase(name, x, y, dict(overrides or {}))
+
+
+def kd_parameter(config: Config) -> Parameter:
+    return resolve_parameter("wear_coefficient", config)
+
+
+def test_recovers_kd_without_update_linear_problem(paper_config: Config) -> None:
+    base = short_config(paper_config, update=False)
+    case = measure(base, 1, 123.0, "no_update.csv")
+    start = base.replace({KD: 10 * TRUE_KD})
+    fit = calibrate_profiles(start, [case], [kd_parameter(start)])
+    value, sigma = fit.values[KD], fit.uncertainty[KD]
+    assert value == pytest.approx(TRUE_KD, rel=0.02)
+    assert 0 < sigma < 0.02 * value
+    assert abs(value - TRUE_KD) < 5 * sigma + 1e-3 * TRUE_KD
+    assert fit.initial[KD] == pytest.approx(10 * TRUE_KD)
+    assert fit.passes == 1  # the alignment does not depend on K_d without update
+    (comparison,) = fit.comparisons
+    assert math.degrees(comparison.alignment_offset) == pytest.approx(123.0, abs=0.5)
+    summary = fit.summary()
+    assert set(summary) >= {"parameters", "rms_residual", "evaluations", "cases"}
+    assert summary["parameters"][KD]["unit"] == "1/Pa"
+    assert summary["parameters"][KD]["value"] == value
+    assert not summary["parameters"][KD]["at_bound"]
+    # the residual is the noise averaged per node, as a fraction of the ~20 um peak
+    assert summary["rms_residual"] < 2 * NOISE / comparison.measured_metrics.peak_depth
+
+
+def test_recovers_kd_with_contour_update(paper_config: Config) -> None:
+    base = short_config(paper_config, update=True)
+    case = measure(base, 2, 57.0, "update.csv")
+    start = base.replace({KD: TRUE_KD / 10})
+    fit = calibrate_profiles(start, [case], [kd_parameter(start)])
+    assert fit.values[KD] == pytest.approx(TRUE_KD, rel=0.02)
+    assert fit.uncertainty[KD] < 0.01 * TRUE_KD
+    assert abs(fit.comparisons[0].peak_error_rel) < 0.02
+
+
+def test_two_speeds_calibrate_jointly(paper_config: Config) -> None:
+    base = short_config(paper_config, update=True)
+    slow = measure(base, 3, 10.0, "120rpm.csv", {"mechanism.crank_speed": "120 rpm"})
+    fast = measure(
+        base, 4, 200.0, "240rpm.csv",
+        {"mechanism.crank_speed": "240 rpm", "simulation.revolutions": 2000},
+    )
+    start = base.replace({KD: 10 * TRUE_KD})
+    fit = calibrate_profiles(start, [slow, fast], [kd_parameter(start)])
+    assert fit.values[KD] == pytest.approx(TRUE_KD, rel=0.02)
+    assert len(fit.comparisons) == 2
+    offsets = [math.degrees(c.alignment_offset) % 360 for c in fit.comparisons]
+    assert offsets == pytest.approx([10.0, 200.0], abs=0.5)
+    # the two runs really differ: different peaks
+    peaks = [c.simulated_metrics.peak_depth for c in fit.comparisons]
+    assert abs(peaks[0] - peaks[1]) > 0.1 * max(peaks)
+    assert [c["name"] for c in fit.summary()["cases"]] == ["120rpm.csv", "240rpm.csv"]
+    assert fit.summary()["cases"][1]["overrides"]["mechanism.crank_speed"] == "240 rpm"
+
+
+def test_wrong_model_leaves_a_residual(paper_config: Config) -> None:
+    """Calibration must be able to fail: a measurement from another speed does not fit well."""
+    base = short_config(paper_config, update=False)
+    case = measure(base, 5, 0.0, "fast.csv", {"mechanism.crank_speed": "240 rpm"})
+    wrong = MeasuredCase(case.name, case.x, case.y, {"mechanism.crank_speed": "60 rpm"})
+    right = calibrate_profiles(base, [case], [kd_parameter(base)])
+    bad = calibrate_profiles(base, [wrong], [kd_parameter(base)])
+    assert bad.rms_residual > 3 * right.rms_residual
+
+
+def test_parameter_names_units_and_bounds(paper_config: Config) -> None:
+    assert resolve_key("wear_coefficient", paper_config) == KD
+    assert resolve_key("spring_preload", paper_config) == "mechanism.spring_preload"
+    assert resolve_key("joint.clearance", paper_config) == "joint.clearance"
+    with pytest.raises(ConfigError, match="did you mean 'wear_coefficient'"):
+        resolve_key("wear_coeficient", paper_config)
+    with pytest.raises(ConfigError, match="did you mean 'joint.axial_length'"):
+        resolve_key("joint.axial_lenght", paper_config)
+    with pytest.raises(ConfigError, match="not a real-valued"):
+        resolve_key("contact.nodes", paper_config)
+    assert (key_unit(KD), key_unit("joint.axial_length"), key_unit("mechanism.spring_preload")) == (
+        "1/Pa", "m", "N"
+    )
+    assert key_unit("contact.exponent") == ""
+    kd = resolve_parameter("wear_coefficient", paper_config)
+    assert (kd.lower, kd.upper) == DEFAULT_BOUNDS[KD] == (1e-16, 1e-10)
+    assert kd.logarithmic
+    clearance = resolve_parameter("joint.clearance", paper_config)
+    assert (clearance.lower, clearance.upper) == pytest.approx((0.005e-3, 0.5e-3))
+    bounded = parse_fit("joint.clearance=0.02 mm..0.2 mm", paper_config)
+    assert (bounded.lower, bounded.upper) == pytest.approx((0.02e-3, 0.2e-3))
+    assert parse_fit("wear_coefficient=1e-14..1e-11", paper_config).upper == 1e-11
+    for bad in ("joint.clearance=0.2 mm", "joint.clearance=1 kg..2 kg",
+                "joint.clearance=2 mm..1 mm"):
+        with pytest.raises(ConfigError):
+            parse_fit(bad, paper_config)
+    zero = paper_config.replace({"mechanism.spring_preload": 0.0})
+    assert resolve_parameter("spring_preload", zero).upper == 400.0  # default bounds
+    with pytest.raises(ConfigError, match="give bounds"):
+        resolve_parameter("mechanism.gravity", paper_config.replace({"mechanism.gravity": 0.0}))
+
+
+def test_parse_case() -> None:
+    assert parse_case("a.csv") == (Path("a.csv"), {})
+    assert parse_case("dir/a.csv:mechanism.crank_speed=240 rpm") == (
+        Path("dir/a.csv"), {"mechanism.crank_speed": "240 rpm"}
+    )
+    path, overrides = parse_case(
+        r"C:\data\b.csv:mechanism.crank_speed=240 rpm,simulation.revolutions=5000"
+    )
+    assert path == Path(r"C:\data\b.csv")
+    assert overrides == {"mechanism.crank_speed": "240 rpm", "simulation.revolutions": 5000}
+    for bad in (":x.y=1", "=1", "a.csv:=1"):
+        with pytest.raises(ConfigError, match="--case"):
+            parse_case(bad)
+
+
+def test_bad_calibration_requests(paper_config: Config) -> None:
+    base = short_config(paper_config, update=False)
+    x = 7.5e-3 * np.cos(np.linspace(0, 2 * np.pi, 100, endpoint=False))
+    y = 7.5e-3 * np.sin(np.linspace(0, 2 * np.pi, 100, endpoint=False))
+    unworn = MeasuredCase("unworn.csv", x, y)
+    kd = kd_parameter(base)
+    with pytest.raises(ConfigError, match="at least one measured"):
+        calibrate_profiles(base, [], [kd])
+    with pytest.raises(ConfigError, match="at least one parameter"):
+        calibrate_profiles(base, [unworn], [])
+    with pytest.raises(ConfigError, match="which is being fitted"):
+        calibrate_profiles(base, [MeasuredCase("c", x, y, {KD: 1e-12})], [kd])
+    with pytest.raises(ConfigError, match="c.csv: joint.clearance"):
+        calibrate_profiles(base, [MeasuredCase("c.csv", x, y, {"joint.clearance": "-1 mm"})], [kd])
+    with pytest.raises(ConfigError, match="did you mean 'robust'"):
+        calibrate_profiles(base, [unworn], [kd], fit="robst")
+    with pytest.raises(DataError, match="unworn.csv: the measured profile shows no wear"):
+        calibrate_profiles(base, [unworn], [kd])
+
+
+def test_a_failing_simulation_is_a_one_line_error(paper_config: Config) -> None:
+    base = short_config(paper_config, update=True)
+    case = measure(base, 6, 0.0, "worn.csv")
+    through = Parameter(KD, 1e-9, 1e-8)  # wears through the 2.5 mm wall in 3000 revolutions
+    with pytest.raises(WearThroughError, match=r"worn.csv: the simulation fails at .*1e-09"):
+        calibrate_profiles(base, [case], [through])
+
+
+def test_replace_lets_derived_defaults_follow(paper_config: Config) -> None:
+    assert paper_config.contact.spring_area is None  # the 1 degree default at R b
+    wider = paper_config.replace({"joint.axial_length": 0.04})
+    assert wider.spring_area == pytest.approx(2 * paper_config.spring_area)
+    assert paper_config.replace({}) == paper_config
+
+
+def test_paper_row_is_the_reproduction_protocol(
+    paper_config: Config, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Same config, targets and parameters as reproduce.calibrate_on_paper (SPEC §4)."""
+    import jointwear.measurement.calibrate as ours
+    import jointwear.reproduce as reproduce
+
+    calls: list[tuple] = []
+
+    def record(config: Config, targets: dict, parameters: list, initial: object = None) -> str:
+        calls.append((config, dict(targets), list(parameters)))
+        return "fitted"
+
+    monkeypatch.setattr(ours, "calibrate_metrics", record)
+    monkeypatch.setattr(reproduce, "calibrate_metrics", record)
+    coarse = {"contact.nodes": 90}
+    assert calibrate_paper_row(reproduce.CALIBRATION_CASE, overrides=coarse) == "fitted"
+    assert reproduce.calibrate_on_paper(coarse) == "fitted"
+    assert calls[0] == calls[1]
+    assert calls[0][0].contact.nodes == 90
+    assert calls[0][1] == {
+        "peak_wear_depth_m": 1.056e-8, "wear_width_deg": 115, "wear_mass_kg": 3.355e-9,
+    }
+    # another row, other parameters, a config of one's own
+    own = paper_config.replace({"mechanism.crank_speed": "240 rpm"})
+    calibrate_paper_row(
+        "table3_winkler_240rpm", [resolve_parameter("wear_coefficient", own)], config=own
+    )
+    config, targets, parameters = calls[2]
+    assert config == own
+    assert targets["wear_width_deg"] == 118
+    assert [p.key for p in parameters] == [KD]
+    with pytest.raises(ConfigError, match="did you mean 'table3_winkler_120rpm'"):
+        calibrate_paper_row("table3_winkler_120")
