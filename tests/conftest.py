@@ -15,8 +15,9 @@ REPO = Path(__file__).resolve().parents[1]
 PAPER_CONFIG = REPO / "examples" / "paper" / "table3_winkler_120rpm.toml"
 
 
-def scar(nodes: int, depth: float = 20e-6, centre_deg: float = 20.0,
-         width_deg: float = 12.0) -> np.ndarray:
+def scar(
+    nodes: int, depth: float = 20e-6, centre_deg: float = 20.0, width_deg: float = 12.0
+) -> np.ndarray:
     """Gaussian wear scar [m] at the node angles, one-sided about the load line at 0 deg."""
     theta = 2 * np.pi * np.arange(nodes) / nodes
     phi = np.angle(np.exp(1j * theta))  # wrapped to (-pi, pi]

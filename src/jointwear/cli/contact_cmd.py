@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import Annotated
 
 import typer
+from rich.markup import escape
 from rich.table import Table
 
 from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json, load
@@ -56,7 +57,7 @@ def contact(
     if json_:
         emit_json(summary)
         return
-    table = Table(title=f"contact: {summary['contact_model']}, {force:g} N at {azimuth}")
+    table = Table(title=escape(f"contact: {summary['contact_model']}, {force:g} N at {azimuth}"))
     table.add_column("quantity")
     table.add_column("value", justify="right")
     rows = [
@@ -84,7 +85,7 @@ def models(json_: JsonOpt = False) -> None:
     if json_:
         emit_json({"contact_models": {n: MODEL_DESCRIPTIONS.get(n, "") for n in names}})
         return
-    table = Table(title="contact models ([contact] model = ...)")
+    table = Table(title=escape("contact models ([contact] model = ...)"))
     table.add_column("name")
     table.add_column("description")
     for name in names:

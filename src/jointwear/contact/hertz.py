@@ -129,9 +129,18 @@ class HertzLaw:
     name: str = "hertz"
 
     def solve(
-        self, contour: BushingContour, pin: Pin, load: ArrayLike, azimuth: ArrayLike, **_: object
+        self,
+        contour: BushingContour,
+        pin: Pin,
+        load: ArrayLike,
+        azimuth: ArrayLike,
+        max_penetration: float | None = None,
+        **_: object,
     ) -> ContactSolution:
-        return solve(contour, pin, load, azimuth, self.parameters)
+        """Solve; ``max_penetration`` [m] defaults to the bushing wall thickness."""
+        if max_penetration is None:
+            max_penetration = self.parameters.bushing_thickness
+        return solve(contour, pin, load, azimuth, self.parameters, max_penetration)
 
 
 def solve(
@@ -140,6 +149,7 @@ def solve(
     load: ArrayLike,
     azimuth: ArrayLike,
     parameters: ContactParameters,
+    max_penetration: float | None = None,
 ) -> ContactSolution:
     """Hertz pressure on the bushing nodes for many loads.
 
@@ -155,6 +165,9 @@ def solve(
         Load directions in the bushing frame [rad].
     parameters : ContactParameters
         Materials, exponent and axial length.
+    max_penetration : float, optional
+        Largest admissible penetration, normally the bushing wall thickness [m];
+        a load needing more raises :class:`ContactError`.
 
     Returns
     -------
@@ -184,6 +197,12 @@ def solve(
     )
     k = np.interp(r_b, np.unique(r_b), k) if k.size > 1 else np.full_like(r_b, k[0])
     penetration = (load / k) ** (1.0 / parameters.exponent)
+    if max_penetration is not None and np.any(penetration > max_penetration):
+        i = int(np.argmax(penetration > max_penetration))
+        raise ContactError(
+            f"load: {load[i]:.6g} N at {np.degrees(azimuth[i]):.4g} deg would push the pin "
+            f"through the bushing wall (Hertz penetration {penetration[i]:.3g} m)"
+        )
     relative = r_p * r_b / (r_b - r_p)
     a = half_width(load, b, relative, modulus)
     p0 = peak_pressure(load, b, relative, modulus)
@@ -191,6 +210,10 @@ def solve(
     phi = np.angle(np.exp(1j * (contour.theta[None, :] - azimuth[:, None])))
     x = r_b[:, None] * phi
     profile = pressure_profile(x, a[:, None], p0[:, None])
+    # Hertz knows nothing of the geometry: past a quarter of the circumference its
+    # ellipse would wrap onto the back of the bushing, where a smaller pin cannot
+    # touch (and where cos(beta) < 0 would make springs pull). Cut it at 90 degrees.
+    profile[np.abs(phi) >= 0.5 * np.pi] = 0.0
     # contacts narrower than a node: share the load between the two nearest nodes
     narrow = (profile > 0).sum(axis=1) == 0
     if np.any(narrow & (load > 0)):
@@ -205,7 +228,7 @@ def solve(
     scale = np.where(carried > 0, load / np.where(carried > 0, carried, 1.0), 0.0)
     pressure = profile * scale[:, None]
     force = pressure * area
-    half_angle = np.where(narrow, 0.0, a / r_b)
+    half_angle = np.where(narrow, 0.0, np.minimum(a / r_b, 0.5 * np.pi))
     contact = pressure > 0
     return ContactSolution(
         pressure=pressure,

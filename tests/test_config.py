@@ -1,0 +1,216 @@
+"""Configuration: units at the boundary, overrides, suggestions, validation, TOML round trip."""
+
+from __future__ import annotations
+
+import math
+import tomllib
+
+import pytest
+
+from jointwear.config import config_from_dict, load_config, parse_override
+from jointwear.errors import ConfigError
+from jointwear.units import to_si
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "expected"),
+    [
+        ("0.2 mm", "length", 2e-4),
+        ("7.45 mm", "length", 7.45e-3),
+        ("20 um", "length", 2e-5),
+        ("240 rpm", "angular_velocity", 8 * math.pi),
+        ("120 rpm", "angular_velocity", 4 * math.pi),
+        ("2 Hz", "angular_velocity", 2.0),  # 1/s: read as rad/s
+        ("5.05e-13 m^2/N", "wear_coefficient", 5.05e-13),
+        ("5.05e-13 mm^2/N", "wear_coefficient", 5.05e-19),
+        ("209 GPa", "pressure", 2.09e11),
+        ("500 MPa", "pressure", 5e8),
+        ("200 N", "force", 200.0),
+        ("0.2 kN", "force", 200.0),
+        ("90 deg", "angle", math.pi / 2),
+        ("2200 kg/m^3", "density", 2200.0),
+        ("460 g", "mass", 0.46),
+        (0.28, "dimensionless", 0.28),
+        (3, "length", 3.0),
+    ],
+)
+def test_units_accepted(text, kind, expected):
+    assert to_si(text, kind) == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("text", "kind", "needle"),
+    [
+        ("5 kg", "length", "expected a length"),
+        ("5.05e-13 m^2", "wear_coefficient", "expected a wear coefficient"),
+        ("240 rpm", "length", "expected a length"),
+        ("nan mm", "length", "finite"),
+        ("inf", "length", "finite"),
+        (float("nan"), "force", "finite"),
+        ("12 furlongs/s^3", "force", "expected a force"),
+        ("12 blorps", "force", "cannot read"),
+        ("", "length", "key"),
+        (True, "length", "boolean"),
+        ([1.0], "length", "expected a number"),
+    ],
+)
+def test_units_rejected_with_the_key(text, kind, needle):
+    with pytest.raises(ConfigError) as info:
+        to_si(text, kind, "key")
+    message = str(info.value)
+    assert message.startswith("key:")
+    assert needle in message
+
+
+def test_paper_config_in_si(paper_config):
+    assert paper_config.mechanism.crank_speed == pytest.approx(4 * math.pi, rel=1e-15)
+    assert paper_config.mechanism.crank_length == pytest.approx(0.07)
+    assert paper_config.joint.pin_radius == pytest.approx(7.45e-3)
+    assert paper_config.joint.clearance == pytest.approx(5e-5)
+    assert paper_config.bushing_radius == pytest.approx(7.5e-3)
+    assert paper_config.materials.pin.youngs_modulus == pytest.approx(2.09e11)
+    assert paper_config.materials.bushing.wear_coefficient == pytest.approx(5.05e-13)
+    assert paper_config.contact.model == "asymmetric-winkler"
+    assert paper_config.spring_area == pytest.approx(7.5e-3 * math.pi / 180 * 20e-3)
+
+
+@pytest.mark.parametrize(
+    ("text", "key", "value"),
+    [
+        ("joint.clearance=0.2 mm", "joint.clearance", "0.2 mm"),
+        ('joint.clearance="0.2 mm"', "joint.clearance", "0.2 mm"),
+        ("contact.nodes=720", "contact.nodes", 720),
+        ("contact.tolerance=1e-10", "contact.tolerance", 1e-10),
+        ("simulation.update_contour=true", "simulation.update_contour", True),
+        ("contact.model = nlcp", "contact.model", "nlcp"),
+        ("mechanism.crank_speed=240 rpm", "mechanism.crank_speed", "240 rpm"),
+    ],
+)
+def test_parse_override(text, key, value):
+    assert parse_override(text) == (key, value)
+
+
+@pytest.mark.parametrize("text", ["joint.clearance", "=3", ""])
+def test_parse_override_rejects_malformed(text):
+    with pytest.raises(ConfigError, match="section.key=VALUE"):
+        parse_override(text)
+
+
+def test_overrides_apply_with_units(paper_config_path):
+    cfg = load_config(
+        paper_config_path,
+        [
+            "mechanism.crank_speed=240 rpm",
+            'joint.clearance="0.2 mm"',
+            "contact.nodes=720",
+            "contact.model=nlcp",
+            "contact.nlcp_variant=mesh-independent",
+        ],
+    )
+    assert cfg.mechanism.crank_speed == pytest.approx(8 * math.pi, rel=1e-15)
+    assert cfg.joint.clearance == pytest.approx(2e-4, rel=1e-15)
+    assert cfg.contact.nodes == 720
+    assert cfg.contact.model == "nlcp"
+    assert cfg.contact.nlcp_variant == "mesh-independent"
+    # mapping overrides and Config.replace do the same
+    same = load_config(paper_config_path, {"mechanism.crank_speed": "240 rpm"})
+    assert same.mechanism.crank_speed == cfg.mechanism.crank_speed
+    replaced = load_config(paper_config_path).replace({"joint.clearance": "0.2 mm"})
+    assert replaced.joint.clearance == cfg.joint.clearance
+
+
+def test_defaults_from_the_parameter_set():
+    cfg = load_config()
+    assert cfg.parameter_set == "nlcp-paper"
+    assert cfg.joint.pin_radius == pytest.approx(7.45e-3)
+    assert cfg.contact.tolerance == 1e-12
+
+
+@pytest.mark.parametrize(
+    ("override", "needle"),
+    [
+        ("jiont.clearance=1e-5", "jiont: unknown key; did you mean 'joint'?"),
+        ("joint.clearence=1e-5", "joint.clearence: unknown key; did you mean 'clearance'?"),
+        ("mechansim.crank_length=1", "did you mean 'mechanism'?"),
+        ("materials.pn.youngs_modulus=1", "did you mean 'pin'?"),
+        ("materials.pin.young_modulus=1", "did you mean 'youngs_modulus'?"),
+        ("contact.modle=nlcp", "did you mean 'model'?"),
+        ("contact.model=nlpc", "contact.model: unknown contact model 'nlpc'; did you mean 'nlcp'?"),
+        ("contact.model=winklr", "did you mean 'winkler'?"),
+        ("contact.balance=equilibirum", "did you mean 'equilibrium'?"),
+        ("contact.foundation_modulus=constraned", "did you mean 'constrained'?"),
+    ],
+)
+def test_unknown_keys_and_values_suggest(paper_config_path, override, needle):
+    with pytest.raises(ConfigError) as info:
+        load_config(paper_config_path, [override])
+    assert needle in str(info.value)
+    assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize("crank", ["0.2 m", "200 mm", "0.3 m"])
+def test_crank_not_shorter_than_rod_is_rejected(paper_config_path, crank):
+    with pytest.raises(ConfigError) as info:
+        load_config(paper_config_path, [f'mechanism.crank_length="{crank}"'])
+    message = str(info.value)
+    assert message.startswith("mechanism.crank_length:")
+    assert "rod_length" in message
+
+
+@pytest.mark.parametrize(
+    ("override", "key"),
+    [
+        ("joint.clearance=0", "joint.clearance"),
+        ("joint.clearance=-1e-6", "joint.clearance"),
+        ('joint.pin_radius="5 kg"', "joint.pin_radius"),
+        ("joint.axial_length=nan", "joint.axial_length"),
+        ("materials.bushing.poisson_ratio=0.5", "materials.bushing.poisson_ratio"),
+        ("materials.pin.poisson_ratio=-1.0", "materials.pin.poisson_ratio"),
+        ("materials.pin.youngs_modulus=0", "materials.pin.youngs_modulus"),
+        ("contact.nodes=8", "contact.nodes"),
+        ("contact.exponent=0", "contact.exponent"),
+        ("contact.tolerance=0", "contact.tolerance"),
+        ("joint.clearance=true", "joint.clearance"),
+    ],
+)
+def test_invalid_values_name_their_key(paper_config_path, override, key):
+    with pytest.raises(ConfigError) as info:
+        load_config(paper_config_path, [override])
+    assert str(info.value).startswith(key + ":")
+
+
+def test_poisson_ratio_limits_are_open(paper_config_path):
+    for value in (-0.99, 0.0, 0.49):
+        cfg = load_config(paper_config_path, [f"materials.bushing.poisson_ratio={value}"])
+        assert cfg.materials.bushing.poisson_ratio == value
+
+
+def test_to_toml_round_trip(paper_config_path):
+    cfg = load_config(paper_config_path, ["mechanism.crank_speed=240 rpm", "contact.nodes=720"])
+    text = cfg.to_toml()
+    data = tomllib.loads(text)
+    again = config_from_dict(data, defaults=False)
+    assert again.to_dict() == cfg.to_dict()
+    assert again.to_toml() == text  # a fixed point
+    assert again.mechanism.crank_speed == cfg.mechanism.crank_speed  # exact float repr
+    assert again.spring_area == cfg.spring_area
+    assert again.mechanism.rod_centroidal_inertia == cfg.mechanism.rod_centroidal_inertia
+
+
+def test_defaults_false_requires_every_section():
+    with pytest.raises(ConfigError, match="missing"):
+        config_from_dict({"joint": {"pin_radius": 1e-3}}, defaults=False)
+
+
+def test_unknown_parameter_set():
+    with pytest.raises(ConfigError, match="parameter_set"):
+        config_from_dict({"parameter_set": "nlcp-papr"})
+
+
+def test_missing_and_invalid_files(tmp_path):
+    with pytest.raises(ConfigError, match="file not found"):
+        load_config(tmp_path / "missing.toml")
+    bad = tmp_path / "bad.toml"
+    bad.write_text("joint = [")
+    with pytest.raises(ConfigError, match="not valid TOML"):
+        load_config(bad)
