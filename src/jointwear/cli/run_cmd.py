@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import math
 import shutil
 import sys
@@ -14,7 +15,6 @@ import typer
 from rich.table import Table
 
 from jointwear.cli.common import (
-    ConfigArg,
     JsonOpt,
     SetOpt,
     app,
@@ -121,9 +121,33 @@ def summary_table(summary: dict, title: str) -> Table:
     return table
 
 
+OptConfigArg = Annotated[
+    Path | None,
+    typer.Argument(help="Config file (TOML); omit with --resume.", show_default=False),
+]
+CheckpointOpt = Annotated[
+    int | None,
+    typer.Option(
+        "--checkpoint-every",
+        help="Save the state into --out every K revolutions (sets simulation.checkpoint_every; "
+        "0 = off); continue a killed run with --resume OUT.",
+        show_default=False,
+    ),
+]
+ResumeOpt = Annotated[
+    Path | None,
+    typer.Option(
+        "--resume",
+        help="Continue the checkpointed run in this directory (its config is read from there; "
+        "results are written there).",
+        show_default=False,
+    ),
+]
+
+
 @app.command()
 def run(
-    config: ConfigArg,
+    config: OptConfigArg = None,
     set_: SetOpt = None,
     out: OutOpt = None,
     json_: JsonOpt = False,
@@ -131,21 +155,81 @@ def run(
     plots: Annotated[
         bool, typer.Option("--plots/--no-plots", help="Draw figures into OUT/plots.")
     ] = True,
+    checkpoint_every: CheckpointOpt = None,
+    resume: ResumeOpt = None,
 ) -> None:
     """Simulate wear over revolutions (dynamics -> pressure -> Archard -> contour update)."""
+    from jointwear.checkpoint import Checkpointer, has_checkpoint, load_checkpoint
+    from jointwear.errors import ConfigError, DataError, JointwearError
     from jointwear.simulation import Simulation
 
-    cfg = load(config, set_)
+    state = None
+    if resume is not None:
+        if config is not None:
+            raise ConfigError(f"--resume: give either CONFIG ({config}) or --resume DIR, not both")
+        if set_:
+            raise ConfigError(
+                "--set: a resumed run keeps its configuration (from --resume DIR/checkpoint.toml)"
+            )
+        if checkpoint_every is not None:
+            raise ConfigError("--checkpoint-every: a resumed run keeps its checkpoint interval")
+        if out is not None and out.resolve() != resume.resolve():
+            raise ConfigError("--out: a resumed run writes its results into the --resume directory")
+        cfg, state, checkpointer = load_checkpoint(resume)
+        out = resume
+        name = out.name
+    else:
+        if config is None:
+            raise ConfigError("CONFIG: missing; give a config file or --resume DIR")
+        overrides = list(set_ or [])
+        if checkpoint_every is not None:
+            if checkpoint_every < 0:
+                raise ConfigError(f"--checkpoint-every: must be >= 0, got {checkpoint_every}")
+            if checkpoint_every > 0 and out is None:
+                raise ConfigError("--checkpoint-every: needs --out DIR (checkpoints go there)")
+            overrides.append(f"simulation.checkpoint_every={checkpoint_every}")
+        cfg = load(config, overrides)
+        if out is not None and out.exists() and not out.is_dir():
+            raise ConfigError(f"--out: {out} exists and is not a directory")
+        if out is not None and has_checkpoint(out):
+            raise ConfigError(
+                f"--out: {out} holds the checkpoint of an unfinished run; continue it with "
+                f"`jointwear run --resume {out}` or delete {out}/checkpoint.*"
+            )
+        every = cfg.simulation.checkpoint_every
+        checkpointer = Checkpointer(out, cfg) if out is not None and every > 0 else None
+        name = config.name
     simulation = Simulation(cfg)
-    with ProgressBar("revolutions", quiet=quiet) as bar:
-        result = simulation.run(progress=bar)
+    created = out is not None and not out.exists()
+    if checkpointer is not None and state is None and resume is None:
+        checkpointer.begin()
+    try:
+        with ProgressBar("revolutions", quiet=quiet) as bar:
+            result = simulation.run(progress=bar, state=state, on_step=checkpointer)
+    except JointwearError:
+        # the run cannot finish from this state: leave no checkpoint (or empty folder) behind
+        if checkpointer is not None:
+            checkpointer.clear()
+            if created:
+                with contextlib.suppress(OSError):
+                    out.rmdir()
+        raise
+    except KeyboardInterrupt:
+        if checkpointer is not None:
+            err_console.print(f"interrupted; continue with `jointwear run --resume {out}`")
+        raise
     if out is not None:
-        write_outputs(result, out, plots=plots)
+        try:
+            write_outputs(result, out, plots=plots)
+        except OSError as exc:
+            raise DataError(f"--out: cannot write the results into {out} ({exc})") from None
+    if checkpointer is not None:
+        checkpointer.clear()
     summary = result.summary()
     if json_:
         emit_json(summary)
     else:
-        console.print(summary_table(summary, f"{config.name}: {summary['contact_model']}"))
+        console.print(summary_table(summary, f"{name}: {summary['contact_model']}"))
         if out is not None:
             console.print(f"results in {out}/")
 

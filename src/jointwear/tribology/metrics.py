@@ -52,7 +52,8 @@ def wear_width(wear_depth: ArrayLike, threshold: float = 0.01) -> float:
     positive = np.where(above > 0, above, after)
     with np.errstate(divide="ignore", invalid="ignore"):
         fraction = np.where(crossing, positive / np.abs(above - after), 0.0)
-    return float((np.count_nonzero(both) + fraction.sum()) * 2 * np.pi / depth.size)
+    width = (np.count_nonzero(both) + fraction.sum()) * 2 * np.pi / depth.size
+    return float(min(width, 2 * np.pi))  # all worn: exactly 2 pi, not one ulp more
 
 
 def removed_area(original_radius: float | ArrayLike, radius: ArrayLike) -> float:

@@ -1,0 +1,1053 @@
+"""Parameter sweeps: many runs of one base configuration, in parallel.
+
+A sweep file (TOML) names a base configuration and the values to vary::
+
+    base = "base.toml"                 # relative to the sweep file
+    [set]                              # fixed overrides for every case
+    "simulation.revolutions" = 1
+    [grid]                             # cartesian product
+    "joint.clearance" = ["0.05 mm", "0.1 mm", "0.2 mm"]
+    "mechanism.crank_speed" = ["120 rpm", "240 rpm"]
+    [zip]                              # lists of equal length, taken row by row
+    "contact.model" = ["winkler", "nlcp"]
+    "contact.exponent" = [1.0, 1.5]
+    [sample]                           # random samples (numpy, seeded)
+    "materials.bushing.wear_coefficient" = {distribution = "lognormal",
+                                            median = "5.05e-13 m^2/N", sigma = 0.5}
+    samples = 8
+    seed = 1
+
+The cases are the product grid x zip x samples (each present part counts).
+:func:`load_sweep` expands and validates everything before anything runs: an
+unknown key or a value that cannot be read fails the whole sweep with one
+line naming the sweep file and key. A combination that is invalid only
+together (e.g. crank longer than rod) and any error during a case's run are
+recorded as a *failed case* instead.
+
+:func:`run_sweep` runs the cases on local processes
+(:class:`concurrent.futures.ProcessPoolExecutor`) or on a dask.distributed
+cluster, writes one record per case atomically as it finishes
+(``DIR/cases/case-NNNN.json``) and finally ``DIR/cases.csv`` and
+``DIR/sweep.nc``. ``run_sweep(..., resume=True)`` skips finished cases.
+"""
+
+from __future__ import annotations
+
+import csv
+import itertools
+import json
+import math
+import multiprocessing
+import os
+import shutil
+import threading
+import time
+import tomllib
+import types
+import typing
+import uuid
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from jointwear.config import Config, apply_overrides, config_from_dict, load_config
+from jointwear.errors import ConfigError, DataError, JointwearError
+from jointwear.io import atomic_write, write_json
+from jointwear.registry import suggest
+from jointwear.units import DIMENSIONS, to_si
+
+__all__ = [
+    "DISTRIBUTIONS",
+    "METRICS",
+    "Case",
+    "SweepPlan",
+    "SweepResult",
+    "expand_sweep",
+    "load_plan",
+    "load_sweep",
+    "run_case",
+    "run_sweep",
+]
+
+#: top-level keys of a sweep file
+SWEEP_KEYS = ("base", "set", "grid", "zip", "sample", "samples", "seed")
+#: distributions of ``[sample]`` and their parameters
+DISTRIBUTIONS: dict[str, tuple[str, ...]] = {
+    "uniform": ("low", "high"),
+    "loguniform": ("low", "high"),
+    "normal": ("mean", "std"),
+    "lognormal": ("median", "sigma"),
+    "choice": ("values",),
+}
+#: parameters of a distribution that are plain numbers (not quantities of the key)
+_SHAPE_PARAMETERS = {"sigma"}
+#: per-case metrics (the ``jointwear run --json`` keys) in ``cases.csv`` and ``sweep.nc``
+METRICS = (
+    "peak_wear_depth_m",
+    "wear_width_deg",
+    "wear_mass_kg",
+    "wear_volume_m3",
+    "min_wall_thickness_m",
+    "revolutions",
+    "contour_updates",
+    "contact_model",
+    "runtime_s",
+)
+#: the sweep's own files inside its output directory
+PLAN_FILE = "sweep-plan.json"
+CASES_DIR = "cases"
+CASES_CSV = "cases.csv"
+DATASET_FILE = "sweep.nc"
+#: statuses of a case record; "error" (internal error, lost worker) reruns on resume
+FINISHED = ("ok", "failed")
+
+
+# ---------------------------------------------------------------- config keys
+
+
+def _field(dotted: str, where: str) -> Any:
+    """The pydantic field of a dotted config key; unknown keys raise with a suggestion."""
+    from pydantic import BaseModel
+
+    model: Any = Config
+    parts = dotted.split(".")
+    for i, part in enumerate(parts):
+        fields = model.model_fields
+        if part not in fields:
+            prefix = ".".join(parts[:i])
+            what = f"unknown key {part!r}" + (f" in [{prefix}]" if prefix else "")
+            raise ConfigError(f"{where} {dotted}: {what}{suggest(part, fields)}")
+        info = fields[part]
+        annotation = info.annotation
+        if i < len(parts) - 1:
+            if not (isinstance(annotation, type) and issubclass(annotation, BaseModel)):
+                raise ConfigError(f"{where} {dotted}: {part!r} is a value, not a section")
+            model = annotation
+        elif isinstance(annotation, type) and issubclass(annotation, BaseModel):
+            raise ConfigError(f"{where} {dotted}: is a section; name one of its keys")
+    return info
+
+
+def _kind(info: Any) -> str | None:
+    """Physical kind (a key of ``units.DIMENSIONS``) of a config field, if it has units.
+
+    The kind is the argument of ``config._si(kind)``, found on the field's
+    metadata or inside its annotation (``Annotated[...] | None``).
+    """
+    return _kind_of([*info.metadata, info.annotation])
+
+
+def _kind_of(items: Sequence[Any]) -> str | None:
+    for item in items:
+        origin = typing.get_origin(item)
+        if origin is typing.Annotated:
+            found = _kind_of(item.__metadata__)
+        elif origin in (typing.Union, types.UnionType):
+            found = _kind_of(typing.get_args(item))
+        else:
+            func = getattr(item, "func", None)
+            cells = getattr(func, "__closure__", None) or ()
+            found = next(
+                (
+                    c.cell_contents
+                    for c in cells
+                    if isinstance(c.cell_contents, str) and c.cell_contents in DIMENSIONS
+                ),
+                None,
+            )
+        if found is not None:
+            return found
+    return None
+
+
+def _base_types(annotation: Any) -> set[type]:
+    if typing.get_origin(annotation) is typing.Annotated:
+        return _base_types(typing.get_args(annotation)[0])
+    if typing.get_origin(annotation) in (typing.Union, types.UnionType):
+        return set().union(*(_base_types(a) for a in typing.get_args(annotation)))
+    if typing.get_origin(annotation) is typing.Literal:
+        return {type(a) for a in typing.get_args(annotation)}
+    return {annotation} if isinstance(annotation, type) else set()
+
+
+@dataclass(frozen=True)
+class _Key:
+    name: str
+    kind: str | None
+    types: frozenset[type]
+
+    @property
+    def numeric(self) -> bool:
+        return self.kind is not None or bool(self.types & {int, float})
+
+    @property
+    def integer(self) -> bool:
+        return self.kind is None and int in self.types and float not in self.types
+
+    @property
+    def unit(self) -> str | None:
+        """SI unit for the column header; ``None`` for plain numbers, text and flags."""
+        if self.kind is None:
+            return None
+        return DIMENSIONS[self.kind] or "1"
+
+    @property
+    def column(self) -> str:
+        return self.name if self.unit is None else f"{self.name} [{self.unit}]"
+
+    def si(self, value: Any) -> Any:
+        """SI value of a sweep value (quantity strings converted; other values as given)."""
+        if self.kind is not None:
+            return to_si(value, self.kind, self.name)
+        return value
+
+
+def _key(dotted: str, where: str) -> _Key:
+    if not isinstance(dotted, str) or not dotted:
+        raise ConfigError(f"{where}: keys must be dotted config keys, e.g. 'joint.clearance'")
+    info = _field(dotted, where)
+    return _Key(dotted, _kind(info), frozenset(_base_types(info.annotation)))
+
+
+# ---------------------------------------------------------------- the plan
+
+
+@dataclass(frozen=True)
+class Case:
+    """One run of a sweep: the base configuration plus ``overrides``.
+
+    Attributes
+    ----------
+    index : int
+        Position in the sweep (0-based).
+    overrides : dict
+        Dotted key -> value as written in the sweep file (units allowed), or
+        the SI number drawn for a ``[sample]`` key.
+    invalid : str or None
+        Why the case's configuration is invalid (it is then recorded as failed
+        without running).
+    """
+
+    index: int
+    overrides: dict[str, Any]
+    invalid: str | None = None
+
+    @property
+    def name(self) -> str:
+        return f"case-{self.index:04d}"
+
+
+@dataclass(frozen=True)
+class SweepPlan:
+    """An expanded, validated sweep: base configuration and its cases.
+
+    Attributes
+    ----------
+    base : Config
+        Base configuration (with the sweep file's ``[set]`` applied).
+    keys : list of str
+        Swept dotted keys, in file order (grid, zip, sample).
+    cases : list of Case
+    source : str
+        Where the sweep came from (file name, for messages).
+    seed : int or None
+        Seed of the random samples.
+    """
+
+    base: Config
+    keys: list[str]
+    cases: list[Case]
+    source: str = "sweep"
+    seed: int | None = None
+
+    def config(self, case: Case) -> Config:
+        """The full configuration of ``case`` (raises ConfigError if invalid)."""
+        return self.base.replace(case.overrides)
+
+    def columns(self) -> list[_Key]:
+        return [_key(name, self.source) for name in self.keys]
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "format": "jointwear-sweep-1",
+            "source": self.source,
+            "seed": self.seed,
+            # the raw fields: derived defaults (rod inertia, spring area) follow each case
+            "base_config": _without_none(self.base.model_dump(mode="json")),
+            "keys": self.keys,
+            "cases": [
+                {"case": c.name, "overrides": c.overrides, "invalid": c.invalid} for c in self.cases
+            ],
+        }
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], where: str) -> SweepPlan:
+        try:
+            if data.get("format") != "jointwear-sweep-1":
+                raise KeyError("format")
+            base = config_from_dict(data["base_config"], defaults=False)
+            cases = [
+                Case(i, dict(c["overrides"]), c.get("invalid")) for i, c in enumerate(data["cases"])
+            ]
+            return cls(base, list(data["keys"]), cases, str(data["source"]), data.get("seed"))
+        except ConfigError as exc:  # (a ValueError: first)
+            raise DataError(f"{where}: base_config: {exc}") from None
+        except (KeyError, TypeError, AttributeError, ValueError) as exc:
+            raise DataError(f"{where}: not a jointwear sweep plan (bad {exc})") from None
+
+
+def load_sweep(path: str | Path) -> SweepPlan:
+    """Read a sweep file and expand it into validated cases.
+
+    Raises
+    ------
+    ConfigError
+        The file is missing, not TOML, or has an unknown key, a bad value, an
+        unknown distribution ... (one line naming the file and the key).
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise ConfigError(f"{path}: file not found") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ConfigError(f"{path}: cannot read ({exc})") from None
+    try:
+        spec = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ConfigError(f"{path}: not valid TOML ({exc})") from None
+    base_ref = spec.get("base")
+    if base_ref is None:
+        base = load_config()
+    elif not isinstance(base_ref, str):
+        raise ConfigError(f"{path}: base: expected a path to a config file, got {base_ref!r}")
+    else:
+        base_path = path.parent / base_ref
+        try:
+            base = load_config(base_path)
+        except ConfigError as exc:
+            raise ConfigError(f"{path}: base = {base_ref!r}: {exc}") from None
+    return expand_sweep(spec, base, source=str(path))
+
+
+def expand_sweep(spec: Mapping[str, Any], base: Config, source: str = "sweep") -> SweepPlan:
+    """Expand a sweep specification (the parsed sweep file) on ``base``.
+
+    Parameters
+    ----------
+    spec : mapping
+        Keys ``set``, ``grid``, ``zip``, ``sample``, ``samples``, ``seed``
+        (``base`` is ignored here).
+    base : Config
+        Base configuration.
+    source : str
+        Name used at the start of error messages.
+    """
+    for key in spec:
+        if key not in SWEEP_KEYS:
+            raise ConfigError(f"{source}: unknown key {key!r}{suggest(key, SWEEP_KEYS)}")
+    tables = {}
+    for name in ("set", "grid", "zip", "sample"):
+        table = spec.get(name, {})
+        if not isinstance(table, Mapping):
+            raise ConfigError(f"{source}: [{name}] must be a table of dotted keys")
+        tables[name] = table
+    spec = dict(spec)
+    sample_table = dict(tables["sample"])
+    for setting in ("samples", "seed"):  # TOML puts them inside [sample] if written after it
+        if setting in sample_table:
+            if setting in spec:
+                raise ConfigError(f"{source}: {setting}: given twice (top level and in [sample])")
+            spec[setting] = sample_table.pop(setting)
+    tables["sample"] = sample_table
+    tables = {name: _flatten(table) for name, table in tables.items()}
+    seen: dict[str, str] = {}
+    for name, table in tables.items():
+        for dotted in table:
+            if dotted in seen:
+                raise ConfigError(
+                    f"{source}: {dotted}: appears in both [{seen[dotted]}] and [{name}]"
+                )
+            seen[dotted] = name
+            _key(dotted, f"{source}: [{name}]")
+
+    if tables["set"]:
+        for dotted, value in tables["set"].items():
+            _check_value(base, dotted, value, f"{source}: [set] {dotted}")
+        try:
+            base = base.replace(tables["set"])
+        except ConfigError as exc:
+            raise ConfigError(f"{source}: [set]: {exc}") from None
+
+    grid_axes = []
+    for dotted, values in tables["grid"].items():
+        values = _value_list(values, f"{source}: [grid] {dotted}")
+        for value in values:
+            _check_value(base, dotted, value, f"{source}: [grid] {dotted}")
+        grid_axes.append([(dotted, v) for v in values])
+    grid_points = [dict(point) for point in itertools.product(*grid_axes)]
+
+    zip_rows: list[dict[str, Any]] = [{}]
+    if tables["zip"]:
+        lengths = {}
+        for dotted, values in tables["zip"].items():
+            values = _value_list(values, f"{source}: [zip] {dotted}")
+            for value in values:
+                _check_value(base, dotted, value, f"{source}: [zip] {dotted}")
+            lengths[dotted] = values
+        sizes = {len(v) for v in lengths.values()}
+        if len(sizes) > 1:
+            detail = ", ".join(f"{k} has {len(v)}" for k, v in lengths.items())
+            raise ConfigError(f"{source}: [zip] lists must have the same length ({detail})")
+        zip_rows = [
+            dict(zip(lengths, row, strict=True)) for row in zip(*lengths.values(), strict=True)
+        ]
+
+    samples = spec.get("samples")
+    seed = spec.get("seed")
+    sample_rows: list[dict[str, Any]] = [{}]
+    if tables["sample"] or samples is not None:
+        if not tables["sample"]:
+            raise ConfigError(f"{source}: samples: given without a [sample] table")
+        if samples is None:
+            raise ConfigError(f"{source}: samples: missing (how many random samples to draw)")
+        if isinstance(samples, bool) or not isinstance(samples, int) or samples < 1:
+            raise ConfigError(f"{source}: samples: expected a positive integer, got {samples!r}")
+        if seed is None:
+            seed = 0
+        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+            raise ConfigError(f"{source}: seed: expected a non-negative integer, got {seed!r}")
+        rng = np.random.default_rng(seed)
+        columns = {
+            dotted: _draw(base, dotted, dist, samples, rng, f"{source}: [sample] {dotted}")
+            for dotted, dist in tables["sample"].items()
+        }
+        sample_rows = [{k: columns[k][i] for k in columns} for i in range(samples)]
+    elif seed is not None:
+        raise ConfigError(f"{source}: seed: given without a [sample] table")
+
+    if not (tables["grid"] or tables["zip"] or tables["sample"]):
+        raise ConfigError(f"{source}: nothing to sweep; give a [grid], [zip] or [sample] table")
+
+    cases = []
+    for index, (g, z, s) in enumerate(itertools.product(grid_points, zip_rows, sample_rows)):
+        overrides = {**g, **z, **s}
+        invalid = None
+        try:
+            base.replace(overrides)
+        except ConfigError as exc:
+            invalid = str(exc)
+        cases.append(Case(index, overrides, invalid))
+    keys = list(tables["grid"]) + list(tables["zip"]) + list(tables["sample"])
+    return SweepPlan(base, keys, cases, source, seed if tables["sample"] else None)
+
+
+def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
+    """``{"joint": {"clearance": [...]}}`` and ``{"joint.clearance": [...]}`` alike.
+
+    Nested tables are followed only while they name a config section, so a
+    ``[sample]`` entry (itself a table) stays one value.
+    """
+    out: dict[str, Any] = {}
+    for key, value in table.items():
+        dotted = f"{prefix}{key}"
+        if isinstance(value, Mapping) and _is_section(dotted):
+            out.update(_flatten(value, dotted + "."))
+        else:
+            out[dotted] = value
+    return out
+
+
+def _is_section(dotted: str) -> bool:
+    from pydantic import BaseModel
+
+    model: Any = Config
+    for part in dotted.split("."):
+        info = getattr(model, "model_fields", {}).get(part)
+        if info is None:
+            return False
+        model = info.annotation
+    return isinstance(model, type) and issubclass(model, BaseModel)
+
+
+def _value_list(values: Any, where: str) -> list[Any]:
+    if not isinstance(values, list):
+        raise ConfigError(f"{where}: expected a list of values, got {values!r}")
+    if not values:
+        raise ConfigError(f"{where}: the list of values is empty")
+    for value in values:
+        if isinstance(value, float) and not math.isfinite(value):
+            raise ConfigError(f"{where}: must be finite, got {value!r}")
+        if not isinstance(value, str | int | float | bool):
+            raise ConfigError(f"{where}: values must be numbers, strings or booleans")
+    return values
+
+
+def _check_value(base: Config, dotted: str, value: Any, where: str) -> None:
+    """A value must be valid on its own; combinations are judged per case.
+
+    Errors of the field itself (wrong unit, out of range, unknown model ...)
+    fail the sweep. An error that only arises together with other values
+    (a section's cross-check, e.g. crank longer than rod) does not: the
+    case that combines them is recorded as failed.
+    """
+    from pydantic import ValidationError
+
+    data = _without_none(base.model_dump(mode="json"))
+    apply_overrides(data, {dotted: value})
+    try:
+        Config.model_validate(data)
+    except ValidationError as exc:
+        parts = tuple(dotted.split("."))
+        own = any(
+            tuple(p for p in error["loc"] if isinstance(p, str))[: len(parts)] == parts
+            for error in exc.errors()
+        )
+        if not own:
+            return
+        try:
+            config_from_dict(data, defaults=False)
+        except ConfigError as error:
+            message = str(error).removeprefix(f"{dotted}: ")
+            raise ConfigError(f"{where} = {value!r}: {message}") from None
+
+
+def _without_none(data: Mapping[str, Any]) -> dict[str, Any]:
+    return {
+        key: _without_none(value) if isinstance(value, Mapping) else value
+        for key, value in data.items()
+        if value is not None
+    }
+
+
+def _draw(
+    base: Config, dotted: str, dist: Any, n: int, rng: np.random.Generator, where: str
+) -> list[Any]:
+    key = _key(dotted, where)
+    if not isinstance(dist, Mapping) or "distribution" not in dist:
+        raise ConfigError(
+            f'{where}: expected a table like {{distribution = "uniform", low = ..., high = ...}}'
+        )
+    name = dist["distribution"]
+    if name not in DISTRIBUTIONS:
+        raise ConfigError(
+            f"{where}: unknown distribution {name!r}{suggest(str(name), DISTRIBUTIONS)}"
+        )
+    wanted = DISTRIBUTIONS[name]
+    for param in dist:
+        if param != "distribution" and param not in wanted:
+            raise ConfigError(f"{where}: {name} has no parameter {param!r}{suggest(param, wanted)}")
+    for param in wanted:
+        if param not in dist:
+            raise ConfigError(f"{where}: {name} needs {' and '.join(wanted)} ({param} missing)")
+    if name == "choice":
+        choices = _value_list(dist["values"], f"{where}.values")
+        for value in choices:
+            _check_value(base, dotted, value, f"{where}.values")
+        return [choices[i] for i in rng.integers(0, len(choices), size=n)]
+    if not key.numeric:
+        raise ConfigError(f"{where}: a {name} distribution needs a numeric key; use 'choice'")
+
+    def number(param: str) -> float:
+        value = dist[param]
+        kind = "dimensionless" if param in _SHAPE_PARAMETERS or key.kind is None else key.kind
+        return to_si(value, kind, f"{where}.{param}")
+
+    if name in ("uniform", "loguniform"):
+        low, high = number("low"), number("high")
+        if not low < high:
+            raise ConfigError(f"{where}: needs low < high, got {dist['low']!r}, {dist['high']!r}")
+        if name == "uniform":
+            values = rng.uniform(low, high, size=n)
+        else:
+            if low <= 0:
+                raise ConfigError(f"{where}: loguniform needs low > 0, got {dist['low']!r}")
+            values = np.exp(rng.uniform(math.log(low), math.log(high), size=n))
+    elif name == "normal":
+        mean, std = number("mean"), number("std")
+        if std < 0:
+            raise ConfigError(f"{where}.std: must be >= 0, got {dist['std']!r}")
+        values = rng.normal(mean, std, size=n)
+    else:  # lognormal: median and sigma of the underlying normal
+        median, sigma = number("median"), number("sigma")
+        if median <= 0:
+            raise ConfigError(f"{where}.median: must be > 0, got {dist['median']!r}")
+        if sigma < 0:
+            raise ConfigError(f"{where}.sigma: must be >= 0, got {dist['sigma']!r}")
+        values = rng.lognormal(math.log(median), sigma, size=n)
+    if key.integer:
+        return [round(float(v)) for v in values]
+    return [float(v) for v in values]
+
+
+# ---------------------------------------------------------------- one case
+
+
+def run_case(task: Mapping[str, Any]) -> dict[str, Any]:
+    """Run one case; never raises for a case's own failure.
+
+    Parameters
+    ----------
+    task : mapping
+        ``case`` (name), ``config`` (the resolved configuration as TOML text,
+        :meth:`Config.to_toml`) and ``checkpoint`` (directory for the case's
+        checkpoints or ``None``).
+
+    Returns
+    -------
+    dict
+        ``case``, ``status`` ("ok", "failed" for a :class:`JointwearError`,
+        "error" for anything else), ``error`` (one line), ``metrics`` and
+        ``wear_depth_m`` (final profile, list of floats).
+    """
+    from jointwear.simulation import Simulation
+
+    record: dict[str, Any] = {"case": task["case"], "status": "ok", "error": "", "warnings": []}
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            config = config_from_dict(tomllib.loads(task["config"]), defaults=False)
+            checkpointer = state = None
+            if task.get("checkpoint") and config.simulation.checkpoint_every > 0:
+                from jointwear.checkpoint import Checkpointer
+
+                checkpointer = Checkpointer(task["checkpoint"], config)
+                state = checkpointer.load()
+                if state is None:
+                    checkpointer.begin()
+            result = Simulation(config).run(state=state, on_step=checkpointer)
+        summary = result.summary()
+        record["metrics"] = {name: summary[name] for name in METRICS}
+        record["wear_depth_m"] = [float(v) for v in result.wear_depth]
+        for name in ("peak_wear_depth_m", "wear_width_deg", "wear_mass_kg", "wear_volume_m3"):
+            if not math.isfinite(record["metrics"][name]):
+                raise ArithmeticError(f"{name} is {record['metrics'][name]}")
+    except JointwearError as exc:
+        record.update(status="failed", error=_one_line(str(exc)))
+    except Exception as exc:
+        record.update(
+            status="error", error=_one_line(f"internal error: {type(exc).__name__}: {exc}")
+        )
+    else:
+        record["warnings"] = sorted({_one_line(str(w.message)) for w in caught})
+    return record
+
+
+def _one_line(text: str) -> str:
+    return " ".join(text.split())
+
+
+# ---------------------------------------------------------------- running
+
+
+@dataclass
+class SweepResult:
+    """Outcome of :func:`run_sweep`.
+
+    Attributes
+    ----------
+    out : Path
+        Output directory.
+    records : list of dict
+        One per case, in case order (see :func:`run_case`).
+    runtime : float
+        Wall time of this invocation [s].
+    skipped : int
+        Cases already finished before (``resume=True``).
+    scheduler : str
+        ``"serial"``, ``"processes"`` or the dask scheduler address.
+    """
+
+    out: Path
+    records: list[dict[str, Any]]
+    runtime: float
+    skipped: int = 0
+    scheduler: str = "processes"
+    workers: int | None = None
+    counts: dict[str, int] = field(default_factory=dict)
+
+    def summary(self) -> dict[str, Any]:
+        """The ``jointwear sweep --json`` object."""
+        return {
+            "cases": len(self.records),
+            "ok": self.counts.get("ok", 0),
+            "failed": self.counts.get("failed", 0),
+            "errors": self.counts.get("error", 0),
+            "skipped": self.skipped,
+            "out": str(self.out),
+            "cases_csv": str(self.out / CASES_CSV),
+            "dataset": str(self.out / DATASET_FILE),
+            "scheduler": self.scheduler,
+            "workers": self.workers,
+            "runtime_s": self.runtime,
+        }
+
+
+def load_plan(out: str | Path) -> SweepPlan:
+    """The plan stored in a sweep's output directory (for ``--resume``)."""
+    out = Path(out)
+    path = out / PLAN_FILE
+    if not out.is_dir():
+        raise DataError(f"{out}: no such directory to resume")
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise DataError(f"{out}: not a sweep directory (no {PLAN_FILE})") from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise DataError(f"{path}: unreadable sweep plan ({type(exc).__name__})") from None
+    if not isinstance(data, dict):
+        raise DataError(f"{path}: not a jointwear sweep plan")
+    return SweepPlan.from_dict(data, str(path))
+
+
+def _read_record(path: Path) -> dict[str, Any] | None:
+    try:
+        record = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+        return None
+    return record if isinstance(record, dict) and record.get("status") in FINISHED else None
+
+
+def run_sweep(
+    plan: SweepPlan,
+    out: str | Path,
+    *,
+    scheduler: str | None = None,
+    client: Any = None,
+    workers: int | None = None,
+    resume: bool = False,
+    progress: Callable[[int, int], None] | None = None,
+    connect_timeout: float = 10.0,
+) -> SweepResult:
+    """Run every case of ``plan``, writing results into ``out``.
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        From :func:`load_sweep` (or :func:`load_plan` to resume).
+    out : path-like
+        Output directory.
+    scheduler : str, optional
+        Address of a dask.distributed scheduler (``tcp://host:port``).
+    client : dask.distributed.Client, optional
+        An existing client (instead of ``scheduler``).
+    workers : int, optional
+        Local worker processes (default: the CPUs available); ``1`` runs the
+        cases one after the other in this process.
+    resume : bool
+        Keep the finished cases already in ``out``; run the others.
+    progress : callable, optional
+        ``progress(cases_done, cases_total)``.
+    connect_timeout : float
+        Seconds to wait for the dask scheduler [s].
+    """
+    start = time.perf_counter()
+    out = Path(out)
+    if workers is not None and workers < 1:
+        raise ConfigError(f"--workers: must be >= 1, got {workers}")
+    if (scheduler is not None or client is not None) and workers is not None:
+        raise ConfigError("--workers: a dask cluster has its own workers; drop --workers")
+    if not resume and (out / PLAN_FILE).exists():
+        raise ConfigError(
+            f"--out: {out} already holds a sweep; continue it with --resume {out} "
+            "or choose another directory"
+        )
+    own_client = client is None and scheduler is not None
+    if own_client:  # connect before anything is written
+        client = _connect(scheduler, connect_timeout)
+    try:
+        return _run(plan, out, client, workers, resume, progress, start)
+    finally:
+        if own_client:
+            client.close()
+
+
+def _run(
+    plan: SweepPlan,
+    out: Path,
+    client: Any,
+    workers: int | None,
+    resume: bool,
+    progress: Callable[[int, int], None] | None,
+    start: float,
+) -> SweepResult:
+    cases_dir = out / CASES_DIR
+    cases_dir.mkdir(parents=True, exist_ok=True)
+    if not resume:
+        write_json(out / PLAN_FILE, plan.to_dict())
+
+    records: dict[int, dict[str, Any]] = {}
+    for case in plan.cases:
+        record = _read_record(cases_dir / f"{case.name}.json") if resume else None
+        if record is not None:
+            records[case.index] = record
+    skipped = len(records)
+    total = len(plan.cases)
+
+    def finish(case: Case, record: dict[str, Any]) -> None:
+        record["case"] = case.name
+        record["parameters"] = case.overrides
+        write_json(cases_dir / f"{case.name}.json", record)
+        shutil.rmtree(cases_dir / case.name, ignore_errors=True)  # its checkpoints
+        records[case.index] = record
+        if progress is not None:
+            progress(len(records), total)
+
+    tasks = []
+    for case in plan.cases:
+        if case.index in records:
+            continue
+        if case.invalid is not None:
+            finish(case, {"status": "failed", "error": case.invalid, "warnings": []})
+            continue
+        tasks.append((case, _task(plan, case, cases_dir)))
+    if progress is not None:
+        progress(len(records), total)
+
+    if client is not None:
+        mode = _run_dask(tasks, finish, client)
+        used = None
+    else:
+        used = workers or min(_cpus(), max(1, len(tasks)))
+        mode = _run_local(tasks, finish, used)
+
+    ordered = [records[case.index] for case in plan.cases]
+    write_cases_csv(plan, ordered, out / CASES_CSV)
+    write_sweep_dataset(plan, ordered, out / DATASET_FILE)
+    counts = {s: sum(r["status"] == s for r in ordered) for s in ("ok", "failed", "error")}
+    return SweepResult(
+        out, ordered, time.perf_counter() - start, skipped, mode, used, counts=counts
+    )
+
+
+def _task(plan: SweepPlan, case: Case, cases_dir: Path) -> dict[str, Any]:
+    config = plan.config(case)
+    checkpoint = None
+    if config.simulation.checkpoint_every > 0:
+        checkpoint = str((cases_dir / case.name).resolve())
+    return {"case": case.name, "config": config.to_toml(), "checkpoint": checkpoint}
+
+
+def _cpus() -> int:
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def _run_local(
+    tasks: Sequence[tuple[Case, dict[str, Any]]],
+    finish: Callable[[Case, dict[str, Any]], None],
+    workers: int,
+) -> str:
+    if workers == 1 or len(tasks) <= 1:
+        for case, task in tasks:
+            finish(case, run_case(task))
+        return "serial"
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures.process import BrokenProcessPool
+
+    # fork is fast and safe while this process has one thread; otherwise forkserver
+    methods = multiprocessing.get_all_start_methods()
+    method = "fork" if "fork" in methods and threading.active_count() == 1 else None
+    if method is None:
+        method = "forkserver" if "forkserver" in methods else "spawn"
+    executor = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context(method))
+    try:
+        futures = {executor.submit(run_case, task): case for case, task in tasks}
+        for future in as_completed(futures):
+            case = futures[future]
+            try:
+                record = future.result()
+            except BrokenProcessPool:
+                record = _lost(case, "its worker process died")
+            finish(case, record)
+    except BaseException:
+        executor.shutdown(wait=False, cancel_futures=True)
+        raise
+    executor.shutdown()
+    return "processes"
+
+
+def _lost(case: Case, why: str) -> dict[str, Any]:
+    return {"case": case.name, "status": "error", "error": f"internal error: {why}", "warnings": []}
+
+
+def _connect(scheduler: str, timeout: float) -> Any:
+    """A dask.distributed client for ``scheduler`` (one-line errors if impossible)."""
+    try:
+        from dask.distributed import Client
+    except ImportError:
+        raise ConfigError(
+            "--scheduler: dask.distributed is not installed; "
+            "install it with `pip install 'jointwear[sweep]'`"
+        ) from None
+    try:
+        return Client(scheduler, timeout=timeout)
+    except (OSError, TimeoutError, ValueError, TypeError) as exc:
+        why = _one_line(str(exc)) or type(exc).__name__
+        raise ConfigError(f"--scheduler: cannot connect to {scheduler} ({why})") from None
+
+
+def _run_dask(
+    tasks: Sequence[tuple[Case, dict[str, Any]]],
+    finish: Callable[[Case, dict[str, Any]], None],
+    client: Any,
+) -> str:
+    from dask.distributed import as_completed
+
+    address = str(client.scheduler.address)
+    token = uuid.uuid4().hex[:12]
+    futures: dict[Any, Case] = {}
+    try:
+        for case, task in tasks:
+            key = f"jointwear-{case.name}-{token}"
+            futures[client.submit(run_case, task, key=key, pure=False)] = case
+        for future in as_completed(list(futures)):
+            case = futures[future]
+            if future.status == "finished":
+                record = future.result()
+            else:
+                exc = future.exception()
+                record = _lost(case, f"{type(exc).__name__}: {_one_line(str(exc))}")
+            finish(case, record)
+    except BaseException:
+        for future in futures:
+            future.cancel()
+        raise
+    return address
+
+
+# ---------------------------------------------------------------- outputs
+
+
+def _parameter_values(plan: SweepPlan, records: Sequence[Mapping[str, Any]]) -> dict[str, list]:
+    """SI value of every swept key in every case (``None`` if unreadable)."""
+    values: dict[str, list] = {}
+    for key in plan.columns():
+        column = []
+        for case in plan.cases:
+            raw = case.overrides.get(key.name)
+            try:
+                column.append(key.si(raw))
+            except ConfigError:
+                column.append(None)
+        values[key.name] = column
+    return values
+
+
+def write_cases_csv(
+    plan: SweepPlan, records: Sequence[Mapping[str, Any]], path: str | Path
+) -> None:
+    """One row per case: parameters (SI, unit in the header), metrics, status, error."""
+    keys = plan.columns()
+    params = _parameter_values(plan, records)
+    with atomic_write(path, newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["case", *(k.column for k in keys), *METRICS, "status", "error"])
+        for i, (case, record) in enumerate(zip(plan.cases, records, strict=True)):
+            metrics = record.get("metrics") or {}
+            writer.writerow(
+                [
+                    case.name,
+                    *(_cell(params[k.name][i]) for k in keys),
+                    *(_cell(metrics.get(m)) for m in METRICS),
+                    record["status"],
+                    record.get("error", ""),
+                ]
+            )
+
+
+def _cell(value: Any) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return repr(value)
+    return str(value)
+
+
+def write_sweep_dataset(
+    plan: SweepPlan, records: Sequence[Mapping[str, Any]], path: str | Path
+) -> None:
+    """``sweep.nc``: metrics, parameters and final wear profiles along ``case``."""
+    import xarray as xr
+
+    from jointwear import __version__
+    from jointwear.results import write_netcdf
+
+    n = len(records)
+    profiles = [r.get("wear_depth_m") for r in records]
+    sizes = {len(p) for p in profiles if p}
+    nodes = max(sizes) if sizes else plan.base.contact.nodes
+    theta = 2 * np.pi * np.arange(nodes) / nodes
+    depth = np.full((n, nodes), np.nan)
+    for i, profile in enumerate(profiles):
+        if not profile:
+            continue
+        values = np.asarray(profile, dtype=np.float64)
+        if values.size == nodes:
+            depth[i] = values
+        else:  # a coarser mesh: periodic linear interpolation onto the finest one
+            own = 2 * np.pi * np.arange(values.size) / values.size
+            depth[i] = np.interp(theta, own, values, period=2 * np.pi)
+
+    def var(values, units, long_name, dims=("case",)):
+        return xr.Variable(dims, values, attrs={"units": units, "long_name": long_name})
+
+    units = {
+        "peak_wear_depth_m": ("m", "largest wear depth"),
+        "wear_width_deg": ("degree", "angular width of the worn zone"),
+        "wear_mass_kg": ("kg", "worn mass"),
+        "wear_volume_m3": ("m3", "worn volume"),
+        "min_wall_thickness_m": ("m", "smallest remaining wall thickness"),
+        "revolutions": ("1", "revolutions"),
+        "contour_updates": ("1", "contour updates"),
+        "runtime_s": ("s", "run time of the case"),
+    }
+    data_vars: dict[str, Any] = {}
+    for name, (unit, long_name) in units.items():
+        column = [(r.get("metrics") or {}).get(name) for r in records]
+        data_vars[name] = var(
+            np.array([np.nan if v is None else float(v) for v in column]), unit, long_name
+        )
+    data_vars["contact_model"] = var(
+        np.array([(r.get("metrics") or {}).get("contact_model") or "" for r in records], dtype=str),
+        "",
+        "contact model",
+    )
+    data_vars["status"] = var(np.array([r["status"] for r in records], dtype=str), "", "status")
+    data_vars["error"] = var(
+        np.array([r.get("error", "") for r in records], dtype=str), "", "error message"
+    )
+    data_vars["wear_depth"] = var(depth, "m", "final radial wear depth", ("case", "theta"))
+    params = _parameter_values(plan, records)
+    for key in plan.columns():
+        column = params[key.name]
+        name = key.name
+        if key.numeric and all(isinstance(v, int | float) or v is None for v in column):
+            values = np.array([np.nan if v is None else float(v) for v in column])
+        else:
+            values = np.array(["" if v is None else _cell(v) for v in column], dtype=str)
+        data_vars[name] = var(values, key.unit or "", f"swept parameter {name}")
+    dataset = xr.Dataset(
+        data_vars,
+        coords={
+            "case": var(np.array([c.name for c in plan.cases], dtype=str), "", "case"),
+            "theta": var(theta, "rad", "bushing angle", ("theta",)),
+        },
+        attrs={
+            "title": "jointwear sweep",
+            "source": plan.source,
+            "swept_keys": json.dumps(plan.keys),
+            "seed": -1 if plan.seed is None else plan.seed,
+            "base_config": plan.base.to_toml(),
+            "jointwear_version": __version__,
+        },
+    )
+    write_netcdf(dataset, path)

@@ -1,0 +1,695 @@
+"""Bad input, catalogued (docs/bad-input.md): one line on stderr, exit status 2, nothing left.
+
+Every case runs the CLI in-process (``jointwear.cli.main``) and checks that
+
+* the exit status is 2 (1 is reserved for internal errors),
+* stderr is exactly one line, ``error: ...``, naming the key or file and the reason,
+* there is no traceback and nothing on stdout,
+* the ``--out`` directory (if any) holds no files: no results, no temporary files.
+
+A few cases also run as real subprocesses, and ``--debug`` is checked to show the traceback.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+import typer
+
+from jointwear import Simulation, load_config
+from jointwear.cli import app, main
+from jointwear.errors import JointwearError
+from jointwear.results import write_netcdf
+
+REPO = Path(__file__).resolve().parents[1]
+PAPER = REPO / "examples" / "paper" / "table3_winkler_120rpm.toml"
+SMALL = ["--set", "contact.nodes=60", "--set", "simulation.steps_per_revolution=60"]
+COMMANDS = set(typer.main.get_command(app).commands)
+
+
+@dataclass(frozen=True)
+class Bad:
+    """One bad input: the command line, the files it needs, what the message must say."""
+
+    id: str
+    area: str  # config | cli | data | sweep | run
+    argv: list[str]
+    expect: list[str]
+    files: dict[str, str | bytes] = field(default_factory=dict)
+    command: str = ""
+
+    def needs(self) -> str:
+        return self.command or self.argv[0]
+
+
+def tiny_toml() -> str:
+    return PAPER.read_text(encoding="utf-8")
+
+
+def sweep_toml(body: str) -> str:
+    return 'base = "tiny.toml"\n[set]\n"contact.nodes" = 60\n' + body
+
+
+GRID = '[grid]\n"joint.clearance" = ["0.05 mm", "0.1 mm"]\n'
+CSV_HEADER = "x [mm],y [mm]\n"
+
+CASES: list[Bad] = [
+    # ------------------------------------------------------------ config files
+    Bad(
+        "config-file-missing",
+        "config",
+        ["run", "{tmp}/missing.toml"],
+        ["missing.toml", "file not found"],
+    ),
+    Bad(
+        "config-not-toml",
+        "config",
+        ["run", "{tmp}/bad.toml"],
+        ["bad.toml", "not valid TOML"],
+        {"bad.toml": "[joint\nclearance = 1\n"},
+    ),
+    Bad(
+        "config-truncated",
+        "config",
+        ["run", "{tmp}/cut.toml"],
+        ["cut.toml", "not valid TOML"],
+        {"cut.toml": tiny_toml()[: tiny_toml().index("7.45") + 3]},
+    ),
+    Bad(
+        "config-binary",
+        "config",
+        ["run", "{tmp}/bin.toml"],
+        ["bin.toml", "cannot read"],
+        {"bin.toml": b"\xff\xfe\x00\x81"},
+    ),
+    Bad("config-is-a-directory", "config", ["run", "{tmp}"], ["cannot read", "directory"]),
+    Bad(
+        "unknown-key-in-file",
+        "config",
+        ["run", "{tmp}/typo.toml"],
+        ["joint.clearnce", "unknown key", "did you mean 'clearance'"],
+        {"typo.toml": '[joint]\nclearnce = "0.1 mm"\n'},
+    ),
+    Bad(
+        "unknown-section",
+        "config",
+        ["run", "{tmp}/typo.toml"],
+        ["jiont", "unknown key", "did you mean 'joint'"],
+        {"typo.toml": '[jiont]\nclearance = "0.1 mm"\n'},
+    ),
+    Bad(
+        "unknown-key-set",
+        "config",
+        ["run", "{paper}", "--set", "materials.pin.densty=7800"],
+        ["materials.pin.densty", "did you mean 'density'"],
+    ),
+    Bad(
+        "mass-as-length",
+        "config",
+        ["run", "{paper}", "--set", "joint.clearance=5 kg"],
+        ["joint.clearance", "'5 kg'", "expected a length"],
+    ),
+    Bad(
+        "length-as-speed",
+        "config",
+        ["run", "{paper}", "--set", "mechanism.crank_speed=3 m"],
+        ["mechanism.crank_speed", "expected an angular velocity"],
+    ),
+    Bad(
+        "unknown-unit",
+        "config",
+        ["run", "{paper}", "--set", "joint.pin_radius=7 mmm"],
+        ["joint.pin_radius", "cannot read '7 mmm'"],
+    ),
+    Bad(
+        "text-for-integer",
+        "config",
+        ["run", "{paper}", "--set", "contact.nodes=many"],
+        ["contact.nodes", "valid integer"],
+    ),
+    Bad(
+        "fraction-for-integer",
+        "config",
+        ["run", "{paper}", "--set", "contact.nodes=90.5"],
+        ["contact.nodes", "fractional part"],
+    ),
+    Bad(
+        "text-for-boolean",
+        "config",
+        ["run", "{paper}", "--set", "simulation.update_contour=maybe"],
+        ["simulation.update_contour", "valid boolean"],
+    ),
+    Bad(
+        "boolean-for-quantity",
+        "config",
+        ["run", "{paper}", "--set", "joint.clearance=true"],
+        ["joint.clearance", "boolean"],
+    ),
+    Bad(
+        "pin-equals-bushing",
+        "config",
+        ["run", "{paper}", "--set", "joint.clearance=0"],
+        ["joint.clearance", "greater than 0"],
+    ),
+    Bad(
+        "pin-larger-than-bushing",
+        "config",
+        ["run", "{paper}", "--set", "joint.clearance=-0.1 mm"],
+        ["joint.clearance", "greater than 0"],
+    ),
+    Bad(
+        "negative-mass",
+        "config",
+        ["run", "{paper}", "--set", "mechanism.slider_mass=-5 kg"],
+        ["mechanism.slider_mass", "greater than or equal to 0"],
+    ),
+    Bad(
+        "zero-speed",
+        "config",
+        ["run", "{paper}", "--set", "mechanism.crank_speed=0 rpm"],
+        ["mechanism.crank_speed", "greater than 0"],
+    ),
+    Bad(
+        "nan",
+        "config",
+        ["run", "{paper}", "--set", "joint.clearance=nan"],
+        ["joint.clearance", "must be finite"],
+    ),
+    Bad(
+        "nan-with-unit",
+        "config",
+        ["run", "{paper}", "--set", "joint.clearance=nan mm"],
+        ["joint.clearance", "must be finite"],
+    ),
+    Bad(
+        "inf",
+        "config",
+        ["run", "{paper}", "--set", "materials.bushing.youngs_modulus=inf"],
+        ["materials.bushing.youngs_modulus", "must be finite"],
+    ),
+    Bad(
+        "poisson-ratio-0.5",
+        "config",
+        ["run", "{paper}", "--set", "materials.pin.poisson_ratio=0.5"],
+        ["materials.pin.poisson_ratio", "less than 0.5"],
+    ),
+    Bad(
+        "mechanism-cannot-assemble",
+        "config",
+        ["run", "{paper}", "--set", "mechanism.crank_length=250 mm"],
+        ["mechanism.crank_length", "cannot assemble", "rod_length"],
+    ),
+    Bad(
+        "unknown-contact-model",
+        "config",
+        ["run", "{paper}", "--set", "contact.model=nlcpp"],
+        ["contact.model", "did you mean 'nlcp'"],
+    ),
+    Bad(
+        "unknown-choice",
+        "config",
+        ["run", "{paper}", "--set", "mechanism.spring_mode=pul"],
+        ["mechanism.spring_mode", "did you mean 'pull'"],
+    ),
+    Bad(
+        "int-or-adaptive",
+        "config",
+        ["run", "{paper}", "--set", "simulation.update_every=adaptiv"],
+        ["simulation.update_every", "did you mean 'adaptive'"],
+    ),
+    Bad(
+        "too-few-nodes",
+        "config",
+        ["run", "{paper}", "--set", "contact.nodes=8"],
+        ["contact.nodes", "greater than or equal to 16"],
+    ),
+    Bad(
+        "unknown-parameter-set",
+        "config",
+        ["run", "{paper}", "--set", "parameter_set=paper"],
+        ["parameter_set", "did you mean 'nlcp-paper'"],
+    ),
+    Bad(
+        "set-without-value",
+        "config",
+        ["run", "{paper}", "--set", "joint.clearance"],
+        ["--set", "expected section.key=VALUE"],
+    ),
+    Bad(
+        "set-below-a-value",
+        "config",
+        ["run", "{paper}", "--set", "joint.clearance.x=1"],
+        ["joint.clearance.x", "is a value, not a section"],
+    ),
+    Bad(
+        "value-for-a-section",
+        "config",
+        ["run", "{paper}", "--set", "joint=1"],
+        ["joint", "valid dictionary"],
+    ),
+    # ------------------------------------------------------------ physics during a run
+    Bad(
+        "wear-through",
+        "run",
+        ["run", "{paper}", *SMALL, "--set", "materials.bushing.wear_coefficient=1e-3"],
+        ["joint.bushing_thickness", "gone through"],
+    ),
+    Bad(
+        "wear-through-while-checkpointing",
+        "run",
+        [
+            "run",
+            "{paper}",
+            *SMALL,
+            "--set",
+            "materials.bushing.wear_coefficient=2e-8",
+            "--set",
+            "simulation.update_contour=true",
+            "--set",
+            "simulation.revolutions=50",
+            "--checkpoint-every",
+            "2",
+        ],
+        ["joint.bushing_thickness", "gone through"],
+    ),
+    Bad(
+        "no-convergence",
+        "run",
+        ["run", "{paper}", *SMALL, "--set", "contact.max_iterations=1"],
+        ["did not converge", "contact.max_iterations"],
+    ),
+    # ------------------------------------------------------------ command line
+    Bad(
+        "unknown-option",
+        "cli",
+        ["run", "{paper}", "--frobnicate"],
+        ["No such option: --frobnicate"],
+    ),
+    Bad(
+        "unknown-command",
+        "cli",
+        ["rnu", "{paper}"],
+        ["No such command 'rnu'", "'run'"],
+        command="run",
+    ),
+    Bad("missing-config-argument", "cli", ["run"], ["CONFIG: missing"]),
+    Bad(
+        "checkpoint-without-out",
+        "cli",
+        ["run", "{paper}", "--checkpoint-every", "5"],
+        ["--checkpoint-every", "needs --out"],
+    ),
+    Bad(
+        "negative-checkpoint-interval",
+        "cli",
+        ["run", "{paper}", "--checkpoint-every", "-1"],
+        ["--checkpoint-every", "must be >= 0"],
+    ),
+    Bad(
+        "out-is-a-file",
+        "cli",
+        ["run", "{paper}", "--out", "{tmp}/afile"],
+        ["--out", "afile", "not a directory"],
+        {"afile": "x"},
+    ),
+    Bad(
+        "resume-without-checkpoint",
+        "cli",
+        ["run", "--resume", "{tmp}"],
+        ["no checkpoint to resume"],
+    ),
+    Bad(
+        "resume-missing-directory",
+        "cli",
+        ["run", "--resume", "{tmp}/nowhere"],
+        ["nowhere", "no such directory"],
+    ),
+    Bad(
+        "resume-corrupt-checkpoint",
+        "cli",
+        ["run", "--resume", "{tmp}"],
+        ["checkpoint.npz", "not a readable checkpoint"],
+        {"checkpoint.toml": "@config", "checkpoint.npz": b"PK\x03\x04 truncated"},
+    ),
+    Bad(
+        "force-as-length",
+        "cli",
+        ["contact", "{paper}", "--load", "5 m"],
+        ["--load", "expected a force"],
+    ),
+    # ------------------------------------------------------------ data files
+    Bad(
+        "plot-garbage-netcdf",
+        "data",
+        ["plot", "{tmp}/broken.nc"],
+        ["broken.nc", "not a readable netCDF result"],
+        {"broken.nc": b"garbage\x00\x01"},
+    ),
+    Bad(
+        "plot-truncated-netcdf",
+        "data",
+        ["plot", "{tmp}/cut.nc"],
+        ["cut.nc", "not a readable netCDF result"],
+        {"cut.nc": "@truncated-result"},
+    ),
+    Bad(
+        "plot-foreign-netcdf",
+        "data",
+        ["plot", "{tmp}/other.nc"],
+        ["other.nc", "not a jointwear result"],
+        {"other.nc": "@foreign-netcdf"},
+    ),
+    Bad(
+        "plot-missing-file", "data", ["plot", "{tmp}/missing.nc"], ["missing.nc", "file not found"]
+    ),
+    Bad(
+        "plot-bad-magnification",
+        "data",
+        ["plot", "{tmp}/result.nc", "--magnification", "-1"],
+        ["--magnification", "positive"],
+        {"result.nc": "@result"},
+    ),
+    Bad(
+        "measure-garbage-csv",
+        "data",
+        ["measure", "{tmp}/bad.csv", "--radius", "7.5 mm"],
+        ["bad.csv"],
+        {"bad.csv": "hello world\nfoo bar\n"},
+    ),
+    Bad(
+        "measure-truncated-csv",
+        "data",
+        ["measure", "{tmp}/cut.csv", "--radius", "7.5 mm"],
+        ["cut.csv", "line 3"],
+        {"cut.csv": CSV_HEADER + "7.5,0\n0\n"},
+    ),
+    Bad(
+        "measure-empty-csv",
+        "data",
+        ["measure", "{tmp}/empty.csv", "--radius", "7.5 mm"],
+        ["empty.csv", "no data"],
+        {"empty.csv": ""},
+    ),
+    Bad(
+        "measure-nan-in-csv",
+        "data",
+        ["measure", "{tmp}/nan.csv", "--radius", "7.5 mm"],
+        ["nan.csv", "non-finite"],
+        {"nan.csv": CSV_HEADER + "7.5,nan\n0,7.5\n-7.5,0\n"},
+    ),
+    Bad(
+        "measure-too-few-points",
+        "data",
+        ["measure", "{tmp}/few.csv", "--radius", "7.5 mm"],
+        ["few.csv", "need at least"],
+        {"few.csv": CSV_HEADER + "7.5,0\n0,7.5\n"},
+    ),
+    Bad(
+        "measure-missing-file",
+        "data",
+        ["measure", "{tmp}/none.csv", "--radius", "7.5 mm"],
+        ["none.csv", "file not found"],
+    ),
+    Bad(
+        "measure-radius-as-mass",
+        "data",
+        ["measure", "{tmp}/few.csv", "--radius", "5 kg"],
+        ["--radius", "expected a length"],
+        {"few.csv": CSV_HEADER + "7.5,0\n"},
+    ),
+    Bad(
+        "measure-radius-missing",
+        "data",
+        ["measure", "{tmp}/few.csv"],
+        ["Missing option", "--radius"],
+        {"few.csv": CSV_HEADER + "7.5,0\n"},
+    ),
+    # ------------------------------------------------------------ sweep files
+    Bad(
+        "sweep-file-missing",
+        "sweep",
+        ["sweep", "{tmp}/none.toml", "--out", "{out}"],
+        ["none.toml", "file not found"],
+    ),
+    Bad(
+        "sweep-not-toml",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "not valid TOML"],
+        {"s.toml": "[grid\n"},
+    ),
+    Bad(
+        "sweep-unknown-config-key",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "joint.clearnce", "did you mean 'clearance'"],
+        {"s.toml": sweep_toml('[grid]\n"joint.clearnce" = [1e-4]\n'), "tiny.toml": "@tiny"},
+    ),
+    Bad(
+        "sweep-unknown-table",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "'grd'", "did you mean 'grid'"],
+        {"s.toml": sweep_toml('[grd]\n"joint.clearance" = [1e-4]\n'), "tiny.toml": "@tiny"},
+    ),
+    Bad(
+        "sweep-mass-as-length",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "[grid] joint.clearance = '5 kg'", "expected a length"],
+        {"s.toml": sweep_toml('[grid]\n"joint.clearance" = ["5 kg"]\n'), "tiny.toml": "@tiny"},
+    ),
+    Bad(
+        "sweep-zip-lengths",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "same length"],
+        {
+            "s.toml": sweep_toml(
+                '[zip]\n"contact.model" = ["nlcp", "winkler"]\n"contact.exponent" = [1.5]\n'
+            ),
+            "tiny.toml": "@tiny",
+        },
+    ),
+    Bad(
+        "sweep-unknown-distribution",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "unknown distribution 'lognormel'", "did you mean 'lognormal'"],
+        {
+            "s.toml": sweep_toml(
+                '[sample]\n"joint.clearance" = {distribution = "lognormel", '
+                'median = "0.1 mm", sigma = 0.1}\nsamples = 2\n'
+            ),
+            "tiny.toml": "@tiny",
+        },
+    ),
+    Bad(
+        "sweep-missing-samples",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "samples: missing"],
+        {
+            "s.toml": sweep_toml(
+                '[sample]\n"joint.clearance" = {distribution = "uniform", '
+                'low = "0.05 mm", high = "0.1 mm"}\n'
+            ),
+            "tiny.toml": "@tiny",
+        },
+    ),
+    Bad(
+        "sweep-missing-base",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "nobase.toml", "file not found"],
+        {"s.toml": 'base = "nobase.toml"\n' + GRID},
+    ),
+    Bad(
+        "sweep-zero-workers",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}", "--workers", "0"],
+        ["--workers", "must be >= 1"],
+        {"s.toml": sweep_toml(GRID), "tiny.toml": "@tiny"},
+    ),
+    Bad(
+        "sweep-without-out",
+        "sweep",
+        ["sweep", "{tmp}/s.toml"],
+        ["--out: missing"],
+        {"s.toml": sweep_toml(GRID), "tiny.toml": "@tiny"},
+    ),
+    Bad(
+        "sweep-resume-not-a-sweep",
+        "sweep",
+        ["sweep", "--resume", "{tmp}"],
+        ["not a sweep directory"],
+    ),
+    Bad(
+        "sweep-bad-scheduler-address",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}", "--scheduler", "notanaddress"],
+        ["--scheduler", "cannot connect to notanaddress"],
+        {"s.toml": sweep_toml(GRID), "tiny.toml": "@tiny"},
+    ),
+]
+
+
+# ---------------------------------------------------------------- file makers
+
+
+@pytest.fixture(scope="module")
+def result_bytes(tmp_path_factory) -> bytes:
+    """A real (tiny) result.nc."""
+    config = load_config(PAPER, {"contact.nodes": 60, "simulation.steps_per_revolution": 60})
+    path = tmp_path_factory.mktemp("result") / "result.nc"
+    write_netcdf(Simulation(config).run().dataset, path)
+    return path.read_bytes()
+
+
+def materialise(tmp: Path, files: dict[str, str | bytes], result: bytes) -> None:
+    import xarray as xr
+
+    for name, content in files.items():
+        path = tmp / name
+        if content == "@tiny":
+            path.write_text(tiny_toml(), encoding="utf-8")
+        elif content == "@config":
+            path.write_text(load_config(PAPER).to_toml(), encoding="utf-8")
+        elif content == "@result":
+            path.write_bytes(result)
+        elif content == "@truncated-result":
+            path.write_bytes(result[: len(result) // 3])
+        elif content == "@foreign-netcdf":
+            xr.Dataset({"a": ("x", [1.0, 2.0])}).to_netcdf(path, engine="h5netcdf")
+        elif isinstance(content, bytes):
+            path.write_bytes(content)
+        else:
+            path.write_text(content, encoding="utf-8")
+
+
+def expand(argv: list[str], tmp: Path, out: Path) -> list[str]:
+    return [a.format(tmp=tmp, out=out, paper=PAPER) for a in argv]
+
+
+def run_cli(capsys, argv: list[str]) -> tuple[int, str, str]:
+    try:
+        main(argv)
+        code = 0
+    except SystemExit as exc:
+        code = exc.code if isinstance(exc.code, int) else 1
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+def files_in(folder: Path) -> list[Path]:
+    return [p for p in folder.rglob("*") if p.is_file()] if folder.exists() else []
+
+
+# ---------------------------------------------------------------- the catalogue
+
+
+def test_catalogue_is_large_enough():
+    assert len(CASES) >= 30
+    assert len({c.id for c in CASES}) == len(CASES)
+    assert {c.area for c in CASES} == {"config", "run", "cli", "data", "sweep"}
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
+def test_bad_input(case: Bad, tmp_path, capsys, result_bytes):
+    if case.needs() not in COMMANDS:
+        pytest.skip(f"no `jointwear {case.needs()}` command yet")
+    materialise(tmp_path, case.files, result_bytes)
+    before = {p for p in files_in(tmp_path)}
+    out = tmp_path / "out"
+    argv = expand(case.argv, tmp_path, out)
+    if case.area == "run" and "--out" not in argv:
+        argv += ["--out", str(out), "--json", "--no-plots", "--quiet"]
+    code, stdout, stderr = run_cli(capsys, argv)
+    assert code == 2, stderr
+    assert stdout == ""
+    assert stderr.endswith("\n")
+    assert stderr.count("\n") == 1, stderr
+    assert stderr.startswith("error: ")
+    assert "Traceback" not in stderr
+    for fragment in case.expect:
+        assert fragment in stderr, f"{fragment!r} not in {stderr!r}"
+    # nothing written: no results, no checkpoints, no temporary files
+    assert files_in(out) == []
+    assert {p for p in files_in(tmp_path)} == before
+
+
+# ---------------------------------------------------------------- real processes
+
+
+SUBPROCESS_CASES = [
+    "mass-as-length",
+    "wear-through",
+    *(
+        pytest.param(name, marks=pytest.mark.slow)
+        for name in ("plot-garbage-netcdf", "unknown-option", "sweep-unknown-config-key")
+    ),
+]
+
+
+@pytest.mark.parametrize("case_id", SUBPROCESS_CASES)
+def test_bad_input_in_a_real_process(case_id, tmp_path, result_bytes):
+    case = next(c for c in CASES if c.id == case_id)
+    materialise(tmp_path, case.files, result_bytes)
+    out = tmp_path / "out"
+    argv = expand(case.argv, tmp_path, out)
+    if case.area == "run":
+        argv += ["--out", str(out), "--json", "--no-plots"]
+    done = subprocess.run(
+        [sys.executable, "-m", "jointwear", *argv],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=120,
+    )
+    assert done.returncode == 2, done.stderr
+    assert done.stdout == ""
+    lines = done.stderr.splitlines()
+    assert len(lines) == 1, done.stderr
+    assert lines[0].startswith("error: ")
+    assert all(fragment in lines[0] for fragment in case.expect)
+    assert files_in(out) == []
+
+
+def test_debug_shows_the_traceback(capsys):
+    with pytest.raises(JointwearError, match="joint.clearance"):
+        main(["--debug", "run", str(PAPER), "--set", "joint.clearance=5 kg"])
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "jointwear",
+            "--debug",
+            "run",
+            str(PAPER),
+            "--set",
+            "joint.clearance=5 kg",
+        ],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=120,
+    )
+    assert "Traceback" in done.stderr
+    assert "ConfigError" in done.stderr
+
+
+def test_internal_errors_exit_1(monkeypatch, capsys):
+    import jointwear.simulation
+
+    def broken(self, *args, **kwargs):
+        raise ZeroDivisionError("a bug")
+
+    monkeypatch.setattr(jointwear.simulation.Simulation, "run", broken)
+    code, _, stderr = run_cli(capsys, ["run", str(PAPER)])
+    assert code == 1
+    assert stderr.startswith("internal error: ZeroDivisionError: a bug")
+    assert "--debug" in stderr
