@@ -40,7 +40,10 @@ class RootResult:
     iterations : ndarray of int
         Function evaluations used by each problem.
     converged : ndarray of bool
-        ``|residual| <= tolerance`` reached.
+        ``|residual| <= tolerance`` reached, or the root located to round-off:
+        the bracket collapsed to a few ulps of ``x`` with
+        ``|residual| <= 2 |f'(x)| * bracket width`` (a stiff equation where one
+        ulp of ``x`` moves ``f`` by more than the tolerance).
     """
 
     x: FloatArray
@@ -90,27 +93,46 @@ def bracketed_newton(
     iterations = np.zeros(size, dtype=np.int64)
     converged = np.zeros(size, dtype=bool)
     active = np.arange(size)
+    eps = np.finfo(float).eps
     for _ in range(max_iterations):
         if active.size == 0:
             break
-        xa = x[active]
+        # while every problem is active (the costly first iterations) no gathers
+        whole = active.size == size
+        xa = x.copy() if whole else x[active]
         f, df, scale = func(xa, active)
-        iterations[active] += 1
-        residual[active] = f
-        done = np.abs(f) <= np.maximum(atol, rtol * scale)
-        converged[active[done]] = True
+        if whole:
+            iterations += 1
+            residual[:] = f
+            lo_old, hi_old = lo, hi
+        else:
+            iterations[active] += 1
+            residual[active] = f
+            lo_old, hi_old = lo[active], hi[active]
+        size_f = np.abs(f)
+        done = size_f <= np.maximum(rtol * scale, atol)
         # shrink the bracket with the sign of the residual
         below = f < 0
-        lo_a = np.where(below, xa, lo[active])
-        hi_a = np.where(below, hi[active], xa)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        lo_a = np.where(below, xa, lo_old)
+        hi_a = np.where(below, hi_old, xa)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             step = xa - f / df
-        inside = np.isfinite(step) & (step > lo_a) & (step < hi_a)
+        # (a NaN or infinite step compares False: bisection)
+        inside = (step > lo_a) & (step < hi_a)
         new_x = np.where(inside, step, 0.5 * (lo_a + hi_a))
         # a bracket that has collapsed to round-off cannot improve any further
-        stalled = (hi_a - lo_a) <= 4 * np.finfo(float).eps * np.maximum(np.abs(xa), 1e-300)
-        lo[active], hi[active] = lo_a, hi_a
-        keep = ~done & ~stalled
+        bracket = hi_a - lo_a
+        ulp = eps * np.abs(xa)
+        stalled = bracket <= 4 * np.maximum(ulp, eps * 1e-300)
+        # ... and if the residual is what a step of that size explains, x is the root
+        # to machine precision even though |f| > tolerance (stiff f: f' * ulp(x) > atol)
+        resolved = stalled & ~done & (size_f <= 2 * np.abs(df) * np.maximum(bracket, ulp))
+        converged[active[done | resolved]] = True
+        if whole:
+            lo, hi = lo_a, hi_a
+        else:
+            lo[active], hi[active] = lo_a, hi_a
+        keep = ~(done | stalled)
         x[active[keep]] = new_x[keep]
         active = active[keep]
     return RootResult(x=x, residual=residual, iterations=iterations, converged=converged)

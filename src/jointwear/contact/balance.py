@@ -25,13 +25,15 @@ double precision can resolve in a sum of spring forces.
 
 from __future__ import annotations
 
+import math
+import threading
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from jointwear.contact.laws import CallableSpringLaw, SpringLaw
+from jointwear.contact.laws import CallableSpringLaw, PowerLaw, SpringLaw
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ContactError, ConvergenceError
 from jointwear.geometry.contour import BushingContour, Pin
@@ -41,6 +43,89 @@ __all__ = ["solve_contact"]
 
 FloatArray = NDArray[np.float64]
 _EPS = np.finfo(float).eps
+
+
+#: window geometry per (nodes, width, azimuths): a simulation solves the same loads on a new
+#: contour every revolution, so the trigonometry and index arithmetic are done once
+_GEOMETRY_CACHE: dict[tuple[int, int, bytes], _Geometry] = {}
+_GEOMETRY_CACHE_SIZE = 4
+#: largest window (loads x nodes) whose geometry is cached (about 10 arrays of 2 MB)
+_GEOMETRY_CACHE_ELEMENTS = 2**18
+#: per-thread scratch buffers of the residual (reused: no page faults per evaluation);
+#: buffers larger than this many elements are not kept between solves
+_SCRATCH = threading.local()
+_SCRATCH_KEEP_ELEMENTS = 2**18
+
+
+class _Geometry:
+    """Contour-independent part of a window: node indices and angles about each load line."""
+
+    def __init__(self, nodes: int, azimuth: FloatArray, width: int) -> None:
+        dtheta = 2 * np.pi / nodes
+        m = azimuth.size
+        wrapped = np.mod(azimuth, 2 * np.pi)
+        centre = np.rint(wrapped / dtheta).astype(np.int64)
+        offsets = np.arange(-width, width + 1)
+        shift = centre * dtheta - wrapped
+        self.wrapped = wrapped
+        self.index = (centre[:, None] + offsets) % nodes
+        #: flat positions of the window in an (M, N) array
+        self.flat = (np.arange(m)[:, None] * nodes + self.index).ravel()
+        self.phi = offsets * dtheta + shift[:, None]
+        # angle addition: trig on (M,) and (2W+1,) vectors instead of the (M, 2W+1) block
+        cos_o, sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
+        cos_s, sin_s = np.cos(shift)[:, None], np.sin(shift)[:, None]
+        self.cos = cos_o * cos_s - sin_o * sin_s
+        self.sin = sin_o * cos_s + cos_o * sin_s
+        self.sin2 = self.sin**2
+        self.left = self.phi > 0
+        self.right = self.phi < 0
+        self.unit = np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
+        self.unit_perp = np.stack([-self.unit[:, 1], self.unit[:, 0]], axis=1)
+        for array in vars(self).values():
+            array.setflags(write=False)
+        self._scaled: dict[tuple[float, int], FloatArray] = {}
+
+    def scaled_cos(self, factor: Any, power: int = 1) -> FloatArray | None:
+        """``factor * cos**power`` for a scalar factor (cached), else None."""
+        if isinstance(factor, np.ndarray):
+            return None
+        key = (float(factor), power)
+        scaled = self._scaled.get(key)
+        if scaled is None:
+            if len(self._scaled) >= 8:
+                self._scaled.clear()
+            scaled = key[0] * self.cos if power == 1 else key[0] * self.cos**power
+            scaled.setflags(write=False)
+            self._scaled[key] = scaled
+        return scaled
+
+
+def _geometry(nodes: int, azimuth: FloatArray, width: int) -> _Geometry:
+    if azimuth.size * (2 * width + 1) > _GEOMETRY_CACHE_ELEMENTS:
+        return _Geometry(nodes, azimuth, width)  # too big to keep around
+    key = (nodes, width, azimuth.tobytes())
+    geometry = _GEOMETRY_CACHE.get(key)
+    if geometry is None:
+        geometry = _Geometry(nodes, azimuth, width)
+        while len(_GEOMETRY_CACHE) >= _GEOMETRY_CACHE_SIZE:
+            _GEOMETRY_CACHE.pop(next(iter(_GEOMETRY_CACHE)), None)
+        _GEOMETRY_CACHE[key] = geometry
+    return geometry
+
+
+def _scratch(name: str, count: int, shape: tuple[int, int]) -> list[FloatArray]:
+    """``count`` scratch arrays of ``shape``, reused across calls in this thread."""
+    size = shape[0] * shape[1]
+    if size > _SCRATCH_KEEP_ELEMENTS:  # a big problem: its own buffers, freed after the solve
+        return list(np.empty((count, *shape)))
+    store = getattr(_SCRATCH, name, None)
+    if store is None or store.shape[0] < count or store.shape[1] < size:
+        rows = max(count, 0 if store is None else store.shape[0])
+        cols = max(size, 0 if store is None else store.shape[1])
+        store = np.empty((rows, cols))
+        setattr(_SCRATCH, name, store)
+    return [store[i, :size].reshape(shape) for i in range(count)]
 
 
 class _Window:
@@ -54,21 +139,12 @@ class _Window:
         law: SpringLaw,
         pin_radius: float,
     ) -> None:
-        n, dtheta = contour.nodes, contour.dtheta
+        geometry = _geometry(contour.nodes, azimuth, width)
+        self.geometry = geometry
         self.width = width
-        wrapped = np.mod(azimuth, 2 * np.pi)
-        centre = np.rint(wrapped / dtheta).astype(np.int64)
-        offsets = np.arange(-width, width + 1)
-        shift = centre * dtheta - wrapped
-        self.index = (centre[:, None] + offsets) % n
-        self.phi = offsets * dtheta + shift[:, None]
-        # angle addition: trig on (M,) and (2W+1,) vectors instead of the (M, 2W+1) block
-        cos_o, sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
-        cos_s, sin_s = np.cos(shift)[:, None], np.sin(shift)[:, None]
-        self.cos = cos_o * cos_s - sin_o * sin_s
-        self.sin = sin_o * cos_s + cos_o * sin_s
-        self.sin2 = self.sin**2
-        self.centre_radius = contour.radius_at(wrapped)
+        self.index, self.phi = geometry.index, geometry.phi
+        self.cos, self.sin, self.sin2 = geometry.cos, geometry.sin, geometry.sin2
+        self.centre_radius = contour.radius_at(geometry.wrapped)
         if law.symmetric:
             self.radius = np.broadcast_to(self.centre_radius[:, None], self.phi.shape)
         else:
@@ -79,7 +155,222 @@ class _Window:
         if law.force_area is not None:
             self.area: Any = law.force_area
         else:
-            self.area = self.radius * (dtheta * contour.axial_length)
+            self.area = self.radius * (contour.dtheta * contour.axial_length)
+
+
+class _PaperResidual:
+    """Residual of the paper balance for :func:`bracketed_newton`, fused and allocation-free.
+
+    For pin displacement ``s`` along the load the depth of window node ``j`` is
+    ``s cos(phi_j) - g_j - s^2 sin^2(phi_j) / (sqrt(R_p^2 - s^2 sin^2(phi_j)) + R_p)``
+    (``g_j = r_j - R_p``); the residual is ``sum_j p(depth_j) A_j cos(phi_j) - F`` and
+    its derivative ``sum_j p'(depth_j) A_j cos(phi_j) (cos(phi_j) - s sin^2(phi_j) / root)``.
+
+    Speed: every array operation writes into per-thread scratch buffers of at most
+    ``_BLOCK`` elements (rows are processed in blocks: fresh temporaries of a few
+    hundred kB cost page faults, the ``sys`` time seen in profiles, and blocks stay
+    in cache); power laws with exponent 1 or 1.5 (Winkler, NLCP) take a fused path
+    (one ``sqrt`` serves force and stiffness); the sums are ``einsum`` contractions
+    (no BLAS). The derivative is computed only for loads that the residual shows are
+    not converged yet (the last evaluation of a warm-started load is just the
+    check). The depth and ``pressure / coefficient`` of every load's last evaluation
+    are kept, so the final state is read off instead of recomputed. A call for most
+    of the batch evaluates the whole batch (loads already converged are re-evaluated
+    at their root, bit for bit) rather than gathering rows.
+    """
+
+    _BLOCK = 2**16
+
+    def __init__(
+        self,
+        win: _Window,
+        law: SpringLaw,
+        pin_radius: float,
+        load: FloatArray,
+        tolerance: float,
+        rtol: float = 8 * _EPS,
+    ):
+        m, k = win.cos.shape
+        self.m = m
+        self.block = max(1, min(m, self._BLOCK // k))
+        self.law = law
+        self.radius_pin, self.r_pin2 = pin_radius, pin_radius**2
+        self.cos, self.sin2, self.gap = win.cos, win.sin2, win.gap
+        self.load = load
+        self.atol, self.rtol = tolerance, rtol
+        fast = isinstance(law, PowerLaw) and law.exponent in (1.0, 1.5)
+        self.exponent = law.exponent if fast else None
+        self.coefficient = law.coefficient if fast else 1.0
+        #: block buffers: 4 for the arithmetic, 8 for gathered rows
+        self.work = _scratch("block", 12, (self.block, k))
+        #: depth and pressure / coefficient of every load's last evaluation
+        self.depth, self.power = _scratch("batch", 2, (m, k))
+        #: coefficient * A_j * cos(phi_j): the pressure law's constant folded in
+        factor = self.coefficient * win.area
+        weight = win.geometry.scaled_cos(factor)
+        self.weight = weight if weight is not None else factor * win.cos
+        #: coefficient * A_j * cos(phi_j)^2 (the stiffness along the load)
+        weight_cos = win.geometry.scaled_cos(factor, power=2)
+        self.weight_cos = weight_cos if weight_cos is not None else self.weight * win.cos
+        self.total = np.zeros(m)
+        self.offset = np.zeros(m)
+
+    def __call__(self, s: FloatArray, rows: NDArray[np.intp]):
+        n = rows.size
+        load = self.load[rows]
+        self.offset[rows] = s
+        if 2 * n >= self.m:
+            # (most of) the whole batch: evaluate all of it, no gather
+            wanted = None
+            if n < self.m:
+                wanted = np.zeros(self.m, dtype=bool)
+                wanted[rows] = True
+            total, slope = self._blocks(self.offset, None, wanted)
+            self.total[:] = total
+            if n < self.m:
+                total, slope = total[rows], slope[rows]
+        else:
+            total, slope = self._blocks(s, rows, None)
+            self.total[rows] = total
+        # every force term is >= 0 (|phi| <= 90 deg in the window): sum|f_j| = total, the
+        # scale of the round-off floor 8 eps sum|f_j| of the convergence test
+        return total - load, slope, total
+
+    def _blocks(self, s, rows, wanted):
+        """Evaluate rows ``rows`` (all if None) block by block."""
+        n = s.size
+        total = np.empty(n)
+        slope = np.full(n, np.nan)
+        gathered = self.work[4:]
+        for start in range(0, n, self.block):
+            stop = min(n, start + self.block)
+            if rows is None:
+                part = slice(start, stop)
+                arrays = (
+                    self.cos[part],
+                    self.sin2[part],
+                    self.gap[part],
+                    self.weight[part],
+                    self.weight_cos[part],
+                    self.depth[part],
+                    self.power[part],
+                )
+                load = self.load[part]
+                keep = None if wanted is None else wanted[part]
+            else:
+                index = rows[start:stop]
+                size = index.size
+                arrays = tuple(buffer[:size] for buffer in gathered[:7])
+                for source, target in zip(
+                    (self.cos, self.sin2, self.gap, self.weight, self.weight_cos),
+                    arrays,
+                    strict=False,
+                ):
+                    np.take(np.broadcast_to(source, self.cos.shape), index, axis=0, out=target)
+                load = self.load[index]
+                keep = None
+            total[start:stop], slope[start:stop] = self._evaluate(
+                s[start:stop], load, *arrays, keep
+            )
+            if rows is not None:
+                self.depth[index] = arrays[5]
+                self.power[index] = arrays[6]
+        return total, slope
+
+    def _evaluate(self, s, load, cos, sin2, gap, weight, weight_cos, depth, power, keep):
+        """Totals of a block, and slopes of its rows (``keep``: those asked for) that need one."""
+        n = s.size
+        lat, root, tmp, pen = (w[:n] for w in self.work[:4])
+        s_col = s[:, None]
+        np.multiply(sin2, (s * s)[:, None], out=lat)  # s^2 sin^2
+        np.subtract(self.r_pin2, lat, out=root)
+        np.sqrt(root, out=root)
+        np.add(root, self.radius_pin, out=tmp)
+        np.divide(lat, tmp, out=tmp)  # pin curvature term
+        np.multiply(cos, s_col, out=depth)
+        depth -= gap
+        depth -= tmp
+        np.maximum(depth, 0.0, out=pen)
+        if self.exponent == 1.5:
+            np.sqrt(pen, out=tmp)  # kept for the stiffness 1.5 sqrt(pen)
+            np.multiply(tmp, pen, out=power)
+            total = np.einsum("ij,ij->i", power, weight)
+        elif self.exponent == 1.0:
+            power[...] = pen
+            total = np.einsum("ij,ij->i", power, weight)
+        else:
+            total = np.einsum("ij,ij->i", self.law.pressure(pen), weight)
+        # the derivative only where the residual is not yet within tolerance
+        need = np.abs(total - load) > np.maximum(self.atol, self.rtol * total)
+        if keep is not None:
+            need &= keep
+        slope = np.full(n, np.nan)
+        if not need.any():
+            return total, slope
+        if need.all():
+            sel, s_sel = slice(None), s
+        else:
+            sel = np.flatnonzero(need)
+            s_sel = s[sel]
+            lat, root, pen, tmp = lat[sel], root[sel], pen[sel], tmp[sel]
+            weight, weight_cos = weight[sel], weight_cos[sel]
+        # d depth / ds = cos - s sin^2 / root: sum_j k_j cos_j^2 - sum_j k_j (lat_j / root_j) / s,
+        # k_j = p'(depth_j) A_j (weight = A cos), the first sum without a pass of its own
+        np.divide(lat, root, out=lat)
+        np.multiply(lat, weight, out=lat)
+        if self.exponent == 1.5:
+            along = np.einsum("ij,ij->i", tmp, weight_cos)
+            across = np.einsum("ij,ij->i", tmp, lat)
+            slope[sel] = 1.5 * (along - across / s_sel)
+        elif self.exponent == 1.0:
+            np.greater(pen, 0.0, out=root)  # 1.0 where in contact
+            along = np.einsum("ij,ij->i", root, weight_cos)
+            across = np.einsum("ij,ij->i", root, lat)
+            slope[sel] = along - across / s_sel
+        else:
+            derivative = self.law.pressure_derivative(pen)
+            along = np.einsum("ij,ij->i", derivative, weight_cos)
+            across = np.einsum("ij,ij->i", derivative, lat)
+            slope[sel] = along - across / s_sel
+        return total, slope
+
+    def pressure(self) -> FloatArray:
+        """Pressure on the window at every load's last evaluation [Pa]."""
+        if self.exponent is None:
+            return self.law.pressure(np.maximum(self.depth, 0.0))
+        return np.multiply(self.power, self.coefficient, out=self.power)
+
+
+def _initial_guess(
+    win: _Window,
+    law: SpringLaw,
+    contour: BushingContour,
+    pin_radius: float,
+    load: FloatArray,
+    lower: FloatArray,
+    upper: FloatArray,
+) -> FloatArray:
+    """Pin displacement estimated from a conformal-contact model, for a cold start.
+
+    A power law ``p = k delta^n`` on a circle of clearance ``c``, small angles: the
+    depth is ``delta_0 (1 - phi^2 / alpha^2)`` with ``alpha^2 = 2 delta_0 / (c + delta_0)``,
+    so ``F = (A k / dtheta) B(n) delta_0^n alpha``, ``B(n) = sqrt(pi) Gamma(n+1) /
+    Gamma(n+3/2)``. Two fixed-point passes for ``delta_0``; only a starting point for Newton.
+    """
+    if not isinstance(law, PowerLaw):
+        return 0.5 * (lower + upper)
+    n = law.exponent
+    clearance = np.maximum(win.centre_radius - pin_radius, 1e-12 * pin_radius)
+    if law.force_area is not None:
+        per_radian = law.force_area / contour.dtheta
+    else:
+        per_radian = win.centre_radius * contour.axial_length
+    shape = math.sqrt(math.pi) * math.gamma(n + 1) / math.gamma(n + 1.5)
+    scale = load / (law.coefficient * per_radian * shape)
+    delta = (scale * np.sqrt(0.5 * clearance)) ** (1 / (n + 0.5))
+    for _ in range(2):
+        delta = (scale * np.sqrt(0.5 * (clearance + delta))) ** (1 / (n + 0.5))
+    return np.clip(clearance + delta, lower, upper)
 
 
 def _law_from(model: SpringLaw | Callable[..., Any]) -> SpringLaw:
@@ -134,7 +425,9 @@ def solve_contact(
         (a previous solution), for warm starts.
     window : int, optional
         Half-width of the node window in nodes; widened automatically if the
-        contact reaches its edge. Default: 90 degrees (always sufficient).
+        contact reaches its edge or a node beyond it could touch (non-contiguous
+        contact on worn contours). Default: 90 degrees (always sufficient in paper
+        mode; 2-D equilibrium may widen it up to 180 degrees).
 
     Returns
     -------
@@ -153,6 +446,9 @@ def solve_contact(
         )
     contour.check_pin(pin)
     full = contour.nodes // 4
+    # paper mode: the pin moves along the load, nodes > 90 deg away never touch; in 2-D
+    # equilibrium the pin moves sideways too, so the window may have to grow further
+    limit = full if balance == "paper" else max(full, (contour.nodes - 1) // 2)
     if initial_offset is not None:
         guess = np.asarray(initial_offset, dtype=float).ravel()
         width = full if window is None else int(min(max(window, 2), full))
@@ -160,7 +456,7 @@ def solve_contact(
         # warm start from neighbours: solve every 8th load (recursively, so a long
         # batch is solved coarse-to-fine), interpolate the rest, and size the node
         # window from the widest coarse contact
-        coarse = np.arange(0, load.size, 8)
+        coarse = np.unique(np.append(np.arange(0, load.size, 8), load.size - 1))
         rough = solve_contact(
             contour,
             pin,
@@ -178,12 +474,15 @@ def solve_contact(
             rough.eccentricity,
             np.stack([np.cos(azimuth[coarse]), np.sin(azimuth[coarse])], axis=1),
         )
-        guess = np.interp(np.arange(load.size), coarse, along)
+        guess = _cubic_interpolation(coarse, along, load.size)
         widest = max(rough.half_angle_left.max(), rough.half_angle_right.max())
-        width = int(min(full, np.ceil(1.25 * widest / contour.dtheta) + 3))
+        width = int(min(full, np.ceil(1.1 * widest / contour.dtheta) + 2))
     else:
         guess = None
         width = full if window is None else int(min(max(window, 2), full))
+    # whole multiples of 4 nodes: the cached window geometry is reused while the contact
+    # width drifts from one solve to the next
+    width = min(-(-width // 4) * 4, full)
     while True:
         win = _Window(contour, azimuth, width, law, pin.radius)
         solution, edge = _solve_window(
@@ -199,9 +498,35 @@ def solve_contact(
             max_penetration,
             guess,
         )
-        if not edge or width >= full:
+        if width >= limit:
             return solution
-        width = min(2 * width, full)
+        # contact need not be contiguous (worn contours): a node beyond a gap in the contact
+        # may touch although the window's edge nodes do not; the reach bound finds it
+        needed = _reach_width(contour, pin, law, azimuth, solution.eccentricity)
+        if not edge and needed <= width:
+            return solution
+        width = int(min(max(needed, width + 1), limit))
+
+
+def _reach_width(contour, pin, law, azimuth, eccentricity) -> int:
+    """Window half-width [nodes] holding every node that can touch the pin at ``eccentricity``.
+
+    The penetration of node ``j`` is at most ``u_j . e - (r_j - R_p)``, so only nodes
+    within ``arccos(g_min / |e|)`` of the pin's direction can touch, ``g_min`` the
+    smallest radial gap. A window of half-width ``W`` holds every node within
+    ``(W - 1/2) dtheta`` of the load line.
+    """
+    if law.symmetric:  # springs on the circle through the compression centre
+        gap = contour.radius_at(np.mod(azimuth, 2 * np.pi)) - pin.radius
+    else:
+        gap = contour.radius.min() - pin.radius
+    size = np.hypot(eccentricity[:, 0], eccentricity[:, 1])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        reach = np.arccos(np.clip(gap / size, -1.0, 1.0))
+    reach = np.where(size > gap, reach, 0.0)
+    direction = np.arctan2(eccentricity[:, 1], eccentricity[:, 0])
+    off = np.abs(np.angle(np.exp(1j * (direction - azimuth))))
+    return int(np.ceil(np.max(off + reach) / contour.dtheta + 0.5)) + 1
 
 
 def _solve_window(
@@ -224,30 +549,23 @@ def _solve_window(
     if max_penetration is not None:
         limit = np.minimum(limit, win.centre_radius - radius_pin + max_penetration)
     upper = np.broadcast_to(limit, lower.shape).astype(float)
+    # the ray geometry needs |e| < R_p: a radial gap as wide as the pin is out of its reach
+    out_of_reach = (lower >= 0.999 * radius_pin) & (load > 0)
+    if np.any(out_of_reach):
+        i = int(np.flatnonzero(out_of_reach)[0])
+        raise ContactError(
+            f"load: {load[i]:.6g} N at {np.degrees(azimuth[i]):.4g} deg: the bushing is out of "
+            f"the pin's reach (radial gap {lower[i]:.3g} m >= pin radius {radius_pin:.3g} m)"
+        )
     upper = np.maximum(upper, lower)
     area = win.area
-    area_is_array = isinstance(area, np.ndarray)
+    geometry = win.geometry
 
-    everything = load.size
-
-    def residual(s: FloatArray, rows: NDArray[np.intp]):
-        if rows.size == everything:  # no gather while the whole batch is active
-            cos, sin2, gap, a = win.cos, win.sin2, win.gap, area
-        else:
-            cos, sin2, gap = win.cos[rows], win.sin2[rows], win.gap[rows]
-            a = area[rows] if area_is_array else area
-        s_col = s[:, None]
-        lateral2 = s_col**2 * sin2
-        root = np.sqrt(r_pin2 - lateral2)
-        depth = s_col * cos - gap - lateral2 / (root + radius_pin)
-        penetration = np.maximum(depth, 0.0)
-        force = law.pressure(penetration) * a * cos
-        stiffness = law.pressure_derivative(penetration) * a * cos * (cos - s_col * sin2 / root)
-        total = force.sum(axis=1)
-        return total - load[rows], stiffness.sum(axis=1), np.abs(force).sum(axis=1) + load[rows]
-
+    residual = _PaperResidual(win, law, radius_pin, load, tolerance)
     if guess is None:
-        guess = 0.5 * (lower + upper)
+        guess = _initial_guess(win, law, contour, radius_pin, load, lower, upper)
+    # no load: the pin just touches (a tolerance-sized contact would be arbitrary)
+    guess = np.where(load > 0, guess, lower)
     root = bracketed_newton(residual, guess, lower, upper, tolerance, max_iterations=max_iterations)
     offset = root.x
     iterations = root.iterations
@@ -257,33 +575,33 @@ def _solve_window(
     across = np.zeros_like(offset)
     if balance == "equilibrium":
         along, across, extra = _equilibrium(
-            win, law, radius_pin, load, along, tolerance, max_iterations
+            win, law, radius_pin, load, along, tolerance, max_iterations, lower, upper
         )
         iterations = iterations + extra
-
-    # final state on the window
-    a_col, b_col = along[:, None], across[:, None]
-    proj = win.cos * a_col + win.sin * b_col
-    cross = win.cos * b_col - win.sin * a_col
-    depth = proj - win.gap - cross**2 / (np.sqrt(r_pin2 - cross**2) + radius_pin)
-    penetration = np.maximum(depth, 0.0)
-    pressure_w = law.pressure(penetration)
-    force = pressure_w * area
-    normal = (force * win.cos).sum(axis=1)
-    tangential = (force * win.sin).sum(axis=1)
+        # final state on the window
+        a_col, b_col = along[:, None], across[:, None]
+        proj = win.cos * a_col + win.sin * b_col
+        cross = win.cos * b_col - win.sin * a_col
+        depth = proj - win.gap - cross**2 / (np.sqrt(r_pin2 - cross**2) + radius_pin)
+        pressure_w = law.pressure(np.maximum(depth, 0.0))
+        normal = _resultant(pressure_w, area, win.cos)
+    else:
+        # every load's last residual evaluation was at its root: reuse its depth and sum
+        depth = residual.depth
+        pressure_w = residual.pressure()
+        normal = residual.total.copy()
+    tangential = _resultant(pressure_w, area, win.sin)
 
     m = load.size
     pressure = np.zeros((m, contour.nodes))
-    pressure[np.arange(m)[:, None], win.index] = pressure_w
+    pressure.reshape(-1)[geometry.flat] = pressure_w.reshape(-1)
     contact = depth > 0
     left, right = _half_angles(win, depth, contact)
-    springs_left = (contact & (win.phi > 0)).sum(axis=1)
-    springs_right = (contact & (win.phi < 0)).sum(axis=1)
-    edge = bool(np.any(contact[:, 0]) or np.any(contact[:, -1]))
+    springs_left = np.count_nonzero(contact & geometry.left, axis=1)
+    springs_right = np.count_nonzero(contact & geometry.right, axis=1)
+    edge = bool(contact[:, 0].any() or contact[:, -1].any())
 
-    w = np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
-    w_perp = np.stack([-np.sin(azimuth), np.cos(azimuth)], axis=1)
-    eccentricity = along[:, None] * w + across[:, None] * w_perp
+    eccentricity = along[:, None] * geometry.unit + across[:, None] * geometry.unit_perp
     centre_penetration = (
         along
         - (win.centre_radius - radius_pin)
@@ -297,12 +615,42 @@ def _solve_window(
         tangential_force=tangential,
         half_angle_left=left,
         half_angle_right=right,
-        springs_left=springs_left,
-        springs_right=springs_right,
+        springs_left=springs_left.astype(np.int64),
+        springs_right=springs_right.astype(np.int64),
         iterations=iterations,
         model=law.name,
     )
     return solution, edge
+
+
+def _resultant(pressure: FloatArray, area: Any, direction: FloatArray) -> FloatArray:
+    """``sum_j p_j A_j direction_j`` per load (an einsum: one pass, no BLAS)."""
+    if isinstance(area, np.ndarray):
+        return np.einsum("ij,ij,ij->i", pressure, area, direction)
+    return area * np.einsum("ij,ij->i", pressure, direction)
+
+
+def _cubic_interpolation(known: NDArray[np.intp], values: FloatArray, size: int) -> FloatArray:
+    """Local 4-point Lagrange interpolation of ``values`` given at indices ``known``.
+
+    Evaluated at ``0 .. size-1``; exact at the known indices. Warm starts for the loads
+    between solved ones: the error is O(h^4) on a smooth load history, against O(h^2)
+    for linear interpolation, which saves Newton steps.
+    """
+    if known.size < 4:
+        return np.interp(np.arange(size), known, values)
+    x = np.arange(size, dtype=float)
+    start = np.clip(np.searchsorted(known, x) - 2, 0, known.size - 4)
+    stencil = start[:, None] + np.arange(4)
+    nodes, ys = known[stencil].astype(float), values[stencil]
+    result = np.zeros(size)
+    for i in range(4):
+        weight = np.ones(size)
+        for j in range(4):
+            if j != i:
+                weight *= (x - nodes[:, j]) / (nodes[:, i] - nodes[:, j])
+        result += weight * ys[:, i]
+    return result
 
 
 def _check(converged, offset, upper, load, azimuth, residual) -> None:
@@ -352,8 +700,14 @@ def _equilibrium(
     along: FloatArray,
     tolerance: float,
     max_iterations: int,
+    lower: FloatArray,
+    upper: FloatArray,
 ):
-    """2-D Newton with backtracking on the pin position in the load frame."""
+    """2-D Newton with backtracking on the pin position in the load frame.
+
+    Where the Newton iteration stalls (a singular Jacobian: a single spring in contact
+    can only push along its own ray), :func:`_equilibrium_by_direction` takes over.
+    """
     r_pin2 = radius_pin**2
     area = win.area
     area_is_array = isinstance(area, np.ndarray)
@@ -371,10 +725,11 @@ def _equilibrium(
         force = law.pressure(penetration) * ar
         g_n = (force * cos).sum(axis=1) - load[rows]
         g_t = (force * sin).sum(axis=1)
-        scale = np.abs(force).sum(axis=1) + load[rows]
+        scale = np.abs(force).sum(axis=1)  # the round-off floor is 8 eps sum|f_j|
         return g_n, g_t, scale, (penetration, cos, sin, cross / root, ar)
 
     active = np.arange(load.size)
+    failed = []
     for _ in range(max_iterations):
         if active.size == 0:
             break
@@ -397,6 +752,12 @@ def _equilibrium(
         bad = ~np.isfinite(step_a) | ~np.isfinite(step_b)
         step_a[bad] = 0.0
         step_b[bad] = 0.0
+        # a residual that one ulp of the pin position explains (stiff springs; a single
+        # spring makes J singular), or a Newton step below that round-off: exact to round-off
+        position = _EPS * np.hypot(a, b)
+        done |= norm <= position * (np.abs(j11) + np.abs(j12) + np.abs(j21) + np.abs(j22))
+        step = np.hypot(step_a, step_b)
+        done |= ~bad & (step <= position)
         # backtracking: accept the first fraction that reduces the residual norm
         lam = np.ones_like(a)
         pending = ~done & ~bad
@@ -404,28 +765,127 @@ def _equilibrium(
             if not pending.any():
                 break
             rows = active[pending]
-            gn2, gt2, _, _ = state(
-                a[pending] + lam[pending] * step_a[pending],
-                b[pending] + lam[pending] * step_b[pending],
-                rows,
-            )
+            with np.errstate(invalid="ignore", over="ignore"):  # a wild step may leave the pin
+                gn2, gt2, _, _ = state(
+                    a[pending] + lam[pending] * step_a[pending],
+                    b[pending] + lam[pending] * step_b[pending],
+                    rows,
+                )
             better = np.hypot(gn2, gt2) < norm[pending]
             idx = np.flatnonzero(pending)
             pending[idx[better]] = False
             lam[idx[~better]] *= 0.5
         along[active] = np.where(done, a, a + lam * step_a)
         across[active] = np.where(done, b, b + lam * step_b)
-        stalled = bad | (lam < 1e-8)
-        if np.any(stalled & ~done):
-            worst = np.flatnonzero(stalled & ~done)[0]
-            raise ConvergenceError(
-                f"contact: 2-D equilibrium stalled for load {load[active[worst]]:.6g} N "
-                f"(residual {norm[worst]:.3g} N)"
-            )
+        stalled = (bad | (lam < 1e-8)) & ~done
+        # no descent along a step of a few ulps: round-off noise, the position is exact
+        noise = stalled & ~bad & (step <= 16 * position)
+        done |= noise
+        stalled &= ~noise
+        failed.append(active[stalled])
+        active = active[~done & ~stalled]
+    failed.append(active)
+    rows = np.concatenate(failed)
+    if rows.size:
+        a, b, extra = _equilibrium_by_direction(
+            win, law, radius_pin, load, rows, tolerance, max_iterations, lower, upper
+        )
+        along[rows], across[rows] = a, b
+        iterations[rows] += extra
+    return along, across, iterations
+
+
+def _equilibrium_by_direction(
+    win: _Window,
+    law: SpringLaw,
+    radius_pin: float,
+    load: FloatArray,
+    rows: NDArray[np.intp],
+    tolerance: float,
+    max_iterations: int,
+    lower: FloatArray,
+    upper: FloatArray,
+):
+    """Robust 2-D equilibrium: bisection on the pin's direction, Newton on its distance.
+
+    For a direction ``chi`` of the pin (relative to the load) the distance ``s`` is found
+    as in paper mode, so that the resultant along the load equals the load; the sideways
+    resultant ``T(chi)`` then grows with ``chi`` (turning the pin towards a side loads
+    that side) and its root is bracketed within +-60 degrees and bisected. Slower than
+    Newton, but it cannot stall where a single spring touches.
+    """
+    r_pin2 = radius_pin**2
+    cos, sin, gap = win.cos[rows], win.sin[rows], win.gap[rows]
+    area = win.area[rows] if isinstance(win.area, np.ndarray) else win.area
+    target = load[rows]
+    m = rows.size
+    iterations = np.zeros(m, dtype=np.int64)
+
+    def springs(s, chi, idx):
+        c, si = np.cos(chi)[:, None], np.sin(chi)[:, None]
+        cs, sn = cos[idx], sin[idx]
+        s_col = s[:, None]
+        mu = cs * c + sn * si  # cos(theta_j - chi)
+        cross = s_col * (cs * si - sn * c)
+        root = np.sqrt(r_pin2 - cross**2)
+        depth = s_col * mu - gap[idx] - cross**2 / (root + radius_pin)
+        penetration = np.maximum(depth, 0.0)
+        a = area[idx] if isinstance(area, np.ndarray) else area
+        force = law.pressure(penetration) * a
+        slope = law.pressure_derivative(penetration) * a * (mu - cross * cross / (s_col * root))
+        return force, slope, cs, sn
+
+    def distance(chi, idx, guess):
+        """Paper-mode balance along the load for pin direction chi (rows idx)."""
+
+        def residual(s, sub):
+            force, slope, cs, _ = springs(s, chi[sub], idx[sub])
+            normal = force * cs
+            total = target[idx[sub]]
+            return normal.sum(1) - total, (slope * cs).sum(1), np.abs(normal).sum(1)
+
+        root = bracketed_newton(residual, guess, lower[rows][idx], upper[rows][idx], tolerance,
+                                max_iterations=max_iterations)
+        iterations[idx] += root.iterations
+        force, _, _, sn = springs(root.x, chi, idx)
+        scale = np.abs(force).sum(1)
+        return root.x, (force * sn).sum(1), root.converged, scale
+
+    everything = np.arange(m)
+    half = np.full(m, np.pi / 3)
+    s_lo, t_lo, _, _ = distance(-half, everything, upper[rows].copy())
+    s_hi, t_hi, _, _ = distance(half, everything, upper[rows].copy())
+    if np.any(t_lo > 0) or np.any(t_hi < 0):
+        i = int(np.flatnonzero((t_lo > 0) | (t_hi < 0))[0])
+        raise ConvergenceError(
+            f"contact: 2-D equilibrium not found for load {target[i]:.6g} N "
+            f"(no pin direction within 60 deg of the load balances it)"
+        )
+    chi_lo, chi_hi = -half, half.copy()
+    chi = np.zeros(m)
+    s = 0.5 * (s_lo + s_hi)
+    ok = np.zeros(m, dtype=bool)
+    active = everything
+    for _ in range(200):
+        if active.size == 0:
+            break
+        mid = 0.5 * (chi_lo[active] + chi_hi[active])
+        s_mid, t_mid, balanced, scale = distance(mid, active, s[active])
+        chi[active], s[active], ok[active] = mid, s_mid, balanced
+        done = balanced & (np.abs(t_mid) <= np.maximum(tolerance, 8 * _EPS * scale))
+        # T is continuous in chi: a collapsed bracket holds its root to round-off
+        done |= (chi_hi[active] - chi_lo[active]) <= 4 * _EPS * np.maximum(np.abs(mid), 1.0)
+        chi_lo[active] = np.where(t_mid < 0, mid, chi_lo[active])
+        chi_hi[active] = np.where(t_mid < 0, chi_hi[active], mid)
         active = active[~done]
     if active.size:
         raise ConvergenceError(
-            f"contact: 2-D equilibrium did not converge for {active.size} load(s) in "
-            f"{max_iterations} iterations"
+            f"contact: 2-D equilibrium did not converge for {active.size} load(s)"
         )
-    return along, across, iterations
+    if not ok.all():  # the sideways force jumps where the load cannot be carried at all
+        i = int(np.flatnonzero(~ok)[0])
+        raise ConvergenceError(
+            f"contact: 2-D equilibrium not found for load {target[i]:.6g} N: the pin would "
+            f"have to travel further than the wall or its own radius allows"
+        )
+    return s * np.cos(chi), s * np.sin(chi), iterations

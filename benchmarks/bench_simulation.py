@@ -1,0 +1,412 @@
+"""Speed of the wear simulation (issue 6): fast path vs reference, long runs, memory, start-up.
+
+Run from the repository root::
+
+    python benchmarks/bench_simulation.py            # everything, ~3 minutes
+    python benchmarks/bench_simulation.py --quick    # a smoke run, ~30 s
+
+Prints one Markdown table (median of repeats; wall-clock and CPU time of this
+process; ratios measured in the same run). All BLAS/OpenMP pools are pinned to one
+thread: the targets are for ONE core. The straightforward reference is
+``tests/reference_impl.py`` (brentq per step on the full node set, plain Python
+loops, Archard per step).
+"""
+
+from __future__ import annotations
+
+import os
+
+for _name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ[_name] = "1"
+
+import argparse  # noqa: E402
+import json  # noqa: E402
+import platform  # noqa: E402
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))  # tests.reference_impl
+
+from tests.reference_impl import reference_revolution  # noqa: E402
+
+from jointwear import Simulation, load_config  # noqa: E402
+from jointwear.config import Config  # noqa: E402
+
+PAPER = REPO / "examples" / "paper" / "table5_nlcp_15000r.toml"
+CALIBRATED = {
+    "joint.axial_length": 0.01867,
+    "joint.bushing_thickness": 0.003653,
+    "mechanism.spring_preload": 121.8,
+}
+
+ROWS: list[tuple[str, str, str]] = []
+
+
+def paper(**overrides) -> Config:
+    return load_config(PAPER, overrides={**CALIBRATED, **overrides})
+
+
+def timed(function, repeat: int) -> tuple[float, float]:
+    """Median wall-clock and CPU seconds of ``function()`` over ``repeat`` calls."""
+    function()  # warm-up (caches, lazy imports)
+    wall, cpu = [], []
+    for _ in range(repeat):
+        w0, c0 = time.perf_counter(), time.process_time()
+        function()
+        wall.append(time.perf_counter() - w0)
+        cpu.append(time.process_time() - c0)
+    return float(np.median(wall)), float(np.median(cpu))
+
+
+def row(name: str, value: str, target: str = "") -> None:
+    ROWS.append((name, value, target))
+    print(f"  {name}: {value}  {target}", file=sys.stderr, flush=True)
+
+
+def ms(wall: float, cpu: float) -> str:
+    return f"{wall * 1e3:.3g} ms (CPU {cpu * 1e3:.3g} ms)"
+
+
+# ---------------------------------------------------------------- one revolution
+
+
+def one_revolution(config: Config):
+    """The fast path: contact of every step of one revolution + Archard wear, cold."""
+    simulation = Simulation(config)
+    contour = simulation.initial_contour()
+    _ = simulation.joint_load
+
+    def fast():
+        return simulation.wear_per_revolution(simulation.contact(contour))
+
+    def reference(steps=None):
+        load = simulation.joint_load
+        index = slice(None) if steps is None else steps
+        return reference_revolution(
+            contour.radius,
+            contour.axial_length,
+            simulation.pin.radius,
+            load.load[index],
+            load.azimuth[index],
+            simulation.law,
+            simulation.sliding_distance[index],
+            config.materials.bushing.wear_coefficient,
+        )
+
+    return simulation, fast, reference
+
+
+def bench_revolution(quick: bool) -> None:
+    config = paper(**{"simulation.revolutions": 1})
+    _, fast, reference = one_revolution(config)
+    wall, cpu = timed(fast, 7 if quick else 31)
+    ref_wall, ref_cpu = timed(reference, 2 if quick else 5)
+    row("1 rev 360x360, fast path, cold (contact + wear)", ms(wall, cpu), "<= 2 ms")
+    row("1 rev 360x360, reference (brentq per step)", ms(ref_wall, ref_cpu))
+    row(
+        "1 rev 360x360, speed-up cold",
+        f"{ref_wall / wall:.0f}x wall, {ref_cpu / cpu:.0f}x CPU",
+        ">= 60x",
+    )
+    # warm: one per-revolution update inside a running simulation
+    sim = Simulation(paper(**{"simulation.revolutions": 15000, "simulation.update_every": 1}))
+    state = sim.initial_state()
+    for _ in range(20):
+        state = sim.step(state)
+
+    def update():
+        nonlocal state
+        state = sim.step(state)
+
+    wall_w, cpu_w = timed(update, 50 if quick else 301)
+    row("1 rev 360x360, per-revolution update in a run (warm)", ms(wall_w, cpu_w), "<= 2 ms")
+    row(
+        "1 rev 360x360, speed-up warm",
+        f"{ref_wall / wall_w:.0f}x wall, {ref_cpu / cpu_w:.0f}x CPU",
+        ">= 60x",
+    )
+    fast_wear = fast()
+    _, ref_wear = reference()
+    row(
+        "1 rev 360x360, max |fast - reference| / peak (wear)",
+        f"{np.abs(fast_wear - ref_wear).max() / ref_wear.max():.1e}",
+        "<= 1e-9",
+    )
+
+
+def bench_big_revolution(quick: bool) -> None:
+    nodes = steps = 1800 if quick else 3600
+    config = paper(
+        **{
+            "simulation.revolutions": 1,
+            "contact.nodes": nodes,
+            "simulation.steps_per_revolution": steps,
+            "contact.nlcp_variant": "mesh-independent",
+        }
+    )
+    _, fast, reference = one_revolution(config)
+    wall, cpu = timed(fast, 2 if quick else 5)
+    subset = np.arange(0, steps, steps // 36)  # 36 steps spread over the revolution
+    ref_wall, ref_cpu = timed(lambda: reference(subset), 1 if quick else 2)
+    scale = steps / subset.size
+    row(f"1 rev {nodes}x{steps}, fast path, cold", ms(wall, cpu))
+    row(
+        f"1 rev {nodes}x{steps}, reference (estimated from {subset.size} steps x {scale:.0f})",
+        ms(ref_wall * scale, ref_cpu * scale),
+    )
+    row(
+        f"1 rev {nodes}x{steps}, speed-up",
+        f"{ref_wall * scale / wall:.0f}x wall, {ref_cpu * scale / cpu:.0f}x CPU",
+    )
+
+
+# ---------------------------------------------------------------- long runs
+
+
+_RUN_SCRIPT = """
+import os, json, resource, sys, time, tracemalloc
+for n in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ[n] = "1"
+
+def peak_rss_kb():
+    # VmHWM: peak resident set of this process image (ru_maxrss survives exec on
+    # Linux and would report the parent's peak)
+    try:
+        with open("/proc/self/status") as status:
+            for line in status:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1])
+    except OSError:
+        pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+from jointwear import Simulation, load_config
+overrides = json.loads(sys.argv[2])
+trace = sys.argv[3] == "trace"
+config = load_config(sys.argv[1], overrides=overrides)
+simulation = Simulation(config)
+_ = simulation.joint_load
+import jointwear.results  # xarray: imported by every run's end, not the simulation's cost
+baseline = peak_rss_kb()
+if trace:
+    tracemalloc.start()
+w0, c0 = time.perf_counter(), time.process_time()
+result = simulation.run()
+wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+peak = tracemalloc.get_traced_memory()[1] if trace else 0
+summary = result.summary()
+print(json.dumps({
+    "wall": wall, "cpu": cpu, "maxrss_kb": peak_rss_kb(),
+    "baseline_rss_kb": baseline, "traced_peak": peak,
+    "profiles": int(result.dataset.sizes["revolution"]),
+    "peak": summary["peak_wear_depth_m"], "mass": summary["wear_mass_kg"],
+    "updates": summary["contour_updates"],
+}))
+"""
+
+
+def run_case(overrides: dict, trace: bool = False) -> dict:
+    """One run in a fresh interpreter (clean peak-memory figures)."""
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            _RUN_SCRIPT,
+            str(PAPER),
+            json.dumps({**CALIBRATED, **overrides}),
+            "trace" if trace else "plain",
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+        cwd=REPO,
+    )
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def bench_long_runs(quick: bool) -> None:
+    revolutions = 1500 if quick else 15000
+    per_rev = run_case(
+        {
+            "simulation.revolutions": revolutions,
+            "simulation.update_every": 1,
+            "simulation.saved_profiles": 100,
+        }
+    )
+    row(
+        f"Table 5, {revolutions} rev, update every revolution (100 profiles saved)",
+        f"{per_rev['wall']:.3g} s (CPU {per_rev['cpu']:.3g} s)",
+        "<= 30 s" if revolutions == 15000 else "",
+    )
+    row(
+        "  peak memory of that run (peak RSS, VmHWM; after imports "
+        f"{per_rev['baseline_rss_kb'] / 1024:.0f} MB)",
+        f"{per_rev['maxrss_kb'] / 1024:.0f} MB",
+        "<= 200 MB",
+    )
+    runs = [
+        run_case({"simulation.revolutions": revolutions, "simulation.saved_profiles": 100})
+        for _ in range(3 if quick else 5)
+    ]
+    adaptive = runs[0]
+    wall = float(np.median([r["wall"] for r in runs]))
+    cpu = float(np.median([r["cpu"] for r in runs]))
+    row(
+        f"Table 5, {revolutions} rev, adaptive jumping ({adaptive['updates']} updates)",
+        f"{wall:.3g} s (CPU {cpu:.3g} s)",
+        "<= 0.5 s" if revolutions == 15000 else "",
+    )
+    peak = adaptive["peak"] / per_rev["peak"] - 1
+    mass = adaptive["mass"] / per_rev["mass"] - 1
+    row(
+        "  adaptive vs per-revolution: peak, mass",
+        f"{peak * 100:+.3f} %, {mass * 100:+.3f} %",
+        "within 0.5 %",
+    )
+    traced = run_case(
+        {"simulation.revolutions": revolutions, "simulation.saved_profiles": 100}, trace=True
+    )
+    row(
+        "  adaptive run, tracemalloc peak / peak RSS",
+        f"{traced['traced_peak'] / 2**20:.1f} MB / {traced['maxrss_kb'] / 1024:.0f} MB",
+        "<= 200 MB",
+    )
+
+
+# ---------------------------------------------------------------- linearity
+
+
+def bench_linearity(quick: bool) -> None:
+    sizes = [180, 360, 720] if quick else [180, 360, 720, 1440]
+    repeat = 3 if quick else 7
+    for key, label in (("contact.nodes", "nodes"), ("simulation.steps_per_revolution", "steps")):
+        times = []
+        for size in sizes:
+            config = paper(
+                **{
+                    "simulation.revolutions": 1,
+                    "contact.nlcp_variant": "mesh-independent",
+                    key: size,
+                }
+            )
+            _, fast, _ = one_revolution(config)
+            times.append(timed(fast, repeat))
+        base = times[sizes.index(360)][1]
+        cells = ", ".join(
+            f"{size}: {cpu * 1e3:.3g} ms ({cpu / base * 360 / size:.2f})"
+            for size, (_, cpu) in zip(sizes, times, strict=True)
+        )
+        row(
+            f"one revolution vs {label} (other at 360): CPU (cost per {label[:-1]} / at 360)",
+            cells,
+            "linear: ratios ~1",
+        )
+
+
+# ---------------------------------------------------------------- cold start
+
+
+_COLD_SCRIPT = """
+import time
+t0 = time.perf_counter()
+import jointwear.cli
+from jointwear.simulation import Simulation
+from jointwear.config import load_config
+t1 = time.perf_counter()
+import sys
+simulation = Simulation(load_config(sys.argv[1]))
+state = simulation.step(simulation.initial_state())
+t2 = time.perf_counter()
+print(t1 - t0, t2 - t0)
+"""
+
+
+def bench_cold_start(quick: bool) -> None:
+    env = {**os.environ}
+    with tempfile.TemporaryDirectory() as tmp:
+        one = Path(tmp) / "one.toml"
+        text = PAPER.read_text(encoding="utf-8")
+        text = text.replace("revolutions = 15000", "revolutions = 1").replace(
+            'update_every = "adaptive"', "update_every = 1"
+        )
+        one.write_text(text, encoding="utf-8")
+        imports, first = [], []
+        for _ in range(3 if quick else 7):
+            out = subprocess.run(
+                [sys.executable, "-c", _COLD_SCRIPT, str(one)],
+                capture_output=True,
+                text=True,
+                check=True,
+                env=env,
+            )
+            a, b = map(float, out.stdout.split())
+            imports.append(a)
+            first.append(b)
+        cli = []
+        for _ in range(3 if quick else 5):
+            w0 = time.perf_counter()
+            subprocess.run(
+                [sys.executable, "-m", "jointwear", "run", str(one), "--json", "--quiet"],
+                capture_output=True,
+                check=True,
+                env=env,
+            )
+            cli.append(time.perf_counter() - w0)
+    row(
+        "cold start: import jointwear.cli -> first revolution done",
+        f"{np.median(first):.2f} s (imports {np.median(imports):.2f} s)",
+        "<= 1.5 s",
+    )
+    row(
+        "cold start: `jointwear run one-revolution.toml --json`, whole process",
+        f"{np.median(cli):.2f} s",
+    )
+
+
+def machine() -> str:
+    model = platform.processor() or platform.machine()
+    try:
+        for line in subprocess.run(["lscpu"], capture_output=True, text=True).stdout.splitlines():
+            if line.startswith("Model name:"):
+                model = line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return (
+        f"{model}, {os.cpu_count()} cores; Python {platform.python_version()}, "
+        f"NumPy {np.__version__}; 1 BLAS/OpenMP thread"
+    )
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="smaller sizes, fewer repeats")
+    parser.add_argument(
+        "--only", nargs="*", default=None, help="sections: revolution big long linearity cold"
+    )
+    args = parser.parse_args()
+    sections = {
+        "revolution": bench_revolution,
+        "big": bench_big_revolution,
+        "long": bench_long_runs,
+        "linearity": bench_linearity,
+        "cold": bench_cold_start,
+    }
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    for name, function in sections.items():
+        if args.only is None or name in args.only:
+            print(f"[{name}]", file=sys.stderr, flush=True)
+            function(args.quick)
+    print(f"Machine: {machine()}; load average at start {load:.2f}\n")
+    print("| benchmark | result | target |")
+    print("|---|---|---|")
+    for name, value, target in ROWS:
+        print(f"| {name} | {value} | {target} |")
+
+
+if __name__ == "__main__":
+    main()
