@@ -63,7 +63,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import brute, least_squares
 
 from jointwear.errors import DataError
 
@@ -249,6 +248,8 @@ def _geometric_fit(
         return np.column_stack(columns)
 
     initial = np.array([0.0, 0.0, r0 / scale] if radius is None else [0.0, 0.0])
+    from scipy.optimize import least_squares  # lazy: keeps the CLI quick to start
+
     solution = least_squares(
         residual, initial, jac=jacobian, method="trf", loss=loss, f_scale=f_scale / scale,
         xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=200,
@@ -439,6 +440,8 @@ def fit_circle_robust(
             center = (cx + offset[0] * along[0] + offset[1] * across[0],
                       cy + offset[0] * along[1] + offset[1] * across[1])
             return _trimmed_objective(xs, ys, center[0], center[1], original_radius, m)[0]
+
+        from scipy.optimize import brute
 
         best = brute(trimmed, ((-reach, reach), (-reach, reach)), Ns=search_nodes, finish=None)
         cx, cy = (float(cx + best[0] * along[0] + best[1] * across[0]),

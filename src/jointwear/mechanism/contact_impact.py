@@ -74,8 +74,6 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.integrate import solve_ivp
-from scipy.optimize import brentq
 
 from jointwear.contact.laws import ContactParameters, SpringLaw
 from jointwear.errors import ConfigError, ContactLossWarning, ConvergenceError, JointwearError
@@ -295,8 +293,7 @@ class JointContact:
         if self.distributed:
             if contour is None or pin is None or spring_law is None:
                 raise ConfigError(
-                    f"dynamics.force_law: {force_law!r} needs a bushing contour, pin and "
-                    f"spring law"
+                    f"dynamics.force_law: {force_law!r} needs a bushing contour, pin and spring law"
                 )
             contour.check_pin(pin)
             # node data for the fast evaluation of the springs (:meth:`_springs`)
@@ -304,8 +301,10 @@ class JointContact:
             self._sin = np.sin(contour.theta)
             self._radius = np.asarray(contour.radius, dtype=float)
             self._area = np.broadcast_to(
-                contour.spring_area if spring_law.force_area is None
-                else float(spring_law.force_area), self._radius.shape,
+                contour.spring_area
+                if spring_law.force_area is None
+                else float(spring_law.force_area),
+                self._radius.shape,
             )
             self._pin_radius_sq = pin.radius**2
         self.contour = contour
@@ -334,9 +333,7 @@ class JointContact:
         return fx, fy, gap
 
     @classmethod
-    def from_config(
-        cls, config: Config, contour: BushingContour | None = None
-    ) -> JointContact:
+    def from_config(cls, config: Config, contour: BushingContour | None = None) -> JointContact:
         """Contact model of ``config``'s joint with its ``[dynamics]`` settings.
 
         Parameters
@@ -350,18 +347,26 @@ class JointContact:
         settings = ContactImpactSettings.from_config(config.dynamics)
         params = ContactParameters.from_config(config)
         stiffness = force_laws.pin_in_hole_stiffness(
-            params.pin_radius, params.bushing_radius, params.pin_youngs_modulus,
-            params.pin_poisson_ratio, params.bushing_youngs_modulus, params.bushing_poisson_ratio,
+            params.pin_radius,
+            params.bushing_radius,
+            params.pin_youngs_modulus,
+            params.pin_poisson_ratio,
+            params.bushing_youngs_modulus,
+            params.bushing_poisson_ratio,
         )
-        arm = params.pin_radius if config.mechanism.bushing_body == "slider" else (
-            -params.bushing_radius
+        arm = (
+            params.pin_radius
+            if config.mechanism.bushing_body == "slider"
+            else (-params.bushing_radius)
         )
         extra: dict[str, Any] = {}
         if settings.force_law in force_laws.DISTRIBUTED_LAWS:
             from jointwear.contact import contact_law
 
             extra = {
-                "contour": contour if contour is not None else BushingContour.circle(
+                "contour": contour
+                if contour is not None
+                else BushingContour.circle(
                     params.bushing_radius, config.contact.nodes, params.axial_length
                 ),
                 "pin": Pin(params.pin_radius),
@@ -425,8 +430,9 @@ class JointContact:
         lower = self._touch(direction)
 
         def residual(s: float) -> float:
-            force, _, _ = force_laws.spring_resultant(self.contour, self.pin, s * unit,
-                                                      self.spring_law)
+            force, _, _ = force_laws.spring_resultant(
+                self.contour, self.pin, s * unit, self.spring_law
+            )
             return float(force @ unit) - load
 
         upper = lower + 1e-6
@@ -436,6 +442,8 @@ class JointContact:
                 raise ConvergenceError(
                     f"load: {load:.6g} N cannot be carried by the bushing springs"
                 )
+        from scipy.optimize import brentq  # lazy: keeps `jointwear` quick to start
+
         return float(brentq(residual, lower, upper, xtol=1e-16, rtol=1e-14))
 
     def _touch(self, direction: float) -> float:
@@ -447,6 +455,8 @@ class JointContact:
 
         def gap(s: float) -> float:
             return float(force_laws.spring_gap(self.contour, self.pin, s * unit))
+
+        from scipy.optimize import brentq
 
         return float(brentq(gap, 0.0, upper, xtol=1e-16, rtol=1e-14))
 
@@ -490,16 +500,23 @@ class JointContact:
         slip = -ny * vx + nx * vy + self.friction_arm * spin
         if elastic <= 0.0:
             return 0.0, 0.0, 0.0, 0.0, nx, ny, delta, slip
-        normal = elastic * (1.0 + self.hysteresis * rate / max(impact_velocity,
-                                                               self.impact_velocity_floor))
+        normal = elastic * (
+            1.0 + self.hysteresis * rate / max(impact_velocity, self.impact_velocity_floor)
+        )
         normal = max(normal, 0.0)
         tangential = 0.0
         if self.friction_coefficient > 0.0 and normal > 0.0:
             speed = abs(slip)
             if speed > self.v0:
                 s = min((speed - self.v0) / (self.v1 - self.v0), 1.0)
-                tangential = (self.friction_coefficient * s * s * (3.0 - 2.0 * s) * normal
-                              * math.copysign(1.0, slip))
+                tangential = (
+                    self.friction_coefficient
+                    * s
+                    * s
+                    * (3.0 - 2.0 * s)
+                    * normal
+                    * math.copysign(1.0, slip)
+                )
         jx = normal * nx - tangential * ny
         jy = normal * ny + tangential * nx
         return jx, jy, normal, tangential, nx, ny, delta, slip
@@ -626,10 +643,19 @@ class SliderCrankContactSystem:
         rby = m.rod_mass * (agy + m.gravity) + jy
         torque = bx * rby - by * rbx + 0.5 * m.crank_mass * m.gravity * bx
         return {
-            "theta_ddot": theta_ddot, "x3_ddot": x3_ddot, "force_x": jx, "force_y": jy,
-            "normal_force": normal, "friction_force": tangential, "normal_x": nx,
-            "normal_y": ny, "penetration": delta, "slip": slip, "crank_torque": torque,
-            "ex": ex, "ey": ey,
+            "theta_ddot": theta_ddot,
+            "x3_ddot": x3_ddot,
+            "force_x": jx,
+            "force_y": jy,
+            "normal_force": normal,
+            "friction_force": tangential,
+            "normal_x": nx,
+            "normal_y": ny,
+            "penetration": delta,
+            "slip": slip,
+            "crank_torque": torque,
+            "ex": ex,
+            "ey": ey,
         }
 
     def rhs(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:
@@ -692,9 +718,7 @@ class FreePinSystem:
         ex, ey, vx, vy = (float(v) for v in y[:4])
         jx, jy, *_ = self.contact.force(ex, ey, vx, vy, 0.0, impact_velocity)
         fx, fy = self.external_force
-        return np.array(
-            [vx, vy, (fx - jx) / self.mass, (fy - jy) / self.mass, fx * vx + fy * vy]
-        )
+        return np.array([vx, vy, (fx - jx) / self.mass, (fy - jy) / self.mass, fx * vx + fy * vy])
 
     def energy(self, t: float, y: ArrayLike) -> float:
         """Kinetic + contact elastic energy [J]."""
@@ -892,9 +916,18 @@ def integrate_contacts(
         event_list = [end_event, peak_event] if in_contact else [start_event]
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", RuntimeWarning)
+            from scipy.integrate import solve_ivp  # lazy: keeps `jointwear` quick to start
+
             sol = solve_ivp(
-                fun, (t, t_end), y, method=method, rtol=rtol, atol=atol, max_step=max_step,
-                events=event_list, dense_output=True,
+                fun,
+                (t, t_end),
+                y,
+                method=method,
+                rtol=rtol,
+                atol=atol,
+                max_step=max_step,
+                events=event_list,
+                dense_output=True,
             )
         history.evaluations += int(sol.nfev)
         if sol.status == -1:
@@ -930,8 +963,10 @@ def integrate_contacts(
         if in_contact:
             history.separation_times.append(t_event)
             history.separation_velocities.append(-rate)
-            if (stop_after_separations is not None
-                    and len(history.separation_times) >= stop_after_separations):
+            if (
+                stop_after_separations is not None
+                and len(history.separation_times) >= stop_after_separations
+            ):
                 break
         else:
             history.impact_times.append(t_event)
@@ -1027,9 +1062,7 @@ class ContactImpactSolution:
         }
 
 
-def _initial_state(
-    system: SliderCrankContactSystem, steps: int
-) -> tuple[FloatArray, float]:
+def _initial_state(system: SliderCrankContactSystem, steps: int) -> tuple[FloatArray, float]:
     """State at ``phi_1 = 0``: massless-link motion, pin pressed in by the static load.
 
     Returns the state and the direction of ``e`` [rad].
@@ -1052,9 +1085,15 @@ def _initial_state(
     # loop closure at phi_1 = 0: l2 sin(theta) = e_y, x_3 = l1 + l2 cos(theta) - e_x
     theta = math.asin(ey / m.rod_length)
     x3 = m.crank_length + m.rod_length * math.cos(theta) - ex
-    state = np.array([
-        theta, x3, float(motion.rod_angular_velocity[0]), float(motion.slider_velocity[0]), 0.0,
-    ])
+    state = np.array(
+        [
+            theta,
+            x3,
+            float(motion.rod_angular_velocity[0]),
+            float(motion.slider_velocity[0]),
+            0.0,
+        ]
+    )
     return state, direction
 
 
@@ -1099,8 +1138,14 @@ def solve_contact_impact(
     max_step = settings.max_step if settings.max_step is not None else period / steps
     started = _time.perf_counter()
     history = integrate_contacts(
-        system, (0.0, record_start + period), y0, in_contact=True,
-        method=settings.integrator, rtol=settings.rtol, atol=settings.atol, max_step=max_step,
+        system,
+        (0.0, record_start + period),
+        y0,
+        in_contact=True,
+        method=settings.integrator,
+        rtol=settings.rtol,
+        atol=settings.atol,
+        max_step=max_step,
     )
     runtime = _time.perf_counter() - started
 
@@ -1132,8 +1177,12 @@ def solve_contact_impact(
 
     record_end = record_start + period
     free = history.free_time(record_start, record_end)
-    impacts = int(np.sum((np.array(history.impact_times) >= record_start)
-                         & (np.array(history.impact_times) < record_end)))
+    impacts = int(
+        np.sum(
+            (np.array(history.impact_times) >= record_start)
+            & (np.array(history.impact_times) < record_end)
+        )
+    )
     # free flight inside each sampling step
     step_lost = np.zeros(steps, dtype=bool)
     width = period / steps
@@ -1144,18 +1193,24 @@ def solve_contact_impact(
         last = min(math.ceil((seg.end - record_start) / width), steps)
         step_lost[first:last] = True
     peak_times = [t for t in history.peak_times if record_start <= t <= record_end]
-    peaks = [p for t, p in zip(history.peak_times, history.peak_penetrations, strict=True)
-             if record_start <= t <= record_end]
+    peaks = [
+        p
+        for t, p in zip(history.peak_times, history.peak_penetrations, strict=True)
+        if record_start <= t <= record_end
+    ]
     sampled = np.array([r["penetration"] for r in records])
     max_penetration = float(max([*peaks, float(sampled.max())]))
     # the largest contact force: impacts peak between samples, near the penetration maxima
     peak_load = float(normal_max := np.max([r["normal_force"] for r in records]))
     if peak_times:
         peak_states, peak_index = history.state(peak_times)
-        peak_load = max(normal_max, *(
-            system.evaluate(t, y, history.segments[k].impact_velocity)["normal_force"]
-            for t, y, k in zip(peak_times, peak_states, peak_index, strict=True)
-        ))
+        peak_load = max(
+            normal_max,
+            *(
+                system.evaluate(t, y, history.segments[k].impact_velocity)["normal_force"]
+                for t, y, k in zip(peak_times, peak_states, peak_index, strict=True)
+            ),
+        )
 
     load = JointLoad(
         crank_angle=phi,
@@ -1193,11 +1248,20 @@ def solve_contact_impact(
             diff = np.hypot(dx, dy)
             rms, peak = float(np.sqrt(np.mean(diff**2))), float(diff.max())
     return ContactImpactSolution(
-        load=load, impacts=impacts, free_flight_fraction=free / period,
-        max_penetration=max_penetration, peak_load=peak_load, load_difference_rms=rms,
+        load=load,
+        impacts=impacts,
+        free_flight_fraction=free / period,
+        max_penetration=max_penetration,
+        peak_load=peak_load,
+        load_difference_rms=rms,
         load_difference_max=peak,
-        massless=massless, massless_contact_lost=massless_lost, history=history,
-        system=system, settings=settings, record_start=record_start, runtime=runtime,
+        massless=massless,
+        massless_contact_lost=massless_lost,
+        history=history,
+        system=system,
+        settings=settings,
+        record_start=record_start,
+        runtime=runtime,
     )
 
 
@@ -1265,8 +1329,14 @@ def free_pin_impact(
     # generous bound on the contact duration (Hertz: 2.94 (m^2 / (K^2 v))^(1/5))
     duration = 50.0 * (mass**2 / (contact.stiffness**2 * impact_velocity)) ** 0.2
     history = integrate_contacts(
-        system, (0.0, 2.0 * flight + duration), y0, in_contact=False, method=method,
-        rtol=rtol, atol=atol, stop_after_separations=1,
+        system,
+        (0.0, 2.0 * flight + duration),
+        y0,
+        in_contact=False,
+        method=method,
+        rtol=rtol,
+        atol=atol,
+        stop_after_separations=1,
     )
     if not history.separation_times:
         raise ConvergenceError("free pin: no separation within the integration window")

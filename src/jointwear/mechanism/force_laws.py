@@ -78,7 +78,6 @@ from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import brentq
 
 from jointwear.contact import hertz
 from jointwear.contact.laws import PowerLaw, SpringLaw
@@ -200,6 +199,8 @@ def hysteresis_restitution(hysteresis: float) -> float:
         return chi * (1.0 + e) - math.log1p(chi) + math.log1p(-chi * e)
 
     upper = min(1.0, (1.0 - 1e-15) / chi)
+    from scipy.optimize import brentq  # lazy: keeps `jointwear` quick to start
+
     return float(brentq(balance, 0.0, upper, xtol=1e-15, rtol=1e-14))
 
 
@@ -234,8 +235,12 @@ def pin_in_hole_stiffness(
     """
     return float(
         hertz.stiffness(
-            pin_radius, bushing_radius, pin_youngs_modulus, pin_poisson_ratio,
-            bushing_youngs_modulus, bushing_poisson_ratio,
+            pin_radius,
+            bushing_radius,
+            pin_youngs_modulus,
+            pin_poisson_ratio,
+            bushing_youngs_modulus,
+            bushing_poisson_ratio,
         )
     )
 
@@ -430,8 +435,9 @@ def friction_ramp(
         ``v_1 > v_0`` [m/s]; default ``2 v_0``.
     """
     v1 = 2.0 * tolerance if full_speed is None else full_speed
-    s = np.clip((np.abs(np.asarray(slip_speed, dtype=float)) - tolerance) / (v1 - tolerance),
-                0.0, 1.0)
+    s = np.clip(
+        (np.abs(np.asarray(slip_speed, dtype=float)) - tolerance) / (v1 - tolerance), 0.0, 1.0
+    )
     return s * s * (3.0 - 2.0 * s)
 
 
@@ -548,4 +554,3 @@ def spring_resultant(
         energy = np.trapezoid(samples, dx=0.25, axis=0) * delta
     potential = np.sum(area * energy, axis=-1)
     return force, potential, np.max(delta, axis=-1)
-
