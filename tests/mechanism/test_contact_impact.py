@@ -330,14 +330,17 @@ def test_velocity_with_units(paper_config: Config) -> None:
 def test_integrator_failure_raises_convergence_error(
     paper_config: Config, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    real = ci.solve_ivp
+    import scipy.integrate
+
+    real = scipy.integrate.solve_ivp
 
     def failing(*args, **kwargs):
         result = real(*args, **kwargs)
         result.status, result.message = -1, "Required step size is less than spacing"
         return result
 
-    monkeypatch.setattr(ci, "solve_ivp", failing)
+    # contact_impact imports solve_ivp when it integrates: patch it at the source
+    monkeypatch.setattr(scipy.integrate, "solve_ivp", failing)
     with pytest.raises(ConvergenceError, match="dynamics.integrator"):
         solve_contact_impact(impact_config(paper_config, **{"dynamics.revolutions_settle": 0}))
 
