@@ -23,6 +23,7 @@ the load azimuth by ``e / l2 ~ 2.5e-4`` rad, far below the node spacing.
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from collections.abc import Callable
@@ -437,12 +438,17 @@ class Simulation:
             joint.bushing_radius, wear_depth, joint.axial_length
         )
 
-    def _profile_revolutions(self) -> list[int]:
+    @functools.cached_property
+    def _profile_targets(self) -> tuple[int, ...]:
+        # computed once: _record asks at every contour update
         sim = self.config.simulation
         marks = np.linspace(
             sim.revolutions / sim.saved_profiles, sim.revolutions, sim.saved_profiles
         )
-        return sorted({max(1, round(float(m))) for m in marks})
+        return tuple(sorted({max(1, round(float(m))) for m in marks}))
+
+    def _profile_revolutions(self) -> tuple[int, ...]:
+        return self._profile_targets
 
     def _interval(self, state: SimulationState, rate: FloatArray, remaining: int) -> int:
         sim = self.config.simulation
@@ -467,9 +473,8 @@ class Simulation:
         }
         for name, value in row.items():
             state.history[name].append(value)
-        targets = self._profile_revolutions()
         last_saved = max(state.profiles) if state.profiles else 0
-        if any(last_saved < t <= state.revolution for t in targets):
+        if any(last_saved < t <= state.revolution for t in self._profile_targets):
             state.profiles[state.revolution] = depth.copy()
 
 
