@@ -42,6 +42,14 @@ def polar_magnification(peak: float, radius: float) -> float:
     return 10.0 ** math.floor(math.log10(0.5 * radius / peak))
 
 
+def depth_unit(peak: float) -> tuple[float, str]:
+    """Scale [m per unit] and name of the length unit that shows ``peak`` [m] legibly."""
+    for scale, unit in ((1e-9, "nm"), (1e-6, "µm")):
+        if peak < 1000 * scale:
+            return scale, unit
+    return 1e-3, "mm"
+
+
 def _save(fig, directory: Path, name: str) -> list[Path]:
     paths = []
     for suffix in ("png", "svg"):
@@ -98,17 +106,18 @@ def plot_result(
             lw=1.3,
             label=f"{rev} r",
         )
-    ax.set_title(f"{label}: worn contour, wear x{mag:g} [mm]")
+    ax.set_title(f"{label}: worn contour [mm], wear x{mag:g}", pad=14)
     ax.legend(loc="lower left", fontsize=7, bbox_to_anchor=(-0.1, -0.12), ncol=3)
     written += _save(fig, directory, "wear_polar")
     plt.close(fig)
 
     # -- wear depth vs angle
     fig, ax = plt.subplots(figsize=(7, 4))
+    scale, unit = depth_unit(float(depth.max()))
     for rev, profile in zip(revolutions, depth, strict=True):
-        ax.plot(theta_deg, profile * 1e6, label=f"{rev} r")
+        ax.plot(theta_deg, profile / scale, label=f"{rev} r")
     ax.set_xlabel("bushing angle θ [deg]")
-    ax.set_ylabel("wear depth [µm]")
+    ax.set_ylabel(f"wear depth [{unit}]")
     ax.set_xlim(0, 360)
     ax.set_title(f"{label}: wear depth")
     ax.grid(alpha=0.3)

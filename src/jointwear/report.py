@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from jointwear.io import atomic_write
-from jointwear.plots import _pyplot, _save
+from jointwear.plots import _pyplot, _save, depth_unit
 
 __all__ = ["figures", "write_report"]
 
@@ -69,7 +69,8 @@ def _polar_and_linear(
     plt = _pyplot()
     peak = max(float(depth.max()) for _, depth in curves.values())
     mag = polar_magnification(peak, radius)
-    fig = plt.figure(figsize=(11, 4.6))
+    scale, unit = depth_unit(peak)
+    fig = plt.figure(figsize=(11, 4.8))
     ax_p = fig.add_subplot(1, 2, 1, projection="polar")
     ax_l = fig.add_subplot(1, 2, 2)
     first = next(iter(curves.values()))[0]
@@ -82,11 +83,11 @@ def _polar_and_linear(
             label=label,
             lw=1.3,
         )
-        ax_l.plot(np.degrees(theta), depth * 1e3, label=label)
-    ax_p.set_title(f"wear x{mag:g} [mm]", fontsize=9)
+        ax_l.plot(np.degrees(theta), depth / scale, label=label)
+    ax_p.set_xlabel(f"radius [mm], wear magnified x{mag:g}", fontsize=9)
     ax_p.legend(fontsize=7, loc="lower left", bbox_to_anchor=(-0.15, -0.15))
     ax_l.set_xlabel("bushing angle θ [deg]")
-    ax_l.set_ylabel("wear depth [mm]")
+    ax_l.set_ylabel(f"wear depth [{unit}]")
     ax_l.set_xlim(0, 360)
     ax_l.grid(alpha=0.3)
     ax_l.legend(fontsize=7)
@@ -238,7 +239,7 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines.append("")
     lines += _trend_notes(report["trends"])
 
-    lines += _sensitivity_lines(report.get("sensitivity") or [])
+    lines += _sensitivity_lines(report)
 
     others = [n for n in report["cases"] if n not in PAPER_ROWS]
     if others:
@@ -267,9 +268,35 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
         handle.write("\n".join(lines) + "\n")
 
 
-def _sensitivity_lines(variants: list[dict]) -> list[str]:
+def _sensitivity_lines(report: dict[str, Any]) -> list[str]:
+    from jointwear.reproduce import CALIBRATION_CASE, PAPER_ROWS, deviation
+
+    variants = list(report.get("sensitivity") or [])
     if not variants:
         return []
+    # the default reading, from the main table, as the first row
+    one_rev = [n for n, r in PAPER_ROWS.items() if r.table in ("Table 3", "Table 4")]
+    if all(n in report["cases"] for n in one_rev) and report.get("calibration"):
+        deviations = {
+            n: {
+                k: deviation(report["cases"][n][k], getattr(PAPER_ROWS[n], k))
+                for k in ("peak", "width", "mass")
+            }
+            for n in one_rev
+        }
+        ratio = (
+            report["cases"]["table3_winkler_240rpm"]["mass"]
+            / report["cases"]["table3_winkler_120rpm"]["mass"]
+        )
+        variants.insert(
+            0,
+            {
+                "variant": "**default** (relative rotation, E, pulling spring)",
+                "deviations": deviations,
+                "mass_ratio_240_120": ratio,
+                "calibrated": report["calibration"]["values"],
+            },
+        )
     lines = [
         "## Sensitivity to what the paper leaves open",
         "",
@@ -277,16 +304,18 @@ def _sensitivity_lines(variants: list[dict]) -> list[str]:
         "re-predicts the one-revolution rows. Mean |deviation| over the predicted rows "
         "(peak / width / mass), and the calibrated values:",
         "",
-        "| variant | mean abs. dev. peak | width | mass | b [mm] | L [mm] | preload [N] |",
-        "|---|---|---|---|---|---|---|",
+        "| variant | mean abs. dev. peak | width | mass | Winkler mass 240/120 rpm "
+        "(paper 1.289) | b [mm] | L [mm] | preload [N] |",
+        "|---|---|---|---|---|---|---|---|",
     ]
     for variant in variants:
-        devs = [d for name, d in variant["deviations"].items() if "winkler_120rpm" not in name]
+        devs = [d for name, d in variant["deviations"].items() if name != CALIBRATION_CASE]
         means = [sum(abs(d[k]) for d in devs) / len(devs) for k in ("peak", "width", "mass")]
         cal = variant["calibrated"]
         lines.append(
             f"| {variant['variant']} | {means[0] * 100:.1f} % | {means[1] * 100:.1f} % | "
-            f"{means[2] * 100:.1f} % | {cal['joint.axial_length'] * 1e3:.3g} | "
+            f"{means[2] * 100:.1f} % | {variant['mass_ratio_240_120']:.3f} | "
+            f"{cal['joint.axial_length'] * 1e3:.3g} | "
             f"{cal['joint.bushing_thickness'] * 1e3:.3g} | "
             f"{cal['mechanism.spring_preload']:.4g} |"
         )

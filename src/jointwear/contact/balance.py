@@ -307,11 +307,12 @@ class _PaperResidual:
         slope = np.full(n, np.nan)
         if not need.any():
             return total, slope
-        if need.all():
-            sel, s_sel = slice(None), s
+        if 2 * np.count_nonzero(need) >= n:
+            # most rows: the whole block (gathering rows costs more than the extra arithmetic)
+            sel, s_sel, pick = need, np.where(need, s, 1.0), need
         else:
             sel = np.flatnonzero(need)
-            s_sel = s[sel]
+            s_sel, pick = s[sel], slice(None)
             lat, root, pen, tmp = lat[sel], root[sel], pen[sel], tmp[sel]
             weight, weight_cos = weight[sel], weight_cos[sel]
         # d depth / ds = cos - s sin^2 / root: sum_j k_j cos_j^2 - sum_j k_j (lat_j / root_j) / s,
@@ -321,17 +322,17 @@ class _PaperResidual:
         if self.exponent == 1.5:
             along = np.einsum("ij,ij->i", tmp, weight_cos)
             across = np.einsum("ij,ij->i", tmp, lat)
-            slope[sel] = 1.5 * (along - across / s_sel)
+            slope[sel] = (1.5 * (along - across / s_sel))[pick]
         elif self.exponent == 1.0:
             np.greater(pen, 0.0, out=root)  # 1.0 where in contact
             along = np.einsum("ij,ij->i", root, weight_cos)
             across = np.einsum("ij,ij->i", root, lat)
-            slope[sel] = along - across / s_sel
+            slope[sel] = (along - across / s_sel)[pick]
         else:
             derivative = self.law.pressure_derivative(pen)
             along = np.einsum("ij,ij->i", derivative, weight_cos)
             across = np.einsum("ij,ij->i", derivative, lat)
-            slope[sel] = along - across / s_sel
+            slope[sel] = (along - across / s_sel)[pick]
         return total, slope
 
     def pressure(self) -> FloatArray:
