@@ -38,14 +38,13 @@ import contextlib
 import dataclasses
 import hashlib
 import json
-import tomllib
 import zipfile
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from jointwear.config import Config, config_from_dict
+from jointwear.config import Config, config_from_dict, read_toml
 from jointwear.errors import ConfigError, DataError
 from jointwear.io import atomic_write
 
@@ -272,19 +271,12 @@ class Checkpointer:
 def read_checkpoint_config(directory: str | Path) -> Config:
     """The configuration stored in a checkpoint directory."""
     path = Path(directory) / CHECKPOINT_CONFIG
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
+    if not path.exists():
         raise DataError(
             f"{directory}: no checkpoint to resume (no {CHECKPOINT_CONFIG}; the run finished "
             "or was started without --checkpoint-every)"
-        ) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise DataError(f"{path}: cannot read ({exc})") from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise DataError(f"{path}: not valid TOML ({exc})") from None
+        )
+    data = read_toml(path, DataError)
     try:
         return config_from_dict(data, defaults=False)
     except ConfigError as exc:

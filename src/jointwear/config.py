@@ -46,6 +46,7 @@ __all__ = [
     "config_from_dict",
     "load_config",
     "parse_override",
+    "read_toml",
 ]
 
 
@@ -413,6 +414,29 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
         raise ConfigError(_message(_first_error(exc.errors()))) from None
 
 
+def read_toml(path: str | Path, error: type[Exception] = ConfigError) -> dict[str, Any]:
+    """Read a TOML file; any problem raises ``error`` with a one-line message naming it.
+
+    Parameters
+    ----------
+    path : path-like
+        The file.
+    error : exception type
+        Raised for a missing, unreadable or invalid file (a ``JointwearError``).
+    """
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise error(f"{path}: file not found") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise error(f"{path}: cannot read ({exc})") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise error(f"{path}: not valid TOML ({exc})") from None
+
+
 def load_config(
     path: str | Path | None = None, overrides: Iterable[str] | Mapping[str, Any] = ()
 ) -> Config:
@@ -425,19 +449,7 @@ def load_config(
     overrides : iterable of str or mapping
         ``"section.key=VALUE"`` strings (CLI ``--set``) or a dotted-key mapping.
     """
-    data: dict[str, Any] = {}
-    if path is not None:
-        path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except FileNotFoundError:
-            raise ConfigError(f"{path}: file not found") from None
-        except (OSError, UnicodeDecodeError) as exc:
-            raise ConfigError(f"{path}: cannot read ({exc})") from None
-        try:
-            data = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as exc:
-            raise ConfigError(f"{path}: not valid TOML ({exc})") from None
+    data: dict[str, Any] = {} if path is None else read_toml(path)
     apply_overrides(data, overrides)
     return config_from_dict(data)
 

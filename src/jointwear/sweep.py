@@ -54,7 +54,7 @@ from typing import Any
 
 import numpy as np
 
-from jointwear.config import Config, apply_overrides, config_from_dict, load_config
+from jointwear.config import Config, apply_overrides, config_from_dict, load_config, read_toml
 from jointwear.errors import ConfigError, DataError, JointwearError
 from jointwear.io import atomic_write, write_json
 from jointwear.registry import suggest
@@ -310,16 +310,7 @@ def load_sweep(path: str | Path) -> SweepPlan:
         unknown distribution ... (one line naming the file and the key).
     """
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise ConfigError(f"{path}: file not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ConfigError(f"{path}: cannot read ({exc})") from None
-    try:
-        spec = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ConfigError(f"{path}: not valid TOML ({exc})") from None
+    spec = read_toml(path)
     base_ref = spec.get("base")
     if base_ref is None:
         base = load_config()
