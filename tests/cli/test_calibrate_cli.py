@@ -182,3 +182,19 @@ def test_errors_exit_2_with_one_line(
     assert captured.err.count("\n") == 1, captured.err
     assert message in captured.err
     assert "Traceback" not in captured.err
+
+
+def test_calibrate_contact_laws_to_the_fe_reference(capsys) -> None:
+    """Issue 8: Winkler's stiffness fitted to the FE wall is close to the constrained modulus.
+
+    A bonded wall much thinner than the contact arc is a constrained layer: the fitted
+    stiffness must sit near E_c / L (not E / L, 1.87 times softer for nu = 0.38).
+    """
+    from jointwear.cli import main
+
+    main(["calibrate", "--reference", "fem", "--loads", "50 N,200 N,400 N", "--json"])
+    data = json.loads(capsys.readouterr().out)
+    winkler = data["fits"]["winkler"]["equivalent"]
+    assert 0.85 < winkler["ratio_to_constrained_over_thickness"] < 1.15
+    assert winkler["ratio_to_youngs_over_thickness"] > 1.5
+    assert data["fits"]["nlcp"]["values"]["exponent"] < 1.5

@@ -78,6 +78,20 @@ PaperRowOpt = Annotated[
 ]
 
 
+ReferenceOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--reference",
+        help="Fit the contact laws (Winkler stiffness, NLCP K and n) to an exact reference "
+        "instead: fem or persson (with --loads).",
+        show_default=False,
+    ),
+]
+LoadsOpt = Annotated[
+    str, typer.Option("--loads", help='Loads of the --reference fit, e.g. "50 N,100 N,200 N".')
+]
+
+
 @app.command()
 def calibrate(
     config: CalConfigArg = None,
@@ -90,6 +104,8 @@ def calibrate(
     align: AlignOpt = "best",
     profile: ProfileOpt = "auto",
     paper_row: PaperRowOpt = None,
+    reference: ReferenceOpt = None,
+    loads: LoadsOpt = "50 N,100 N,200 N,400 N",
     json_: JsonOpt = False,
 ) -> None:
     """Fit model parameters to measured wear profiles by least squares.
@@ -98,8 +114,12 @@ def calibrate(
     the simulated profiles minus the measured ones (each divided by its measured
     peak) are minimised over the --fit parameters. Reports the fitted values with
     1-sigma uncertainties. With --paper-row, fits a paper table row's peak, width
-    and mass instead (the reproduction's calibration).
+    and mass instead (the reproduction's calibration). With --reference fem|persson,
+    fits the contact laws to that exact reference over --loads (issue 8).
     """
+    if reference is not None:
+        _reference(reference, loads, config, measured, set_, json_)
+        return
     if paper_row is not None:
         _paper(paper_row, config, measured, case, fit, set_, json_)
         return
@@ -303,3 +323,37 @@ def _parameter_table(parameters: dict[str, dict[str, Any]], title: str) -> Table
             f"{show(item['lower'], 3)} … {show(item['upper'], 3)}",
         )
     return table
+
+
+def _reference(reference, loads, config, measured, set_, json_) -> None:
+    """``calibrate --reference``: Winkler's stiffness and NLCP's K, n fitted to a reference."""
+    from jointwear.cli.compare_models_cmd import _parse_loads
+    from jointwear.config import load_config
+    from jointwear.contact import ContactParameters
+    from jointwear.references.calibrate import calibrate_to_reference
+
+    if reference not in ("fem", "persson"):
+        from jointwear.registry import suggest
+
+        raise ConfigError(
+            f"--reference: unknown reference {reference!r}{suggest(reference, ['fem', 'persson'])}"
+        )
+    if measured:
+        raise ConfigError("--reference: fits the contact laws to a reference, not measured files")
+    cfg = load(config, set_) if config is not None else load_config(overrides=set_ or [])
+    force = _parse_loads(loads)
+    fits = calibrate_to_reference(
+        ContactParameters.from_config(cfg), force, reference=reference, nodes=cfg.contact.nodes
+    )
+    if json_:
+        emit_json({"reference": reference, "loads_n": force,
+                   "fits": {name: fit.to_json() for name, fit in fits.items()}})
+        return
+    console.print(f"contact laws fitted to {reference} over {loads}:", markup=False)
+    for name, fit in fits.items():
+        console.print(f"  {name} (rms residual {fit.rms_residual:.3g})", markup=False)
+        for key, value in fit.values.items():
+            console.print(f"    {key} = {value:.6g} ± {fit.uncertainty[key]:.2g}", markup=False)
+        for key, value in fit.equivalent.items():
+            text = value if isinstance(value, str) else f"{value:.6g}"
+            console.print(f"      {key} = {text}", markup=False)
