@@ -308,7 +308,8 @@ class _PaperResidual:
         if not need.any():
             return total, slope
         if 2 * np.count_nonzero(need) >= n:
-            # most rows: the whole block (gathering rows costs more than the extra arithmetic)
+            # most rows: the slope of the whole block, kept where needed (gathering the rows
+            # into fresh arrays costs more than the extra arithmetic, and page faults)
             sel, s_sel, pick = need, np.where(need, s, 1.0), need
         else:
             sel = np.flatnonzero(need)
