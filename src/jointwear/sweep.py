@@ -877,9 +877,39 @@ def _connect(scheduler: str, timeout: float) -> Any:
             "--scheduler: dask.distributed is not installed; "
             "install it with `pip install 'jointwear[sweep]'`"
         ) from None
+    _probe(scheduler, timeout)
     try:
-        return Client(scheduler, timeout=timeout)
+        # not the process-wide default: a Client registers itself as dask's scheduler
+        # before it connects, and a failed connection would leave that registration
+        # behind for every later dask-aware call (xarray) in this process
+        return Client(scheduler, timeout=timeout, set_as_default=False)
     except (OSError, TimeoutError, ValueError, TypeError) as exc:
+        why = _one_line(str(exc)) or type(exc).__name__
+        raise ConfigError(f"--scheduler: cannot connect to {scheduler} ({why})") from None
+
+
+def _probe(scheduler: str, timeout: float) -> None:
+    """Check that a TCP scheduler address parses and accepts connections.
+
+    A ``Client`` that fails to connect is half built: at interpreter exit its
+    destructor waits for a loop that never ran and prints a traceback. Probing
+    first keeps a wrong address a one-line error.
+    """
+    import socket
+
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    try:
+        protocol, location = parse_address(scheduler)
+        if protocol not in ("tcp", "tls"):
+            return  # other transports (inproc, ucx): leave them to dask
+        host, port = parse_host_port(location)
+    except (ValueError, TypeError) as exc:
+        raise ConfigError(f"--scheduler: cannot connect to {scheduler} ({exc})") from None
+    try:
+        with socket.create_connection((host, port), timeout=timeout):
+            pass
+    except OSError as exc:
         why = _one_line(str(exc)) or type(exc).__name__
         raise ConfigError(f"--scheduler: cannot connect to {scheduler} ({why})") from None
 
