@@ -928,7 +928,7 @@ def _run_dask(
         for case, task in tasks:
             key = f"jointwear-{case.name}-{token}"
             futures[client.submit(run_case, task, key=key, pure=False)] = case
-        for future in as_completed(list(futures)):
+        for future in as_completed(list(futures), loop=client.loop):
             case = futures[future]
             if future.status == "finished":
                 record = future.result()
