@@ -301,3 +301,21 @@ def test_cached_window_geometry_follows_the_azimuths(table5):
         simulation.law,
     )
     assert_rows_close(turned.pressure, np.roll(first.pressure, 7, axis=1))
+
+
+def test_warm_revolution_balances_every_load_in_two_evaluations(table5):
+    """Inside a run: one (Chebyshev-corrected) Newton step and the check, within tolerance."""
+    simulation = Simulation(
+        table5.replace({"simulation.revolutions": 20, "simulation.update_every": 1})
+    )
+    state = simulation.initial_state()
+    for _ in range(6):
+        state = simulation.step(state)
+    contour = simulation._contour(state.wear_depth)
+    warm = simulation.contact(contour, state)
+    load = simulation.joint_load.load
+    force = warm.pressure * force_area(simulation, contour)
+    bound = np.maximum(1e-12, 8 * EPS * np.abs(force).sum(axis=1))
+    assert np.all(np.abs(warm.normal_force - load) <= bound)
+    assert warm.iterations.mean() <= 2.05
+    assert_rows_close(warm.pressure, simulation.contact(contour).pressure)

@@ -60,6 +60,7 @@ def bracketed_newton(
     atol: float,
     rtol: float = 8 * np.finfo(float).eps,
     max_iterations: int = 100,
+    curvature: float = 0.0,
 ) -> RootResult:
     """Solve many increasing scalar equations ``f_i(x_i) = 0`` at once.
 
@@ -69,7 +70,9 @@ def bracketed_newton(
     Parameters
     ----------
     func : callable
-        ``func(x, index)`` returns ``(f, df/dx, scale)`` for problems ``index``.
+        ``func(x, index)`` returns ``(f, df/dx, scale)`` for problems ``index``. A NaN
+        derivative means "not computed": the last derivative ``func`` gave for that
+        problem is reused (a chord step); with none yet, the step is a bisection.
     x0 : ndarray
         Initial guesses (clipped into the bracket).
     lower, upper : ndarray
@@ -80,6 +83,12 @@ def bracketed_newton(
         Relative round-off floor: the tolerance is ``max(atol, rtol * scale)``.
     max_iterations : int
         Evaluations allowed per problem.
+    curvature : float
+        ``kappa`` of a second-order (Chebyshev) correction of the Newton step for
+        residuals ``f = g - c`` with ``g ~ scale ~ C u^m`` locally (``kappa = (m - 1) / m``,
+        ``f'' / f' = kappa f' / g``): the step ``-f/f'`` becomes
+        ``-f/f' (1 + kappa f / (2 scale))``, which removes most of Newton's quadratic
+        error term. 0: plain Newton. Only the step changes, never the convergence test.
 
     Returns
     -------
@@ -90,49 +99,60 @@ def bracketed_newton(
     x = np.clip(np.asarray(x0, dtype=float), lo, hi)
     size = x.size
     residual = np.full(size, np.nan)
+    slope = np.full(size, np.nan)  # last derivative func computed, per problem
     iterations = np.zeros(size, dtype=np.int64)
     converged = np.zeros(size, dtype=bool)
     active = np.arange(size)
-    eps = np.finfo(float).eps
-    for _ in range(max_iterations):
-        if active.size == 0:
-            break
-        # while every problem is active (the costly first iterations) no gathers
-        whole = active.size == size
-        xa = x.copy() if whole else x[active]
-        f, df, scale = func(xa, active)
-        if whole:
-            iterations += 1
-            residual[:] = f
-            lo_old, hi_old = lo, hi
-        else:
-            iterations[active] += 1
-            residual[active] = f
-            lo_old, hi_old = lo[active], hi[active]
-        size_f = np.abs(f)
-        done = size_f <= np.maximum(rtol * scale, atol)
-        # shrink the bracket with the sign of the residual
-        below = f < 0
-        lo_a = np.where(below, xa, lo_old)
-        hi_a = np.where(below, hi_old, xa)
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            step = xa - f / df
-        # (a NaN or infinite step compares False: bisection)
-        inside = (step > lo_a) & (step < hi_a)
-        new_x = np.where(inside, step, 0.5 * (lo_a + hi_a))
-        # a bracket that has collapsed to round-off cannot improve any further
-        bracket = hi_a - lo_a
-        ulp = eps * np.abs(xa)
-        stalled = bracket <= 4 * np.maximum(ulp, eps * 1e-300)
-        # ... and if the residual is what a step of that size explains, x is the root
-        # to machine precision even though |f| > tolerance (stiff f: f' * ulp(x) > atol)
-        resolved = stalled & ~done & (size_f <= 2 * np.abs(df) * np.maximum(bracket, ulp))
-        converged[active[done | resolved]] = True
-        if whole:
-            lo, hi = lo_a, hi_a
-        else:
-            lo[active], hi[active] = lo_a, hi_a
-        keep = ~(done | stalled)
-        x[active[keep]] = new_x[keep]
-        active = active[keep]
+    eps = float(np.finfo(float).eps)
+    half_curvature = 0.5 * curvature
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for _ in range(max_iterations):
+            if active.size == 0:
+                break
+            # while every problem is active (the costly first iterations) no gathers
+            whole = active.size == size
+            xa = x.copy() if whole else x[active]
+            f, df, scale = func(xa, active)
+            if whole:
+                iterations += 1
+                residual[:] = f
+                lo_old, hi_old, slope_old = lo, hi, slope
+            else:
+                iterations[active] += 1
+                residual[active] = f
+                lo_old, hi_old, slope_old = lo[active], hi[active], slope[active]
+            df = np.where(np.isnan(df), slope_old, df)
+            size_f = np.abs(f)
+            done = size_f <= np.maximum(rtol * scale, atol)
+            # shrink the bracket with the sign of the residual
+            below = f < 0
+            lo_a = np.where(below, xa, lo_old)
+            hi_a = np.where(below, hi_old, xa)
+            if half_curvature:
+                step = xa - f / df * (1.0 + half_curvature * f / scale)
+            else:
+                step = xa - f / df
+            # (a NaN or infinite step compares False: bisection)
+            inside = (step > lo_a) & (step < hi_a)
+            new_x = np.where(inside, step, 0.5 * (lo_a + hi_a))
+            # a bracket that has collapsed to round-off cannot improve any further
+            bracket = hi_a - lo_a
+            ulp = eps * np.abs(xa)
+            stalled = bracket <= 4 * np.maximum(ulp, eps * 1e-300)
+            keep = ~(done | stalled)
+            if stalled.any():
+                # ... and if the residual is what a step of that size explains, x is the root
+                # to machine precision though |f| > tolerance (stiff f: f' * ulp(x) > atol)
+                resolved = stalled & ~done & (size_f <= 2 * np.abs(df) * np.maximum(bracket, ulp))
+                done = done | resolved
+            converged[active[done]] = True
+            if whole:
+                lo, hi, slope = lo_a, hi_a, df
+                x[keep] = new_x[keep]
+                active = active[keep]
+            else:
+                lo[active], hi[active], slope[active] = lo_a, hi_a, df
+                rows = active[keep]
+                x[rows] = new_x[keep]
+                active = rows
     return RootResult(x=x, residual=residual, iterations=iterations, converged=converged)
