@@ -138,3 +138,29 @@ def test_debug_shows_the_traceback(paper_config_path) -> None:
 
     with pytest.raises(ConfigError):
         main(["--debug", "run", str(paper_config_path), "--set", "joint.clearance=-1"])
+
+
+def test_cli_needs_no_click_of_its_own(paper_config_path) -> None:
+    """typer >= 0.20 vendors click and does not install it: the CLI must not import it.
+
+    (Found from a fresh install of the main command, where only dask's extra pulled
+    click in for the test environment.)
+    """
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; sys.modules['click'] = None\n"  # any `import click` now fails
+        "from jointwear.cli import main\n"
+        f"cases = (([r'{paper_config_path}', '--json'], 0), (['--no-such-option'], 2))\n"
+        "for args, status in cases:\n"
+        "    try:\n"
+        "        main(['run', *args] if status == 0 else args)\n"
+        "        code = 0\n"
+        "    except SystemExit as exc:\n"
+        "        code = exc.code\n"
+        "    assert code == status, (args, code)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert "internal error" not in done.stderr

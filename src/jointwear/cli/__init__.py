@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import sys
 
-import click
 import typer
 
 from jointwear.cli.common import app, err_console
@@ -29,10 +28,29 @@ from jointwear.cli import sweep_cmd  # noqa: F401  isort: skip
 
 __all__ = ["app", "main"]
 
-# typer >= 0.20 parses with its own copy of click (typer._click): catch both
-_EXIT = (click.exceptions.Exit, getattr(typer, "Exit", click.exceptions.Exit))
-_ABORT = (click.exceptions.Abort, getattr(typer, "Abort", click.exceptions.Abort))
-_USAGE_ERRORS = (click.ClickException, getattr(typer, "TyperException", click.ClickException))
+
+
+def _exception_types() -> tuple[tuple[type, ...], tuple[type, ...], tuple[type, ...]]:
+    """Exit, abort and usage-error types of whichever click the installed typer uses.
+
+    typer >= 0.20 parses with its own copy of click (``typer._click``) and does not
+    install click; older typer uses click itself. Catch both where both exist.
+    """
+    exits: list[type] = [getattr(typer, "Exit", SystemExit)]
+    aborts: list[type] = [getattr(typer, "Abort", KeyboardInterrupt)]
+    usage: list[type] = [t for t in (getattr(typer, "TyperException", None),) if t]
+    try:
+        import click
+    except ImportError:
+        pass
+    else:
+        exits.append(click.exceptions.Exit)
+        aborts.append(click.exceptions.Abort)
+        usage.append(click.ClickException)
+    return tuple(exits), tuple(aborts), tuple(usage)
+
+
+_EXIT, _ABORT, _USAGE_ERRORS = _exception_types()
 
 
 def main(argv: list[str] | None = None) -> None:
