@@ -9,7 +9,7 @@ from typing import Annotated, Any
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, SetOpt, app, console, emit_json, load
+from jointwear.cli.common import JsonOpt, SetOpt, UnitsOpt, app, console, emit_json, load
 from jointwear.errors import ConfigError
 
 CalConfigArg = Annotated[
@@ -40,14 +40,10 @@ CaseOpt = Annotated[
     list[str] | None,
     typer.Option(
         "--case",
-        help='A measured file with its own settings: FILE:KEY=VALUE[,KEY=VALUE...], e.g. '
+        help="A measured file with its own settings: FILE:KEY=VALUE[,KEY=VALUE...], e.g. "
         '"worn240.csv:mechanism.crank_speed=240 rpm". Repeat.',
         show_default=False,
     ),
-]
-UnitsOpt = Annotated[
-    str | None,
-    typer.Option("--units", help="Length unit of columns without one (default m), e.g. mm."),
 ]
 CircleFitOpt = Annotated[
     str,
@@ -162,9 +158,7 @@ def calibrate(
     specs += [parse_case(text) for text in case or []]
     if not specs:
         raise ConfigError("MEASURED: give at least one measured file (or --case FILE:...)")
-    cases = [
-        MeasuredCase.from_file(path, overrides, units, alignment) for path, overrides in specs
-    ]
+    cases = [MeasuredCase.from_file(path, overrides, units, alignment) for path, overrides in specs]
     seen: dict[str, int] = {}
     for i, item in enumerate(cases):
         # the same file (name) twice, e.g. with other settings: number the repeats
@@ -346,8 +340,13 @@ def _reference(reference, loads, config, measured, set_, json_) -> None:
         ContactParameters.from_config(cfg), force, reference=reference, nodes=cfg.contact.nodes
     )
     if json_:
-        emit_json({"reference": reference, "loads_n": force,
-                   "fits": {name: fit.to_json() for name, fit in fits.items()}})
+        emit_json(
+            {
+                "reference": reference,
+                "loads_n": force,
+                "fits": {name: fit.to_json() for name, fit in fits.items()},
+            }
+        )
         return
     console.print(f"contact laws fitted to {reference} over {loads}:", markup=False)
     for name, fit in fits.items():

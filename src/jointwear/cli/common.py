@@ -18,6 +18,7 @@ __all__ = [
     "DebugOpt",
     "JsonOpt",
     "SetOpt",
+    "UnitsOpt",
     "app",
     "console",
     "emit_json",
@@ -46,6 +47,10 @@ SetOpt = Annotated[
     ),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print exactly one JSON object on stdout.")]
+UnitsOpt = Annotated[
+    str | None,
+    typer.Option("--units", help="Length unit of columns without one (default m), e.g. mm."),
+]
 DebugOpt = Annotated[bool, typer.Option("--debug", help="Show tracebacks.")]
 
 

@@ -13,7 +13,7 @@ import numpy as np
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, app, console, emit_json
+from jointwear.cli.common import JsonOpt, UnitsOpt, app, console, emit_json
 from jointwear.errors import ConfigError, DataError
 
 ResultArg = Annotated[
@@ -27,10 +27,6 @@ MeasuredArg = Annotated[
         "e.g. 'x \\[mm],y \\[mm]') or two whitespace-separated columns.",
         show_default=False,
     ),
-]
-UnitsOpt = Annotated[
-    str | None,
-    typer.Option("--units", help="Length unit of columns without one (default m), e.g. mm."),
 ]
 FitOpt = Annotated[
     str,
@@ -197,9 +193,17 @@ def compare(
     x, y = read_points(measured, units)
     radius = config.bushing_radius
     comparison = compare_measurement(
-        simulated, x, y, radius, fit=fit_name, axial_length=config.joint.axial_length,
-        density=config.materials.bushing.density, threshold=threshold, align=alignment,
-        floor=depth_floor, profile=profile,
+        simulated,
+        x,
+        y,
+        radius,
+        fit=fit_name,
+        axial_length=config.joint.axial_length,
+        density=config.materials.bushing.density,
+        threshold=threshold,
+        align=alignment,
+        floor=depth_floor,
+        profile=profile,
     )
     summary = comparison.summary()
     summary.update(
@@ -229,11 +233,7 @@ def compare(
     console.print(_table(summary, measured, result))
     noise = comparison.fit.rms_residual if comparison.fit is not None else math.nan
     measured_peak = comparison.measured_metrics.peak_depth
-    if (
-        fit_name == "robust"
-        and threshold * measured_peak < 3 * noise
-        and depth_floor < 3 * noise
-    ):
+    if fit_name == "robust" and threshold * measured_peak < 3 * noise and depth_floor < 3 * noise:
         console.print(
             f"note: the width threshold ({threshold:g} of the peak) is below 3x the noise "
             f"({noise * 1e6:.2g} µm rms on the unworn arc); the measured width counts noise. "

@@ -9,7 +9,7 @@ import numpy as np
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, app, console, emit_json
+from jointwear.cli.common import JsonOpt, UnitsOpt, app, console, emit_json
 from jointwear.errors import ConfigError
 from jointwear.measurement.fit import CircleFit, fit_circle_least_squares, fit_circle_robust
 from jointwear.measurement.io import length_unit_factor, read_points
@@ -31,10 +31,6 @@ MeasuredArg = Annotated[
 RadiusOpt = Annotated[
     str,
     typer.Option("--radius", help='Unworn bushing radius R0, e.g. "7.5 mm".', show_default=False),
-]
-UnitsOpt = Annotated[
-    str | None,
-    typer.Option("--units", help="Length unit of columns without one (default m), e.g. mm."),
 ]
 NodesOpt = Annotated[int, typer.Option("--nodes", help="Nodes of the profile grid.")]
 ThresholdOpt = Annotated[

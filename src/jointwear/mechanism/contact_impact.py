@@ -79,7 +79,7 @@ from jointwear.contact.laws import ContactParameters, SpringLaw
 from jointwear.errors import ConfigError, ContactLossWarning, ConvergenceError, JointwearError
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.mechanism import force_laws
-from jointwear.mechanism.loads import JointLoad, wrap_angle
+from jointwear.mechanism.loads import JointLoad, bushing_frame
 from jointwear.mechanism.slider_crank import (
     SliderCrank,
     ideal_motion,
@@ -1166,14 +1166,9 @@ def solve_contact_impact(
     theta_all = states[:, 0]
     theta = theta_all[:-1]
     increment = np.diff(theta_all)
-    if config.mechanism.bushing_body == "slider":
-        azimuth = np.arctan2(n_y, n_x)
-        relative_rotation = increment
-    else:
-        azimuth = np.arctan2(-n_y, -n_x) - theta
-        relative_rotation = -increment
-    azimuth = np.unwrap(azimuth)
-    azimuth = azimuth + (wrap_angle(azimuth.mean()) - azimuth.mean())
+    azimuth, relative_rotation = bushing_frame(
+        n_x, n_y, theta, increment, config.mechanism.bushing_body
+    )
 
     record_end = record_start + period
     free = history.free_time(record_start, record_end)

@@ -14,7 +14,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["JointLoad", "wrap_angle"]
+__all__ = ["JointLoad", "bushing_frame", "wrap_angle"]
 
 FloatArray = NDArray[np.float64]
 
@@ -35,6 +35,50 @@ def wrap_angle(angle: FloatArray | float) -> FloatArray:
     wrapped = np.mod(np.asarray(angle, dtype=float) + np.pi, 2.0 * np.pi) - np.pi
     # mod maps +pi to -pi; the interval is closed on the right
     return np.where(wrapped == -np.pi, np.pi, wrapped)
+
+
+def bushing_frame(
+    force_x: ArrayLike,
+    force_y: ArrayLike,
+    rod_angle: ArrayLike,
+    rod_increment: ArrayLike,
+    bushing_body: str,
+) -> tuple[FloatArray, FloatArray]:
+    """Load azimuth and relative rotation in the frame of the body carrying the bushing.
+
+    Parameters
+    ----------
+    force_x, force_y : array_like
+        Global components of ``J``, the force the rod's pin exerts on the slider [N].
+    rod_angle : array_like
+        Rod angle at each step [rad].
+    rod_increment : array_like
+        Rod angle increment over each step [rad].
+    bushing_body : {"slider", "rod"}
+        Body that carries the bushing.
+
+    Returns
+    -------
+    azimuth : ndarray
+        Direction in which the pin presses on the bushing, unwrapped and shifted by
+        whole turns so that its mean lies in (-pi, pi] [rad].
+    relative_rotation : ndarray
+        Increment of ``phi_pin - phi_bushing`` over each step [rad].
+    """
+    fx, fy = np.asarray(force_x, dtype=float), np.asarray(force_y, dtype=float)
+    increment = np.asarray(rod_increment, dtype=float)
+    if bushing_body == "slider":
+        # the bushing does not rotate; the pin turns with the rod
+        azimuth = np.arctan2(fy, fx)
+        relative_rotation = increment
+    else:
+        # bushing in the rod end, pin on the slider: the pin presses on it with -J,
+        # seen in the rod's frame; phi_pin - phi_bushing = 0 - theta_2
+        azimuth = np.arctan2(-fy, -fx) - np.asarray(rod_angle, dtype=float)
+        relative_rotation = -increment
+    # continuous in time, and placed (by a whole turn) so that its mean is in (-pi, pi]
+    azimuth = np.unwrap(azimuth)
+    return azimuth + (wrap_angle(azimuth.mean()) - azimuth.mean()), relative_rotation
 
 
 @dataclass(frozen=True, eq=False)
@@ -142,10 +186,15 @@ class JointLoad:
         azimuth = np.asarray(azimuth, dtype=float).ravel()
         rotation = np.asarray(relative_rotation, dtype=float).ravel()
         if not (load.size == azimuth.size == rotation.size) or load.size < 2:
-            raise DataError("load history: load, azimuth and relative_rotation need one "
-                            "value per step (at least 2 steps)")
-        if not (np.all(np.isfinite(load)) and np.all(np.isfinite(azimuth))
-                and np.all(np.isfinite(rotation))):
+            raise DataError(
+                "load history: load, azimuth and relative_rotation need one "
+                "value per step (at least 2 steps)"
+            )
+        if not (
+            np.all(np.isfinite(load))
+            and np.all(np.isfinite(azimuth))
+            and np.all(np.isfinite(rotation))
+        ):
             raise DataError("load history: values must be finite")
         if np.any(load < 0):
             raise DataError("load history: load magnitudes must be >= 0")
@@ -153,11 +202,21 @@ class JointLoad:
         angle = 2.0 * np.pi * np.arange(steps) / steps
         nan = np.full(steps, np.nan)
         return cls(
-            crank_angle=angle, time=angle / crank_speed, load=load, azimuth=azimuth,
-            relative_rotation=rotation, crank_torque=nan, force_x=load * np.cos(azimuth),
-            force_y=load * np.sin(azimuth), slider_position=nan, rod_angle=nan,
-            contact_lost=False, contact_lost_angles=np.zeros(0), crank_speed=crank_speed,
-            bushing_body=bushing_body, model="history",
+            crank_angle=angle,
+            time=angle / crank_speed,
+            load=load,
+            azimuth=azimuth,
+            relative_rotation=rotation,
+            crank_torque=nan,
+            force_x=load * np.cos(azimuth),
+            force_y=load * np.sin(azimuth),
+            slider_position=nan,
+            rod_angle=nan,
+            contact_lost=False,
+            contact_lost_angles=np.zeros(0),
+            crank_speed=crank_speed,
+            bushing_body=bushing_body,
+            model="history",
         )
 
     @property

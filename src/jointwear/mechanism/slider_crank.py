@@ -59,7 +59,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import ContactLossWarning, ConvergenceError, MechanismError
-from jointwear.mechanism.loads import JointLoad, wrap_angle
+from jointwear.mechanism.loads import JointLoad, bushing_frame
 
 if TYPE_CHECKING:
     from jointwear.config import Config, MechanismConfig
@@ -906,18 +906,9 @@ def massless_link_load(config: Config) -> JointLoad:
     theta = motion.rod_angle
     # exact increment of the rod angle over each step (periodic: step N-1 ends at step 0)
     rod_increment = np.roll(theta, -1) - theta
-    if config.mechanism.bushing_body == "slider":
-        # the bushing does not rotate; the pin turns with the rod
-        azimuth = np.arctan2(force_y, force_x)
-        relative_rotation = rod_increment
-    else:
-        # bushing in the rod end, pin on the slider: the pin presses on it with -J,
-        # seen in the rod's frame; phi_pin - phi_bushing = 0 - theta_2
-        azimuth = np.arctan2(-force_y, -force_x) - theta
-        relative_rotation = -rod_increment
-    # continuous in time, and placed (by a whole turn) so that its mean is in (-pi, pi]
-    azimuth = np.unwrap(azimuth)
-    azimuth = azimuth + (wrap_angle(azimuth.mean()) - azimuth.mean())
+    azimuth, relative_rotation = bushing_frame(
+        force_x, force_y, theta, rod_increment, config.mechanism.bushing_body
+    )
     phi = motion.crank_angle
     return JointLoad(
         crank_angle=phi,
