@@ -171,6 +171,9 @@ def test_crank_not_shorter_than_rod_is_rejected(paper_config_path, crank):
         ("contact.exponent=0", "contact.exponent"),
         ("contact.tolerance=0", "contact.tolerance"),
         ("joint.clearance=true", "joint.clearance"),
+        ('contact.stiffness="2e7 N/m"', "contact.stiffness"),
+        ("contact.stiffness=0", "contact.stiffness"),
+        ('contact.stiffness="2e7 Pa"', "contact.stiffness"),
     ],
 )
 def test_invalid_values_name_their_key(paper_config_path, override, key):
@@ -214,3 +217,17 @@ def test_missing_and_invalid_files(tmp_path):
     bad.write_text("joint = [")
     with pytest.raises(ConfigError, match="not valid TOML"):
         load_config(bad)
+
+
+def test_nlcp_stiffness_units_follow_the_exponent(paper_config_path):
+    # K has the unit N/m^n: a unit string is checked against the configured exponent
+    cfg = load_config(paper_config_path, ['contact.stiffness="2e4 N/mm**1.5"'])
+    assert cfg.contact.stiffness == pytest.approx(2e4 * 1e3**1.5, rel=1e-12)
+    linear = load_config(paper_config_path, ["contact.exponent=1", 'contact.stiffness="3 N/mm"'])
+    assert linear.contact.stiffness == pytest.approx(3e3, rel=1e-12)
+    with pytest.raises(ConfigError, match=r"^contact.stiffness: .* N/m\*\*1.5"):
+        load_config(paper_config_path, ['contact.stiffness="3 N/mm"'])
+    # the default is eq. (2), written into the resolved config
+    default = load_config(paper_config_path)
+    assert default.contact.stiffness is None
+    assert default.to_dict()["contact"]["stiffness"] == pytest.approx(6.708e7, rel=1e-3)

@@ -25,6 +25,7 @@ from pydantic import (
     ConfigDict,
     Field,
     ValidationError,
+    ValidationInfo,
     field_validator,
     model_validator,
 )
@@ -32,7 +33,7 @@ from pydantic import (
 from jointwear.errors import ConfigError
 from jointwear.parameter_sets import get_parameter_set
 from jointwear.registry import suggest
-from jointwear.units import to_si
+from jointwear.units import to_si, to_si_unit
 
 __all__ = [
     "Config",
@@ -160,6 +161,26 @@ class ContactConfig(_Section):
     spring_area: Annotated[float | None, _si("area"), Field(gt=0)] = None
     balance: Literal["paper", "equilibrium"] = "paper"
     nlcp_variant: Literal["paper", "mesh-independent"] = "paper"
+    #: NLCP spring stiffness K [N/m^n]; None: eq. (2), 4/3 E* sqrt(R_p)
+    stiffness: float | None = None
+
+    @field_validator("stiffness", mode="before")
+    @classmethod
+    def _stiffness_in_si(cls, value: Any, info: ValidationInfo) -> Any:
+        # the unit of K depends on the exponent (N/m**n): converted here, where the
+        # (already validated) exponent is known
+        if value is None:
+            return None
+        exponent = info.data.get("exponent")
+        if exponent is None:
+            raise ValueError("needs a valid contact.exponent")
+        try:
+            stiffness = to_si_unit(value, f"N/m**{exponent:g}", "§")
+        except ConfigError as exc:
+            raise ValueError(str(exc).removeprefix("§: ")) from None
+        if not stiffness > 0:
+            raise ValueError(f"must be > 0, got {value!r}")
+        return stiffness
 
     @field_validator("model")
     @classmethod
@@ -261,11 +282,30 @@ class Config(_Section):
             return self.contact.spring_area
         return self.default_spring_area
 
+    @property
+    def nlcp_stiffness(self) -> float:
+        """NLCP spring stiffness ``K`` [N/m^n]: ``contact.stiffness`` or eq. (2)."""
+        if self.contact.stiffness is not None:
+            return self.contact.stiffness
+        from jointwear.contact.nlcp import stiffness
+
+        pin, bushing = self.materials.pin, self.materials.bushing
+        return float(
+            stiffness(
+                self.joint.pin_radius,
+                pin.youngs_modulus,
+                pin.poisson_ratio,
+                bushing.youngs_modulus,
+                bushing.poisson_ratio,
+            )
+        )
+
     def to_dict(self) -> dict[str, Any]:
         """Fully resolved config as plain data (SI numbers, every default written)."""
         data = self.model_dump(mode="json")
         data["mechanism"]["rod_inertia"] = self.mechanism.rod_centroidal_inertia
         data["contact"]["spring_area"] = self.spring_area
+        data["contact"]["stiffness"] = self.nlcp_stiffness
         return data
 
     def to_toml(self) -> str:

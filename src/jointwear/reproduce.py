@@ -35,7 +35,10 @@ __all__ = [
     "check_trends",
     "deviation",
     "reproduce",
+    "run_cases",
     "sensitivity",
+    "variant_record",
+    "wear_budget",
 ]
 
 
@@ -114,8 +117,15 @@ def _metrics(summary: dict[str, Any]) -> tuple[float, float, float]:
 # ---------------------------------------------------------------- trends
 @dataclass(frozen=True)
 class Trend:
+    """A trend the paper states, and how to check it on a set of case summaries.
+
+    ``budget_pairs`` lists (from, to) cases whose wear volumes the report splits
+    into Archard's factors (:func:`wear_budget`) to show where a change comes from.
+    """
+
     statement: str
     check: Callable[[dict[str, dict[str, Any]]], tuple[bool, str]]
+    budget_pairs: tuple[tuple[str, str], ...] = ()
 
 
 def _grows(results, low, high, keys=("peak", "width", "mass"), shrink=()):
@@ -163,6 +173,9 @@ TRENDS = (
             lambda r, m: _grows(
                 r, f"table3_{m}_240rpm", f"table4_{m}_clearance_0.2mm", keys=("mass",)
             )
+        ),
+        budget_pairs=tuple(
+            (f"table3_{m}_240rpm", f"table4_{m}_clearance_0.2mm") for m in ("nlcp", "winkler")
         ),
     ),
     Trend(
@@ -216,6 +229,7 @@ TRENDS = (
     Trend(
         "larger clearance (0.05 -> 0.2 mm, 120 rpm, 10000 r, NLCP) -> larger mass",
         lambda r: _grows(r, "table5_nlcp_10000r", "fig15_nlcp_clearance_0.2mm", keys=("mass",)),
+        budget_pairs=(("table5_nlcp_10000r", "fig15_nlcp_clearance_0.2mm"),),
     ),
 )
 
@@ -232,7 +246,7 @@ def check_trends(summaries: dict[str, dict[str, Any]]) -> list[dict[str, Any]]:
         for name, row in PAPER_ROWS.items()
     }
     out = []
-    for trend in TRENDS:
+    for number, trend in enumerate(TRENDS, start=1):
         try:
             ok, detail = trend.check(summaries)
         except KeyError:
@@ -243,11 +257,39 @@ def check_trends(summaries: dict[str, dict[str, Any]]) -> list[dict[str, Any]]:
             paper_ok, paper_detail = None, "figure only, no table values"
         out.append(
             {
+                "id": f"T{number}",
                 "statement": trend.statement,
                 "holds": bool(ok),
                 "detail": detail,
                 "paper_tables_hold": paper_ok,
                 "paper_detail": paper_detail,
+                "budget": _budget_ratios(summaries, trend.budget_pairs),
+            }
+        )
+    return out
+
+
+def _budget_ratios(
+    summaries: dict[str, dict[str, Any]], pairs: tuple[tuple[str, str], ...]
+) -> list[dict[str, Any]]:
+    """Ratios (to / from) of the factors of Archard's global balance, per case pair."""
+    out = []
+    for low, high in pairs:
+        try:
+            a, b = summaries[low]["budget"], summaries[high]["budget"]
+            volume = summaries[high]["wear_volume_m3"] / summaries[low]["wear_volume_m3"]
+        except KeyError:
+            continue
+        out.append(
+            {
+                "from": low,
+                "to": high,
+                "radius": b["radius_m"] / a["radius_m"],
+                "load_rotation": b["load_rotation_n_rad"] / a["load_rotation_n_rad"],
+                "kappa": b["kappa"] / a["kappa"],
+                "kappa_from": a["kappa"],
+                "kappa_to": b["kappa"],
+                "volume": volume,
             }
         )
     return out
@@ -271,9 +313,22 @@ def calibrate_on_paper(
     return calibrate_metrics(config, targets, parameters)
 
 
+def _eq2_stiffness_over_pi(config: Config) -> float:
+    """NLCP ``K`` of eq. (2) read with ``sigma = (1 - nu^2) / E`` (no pi) [N/m^1.5].
+
+    Eq. (3) defines ``sigma = (1 - nu^2) / (pi E)``, which cancels the ``pi`` of
+    eq. (2); Lankarani-Nikravesh and Flores write the same stiffness with
+    ``sigma = (1 - nu^2) / E`` and no ``pi`` in ``K``. Mixing the two conventions
+    gives ``K / pi``: a slip an implementation can make, and one that reproduces the
+    paper's NLCP wear widths (docs/reproduction.md).
+    """
+    return config.replace({"contact.stiffness": None}).nlcp_stiffness / math.pi
+
+
 #: alternative readings of what the paper leaves open, each re-calibrated on the
-#: calibration row and re-predicting the one-revolution rows (no per-row tuning)
-SENSITIVITY = {
+#: calibration row and re-predicting every case (no per-row tuning). A value may be a
+#: callable of the calibration case's config.
+SENSITIVITY: dict[str, dict[str, Any]] = {
     "paper's sliding reading (contact azimuth)": {"simulation.sliding": "contact-azimuth"},
     "constrained Winkler modulus": {"contact.foundation_modulus": "constrained"},
     "spring pushing the slider towards the crank": {"mechanism.spring_mode": "push"},
@@ -283,58 +338,138 @@ SENSITIVITY = {
         "joint.axial_length": 0.020,
         "joint.bushing_thickness": 0.0025,
     },
+    # NLCP's K does not enter the (Winkler) calibration row: the calibrated values are
+    # the default's, and only the NLCP predictions change
+    "NLCP stiffness K / pi (eq. 2 with sigma = (1 - nu^2) / E)": {
+        "contact.stiffness": _eq2_stiffness_over_pi,
+    },
 }
 
 
-def sensitivity(overrides: dict[str, Any] | None = None) -> list[dict[str, Any]]:
-    """Re-run the calibration protocol under each alternative reading in ``SENSITIVITY``.
+def run_cases(
+    names: list[str],
+    overrides: dict[str, Any],
+    progress: Callable[[str, int, int], None] | None = None,
+) -> tuple[dict[str, dict[str, Any]], dict[str, Any]]:
+    """Run paper cases with dotted-key overrides.
 
-    Returns, per variant, the calibrated values and the deviation from the paper
-    of every one-revolution row (Tables 3 and 4).
+    Returns
+    -------
+    summaries : dict
+        Per case, the ``run --json`` summary plus ``peak`` [m], ``width`` [deg],
+        ``mass`` [kg] and ``budget`` (:func:`wear_budget`).
+    results : dict
+        Per case, the :class:`~jointwear.simulation.WearResult`.
     """
     from jointwear.simulation import Simulation
 
-    rows = [n for n, r in PAPER_ROWS.items() if r.table in ("Table 3", "Table 4")]
+    summaries: dict[str, dict[str, Any]] = {}
+    results: dict[str, Any] = {}
+    for i, name in enumerate(names):
+        if progress is not None:
+            progress(name, i, len(names))
+        result = Simulation(case_config(name, overrides)).run()
+        summary = result.summary()
+        summary.update(zip(("peak", "width", "mass"), _metrics(summary), strict=True))
+        summary["budget"] = wear_budget(result)
+        summaries[name] = summary
+        results[name] = result
+    return summaries, results
+
+
+def wear_budget(result: Any) -> dict[str, float]:
+    """What a run's wear volume is made of, by Archard's law summed over the bushing.
+
+    Summing ``dh_j = K_d p_j ds`` over the bushing surface gives the volume per step
+    ``K_d ds sum_j F_j``: the sliding distance times the sum of the spring forces,
+    which exceeds the joint load ``N`` by the spread factor
+    ``kappa = sum_j F_j / sum_j F_j cos(beta_j) >= 1`` (a wide contact arc carries
+    the load at a slant). With ``ds = R_b |d phi|``,
+
+    .. math:: V = K_d \\, R_b \\, \\bar\\kappa \\sum_k N_k |\\Delta\\varphi_k| \\times
+              \\text{revolutions}.
+
+    Parameters
+    ----------
+    result : WearResult
+        A finished run.
+
+    Returns
+    -------
+    dict
+        ``radius_m`` (sliding radius ``R_b``), ``load_rotation_n_rad`` (``sum_k N_k
+        |dphi_k|`` over one revolution [N rad]), ``kappa`` (the run's mean spread
+        factor [-], from its wear volume).
+    """
+    ds = result.dataset
+    config = result.config
+    radius = config.joint.bushing_radius
+    load_sliding = float(np.sum(ds["joint_load"].values * ds["sliding_distance"].values))
+    revolutions = int(ds["update_revolution"].values[-1])
+    volume = float(ds["wear_volume"].values[-1])
+    wear_coefficient = config.materials.bushing.wear_coefficient
+    return {
+        "radius_m": radius,
+        "load_rotation_n_rad": load_sliding / radius,
+        "kappa": volume / (wear_coefficient * load_sliding * revolutions),
+    }
+
+
+def variant_record(
+    label: str,
+    settings: dict[str, Any],
+    calibrated: dict[str, float],
+    summaries: dict[str, dict[str, Any]],
+) -> dict[str, Any]:
+    """Deviations, the ratios the paper's trends rest on, and the trend verdicts of one reading."""
+    deviations = {
+        name: {
+            key: deviation(summaries[name][key], getattr(row, key))
+            for key in ("peak", "width", "mass")
+        }
+        for name, row in PAPER_ROWS.items()
+        if name in summaries
+    }
+
+    def ratio(key: str, high: str, low: str) -> float:
+        try:
+            return summaries[high][key] / summaries[low][key]
+        except KeyError:
+            return math.nan
+
+    trends = check_trends(summaries)
+    return {
+        "variant": label,
+        "settings": settings,
+        "calibrated": calibrated,
+        "deviations": deviations,
+        "mass_ratio_240_120": ratio("mass", "table3_winkler_240rpm", "table3_winkler_120rpm"),
+        "nlcp_winkler_peak_ratio": ratio("peak", "table3_nlcp_120rpm", "table3_winkler_120rpm"),
+        "nlcp_winkler_width_ratio": ratio("width", "table3_nlcp_120rpm", "table3_winkler_120rpm"),
+        "trends_holding": [t["id"] for t in trends if t["holds"]],
+        "trends_failing": [t["id"] for t in trends if not t["holds"]],
+    }
+
+
+def sensitivity(
+    overrides: dict[str, Any] | None = None, names: list[str] | None = None
+) -> list[dict[str, Any]]:
+    """Re-run the calibration protocol under each alternative reading in ``SENSITIVITY``.
+
+    Each variant is calibrated on the calibration row (the unknowns it leaves free) and
+    predicts every case in ``names`` (default all); see :func:`variant_record`.
+    """
+    names = names or case_names()
+    base_config = case_config(CALIBRATION_CASE, overrides)
     out = []
     for label, variant in SENSITIVITY.items():
-        base = {**(overrides or {}), **variant}
-        free = [p for p in CALIBRATION_PARAMETERS if p.key not in variant]
+        resolved = {k: v(base_config) if callable(v) else v for k, v in variant.items()}
+        base = {**(overrides or {}), **resolved}
+        free = [p for p in CALIBRATION_PARAMETERS if p.key not in resolved]
         calibration = calibrate_on_paper(base, free)
-        settings = {**base, **calibration.values}
-        deviations = {}
-        for name in rows:
-            summary = Simulation(case_config(name, settings)).run().summary()
-            row = PAPER_ROWS[name]
-            ours = _metrics(summary)
-            deviations[name] = {
-                key: deviation(value, paper)
-                for key, value, paper in zip(
-                    ("peak", "width", "mass"), ours, (row.peak, row.width, row.mass), strict=True
-                )
-            }
-        w120, w240 = (PAPER_ROWS[f"table3_winkler_{s}"] for s in ("120rpm", "240rpm"))
-        ratio = ((1 + deviations["table3_winkler_240rpm"]["mass"]) * w240.mass) / (
-            (1 + deviations["table3_winkler_120rpm"]["mass"]) * w120.mass
-        )
-        out.append(
-            {
-                "variant": label,
-                "settings": variant,
-                "calibrated": calibration.values,
-                "deviations": deviations,
-                "mass_ratio_240_120": ratio,
-                "nlcp_winkler_peak_ratio": _peak_ratio(deviations),
-            }
-        )
+        summaries, _ = run_cases(names, {**base, **calibration.values})
+        out.append(variant_record(label, resolved, calibration.values, summaries))
     return out
-
-
-def _peak_ratio(deviations: dict[str, dict[str, float]]) -> float:
-    """NLCP / Winkler single-revolution wear peak at 120 rpm, from row deviations."""
-    nlcp, winkler = PAPER_ROWS["table3_nlcp_120rpm"], PAPER_ROWS["table3_winkler_120rpm"]
-    return ((1 + deviations["table3_nlcp_120rpm"]["peak"]) * nlcp.peak) / (
-        (1 + deviations["table3_winkler_120rpm"]["peak"]) * winkler.peak
-    )
 
 
 def reproduce(
@@ -368,8 +503,6 @@ def reproduce(
     dict
         ``{"calibration": {...}, "cases": {name: summary}, "trends": [...]}``.
     """
-    from jointwear.simulation import Simulation
-
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
@@ -380,24 +513,24 @@ def reproduce(
         calibration = calibrate_on_paper(overrides)
         overrides.update(calibration.values)
     names = cases or case_names()
-    summaries: dict[str, dict[str, Any]] = {}
-    datasets: dict[str, Any] = {}
-    for i, name in enumerate(names):
-        if progress is not None:
-            progress(name, i, len(names))
-        config = case_config(name, overrides)
-        result = Simulation(config).run()
-        summary = result.summary()
-        summary.update(zip(("peak", "width", "mass"), _metrics(summary), strict=True))
-        summaries[name] = summary
-        datasets[name] = result.dataset
+    summaries, results = run_cases(names, overrides, progress)
+    datasets = {name: result.dataset for name, result in results.items()}
+    for name, result in results.items():
         result.to_netcdf(out / "results" / f"{name}.nc")
     if progress is not None:
         progress("done", len(names), len(names))
     trends = check_trends(summaries)
     if with_sensitivity is None:
         with_sensitivity = calibrate and cases is None
-    variants = sensitivity(overrides_in) if with_sensitivity else []
+    variants = []
+    if with_sensitivity:
+        default = variant_record(
+            "**default** (relative rotation, E, pulling spring, K of eq. 2)",
+            {},
+            {} if calibration is None else calibration.values,
+            summaries,
+        )
+        variants = [default, *sensitivity(overrides_in, names)]
     from jointwear.report import figures, write_report
 
     figure_paths = figures(datasets, out / "figures")

@@ -16,7 +16,7 @@ import pint
 
 from jointwear.errors import ConfigError
 
-__all__ = ["DIMENSIONS", "format_quantity", "to_si", "ureg"]
+__all__ = ["DIMENSIONS", "format_quantity", "to_si", "to_si_unit", "ureg"]
 
 
 def _registry() -> pint.UnitRegistry:
@@ -78,6 +78,35 @@ def to_si(value: Any, kind: str, key: str = "value") -> float:
     ConfigError
         If the string does not parse, has the wrong dimension or is not finite.
     """
+    what = kind.replace("_", " ")
+    article = "an" if what[0] in "aeiou" else "a"
+    expected = f"{article} {what} (e.g. in {DIMENSIONS[kind] or 'dimensionless'})"
+    # a rotational speed may be written as a frequency ("2 Hz", "120 1/min")
+    alternative = "1/[time]" if kind == "angular_velocity" else None
+    return _convert(value, _unit(kind), expected, key, alternative)
+
+
+def to_si_unit(value: Any, unit: str, key: str = "value") -> float:
+    """Convert a number or a string with units to the SI unit ``unit``.
+
+    For quantities whose dimension is not one of :data:`DIMENSIONS`, such as the
+    NLCP stiffness ``K`` in ``N/m**n`` with a configurable exponent ``n``.
+
+    Parameters
+    ----------
+    value : float or str
+        A plain number (taken as SI) or a string with a unit, e.g. ``"2e7 N/m**1.5"``.
+    unit : str
+        The SI unit (pint syntax) the value is expressed in, e.g. ``"N/m**1.5"``.
+    key : str
+        Name used in error messages (dotted config key).
+    """
+    return _convert(value, ureg.Unit(unit), f"a quantity in {unit}", key)
+
+
+def _convert(
+    value: Any, target: pint.Unit, expected: str, key: str, alternative: str | None = None
+) -> float:
     if isinstance(value, bool):
         raise ConfigError(f"{key}: expected a number or a quantity string, got a boolean")
     if isinstance(value, int | float):
@@ -93,16 +122,11 @@ def to_si(value: Any, kind: str, key: str = "value") -> float:
             # a bare number written as text ("7.5e-3") is SI, as a number would be
             magnitude = float(quantity.magnitude)
         else:
-            target = _unit(kind)
             if not quantity.check(target.dimensionality) and not (
-                kind == "angular_velocity" and quantity.check("1/[time]")
+                alternative is not None and quantity.check(alternative)
             ):
-                expected = DIMENSIONS[kind] or "dimensionless"
-                what = kind.replace("_", " ")
-                article = "an" if what[0] in "aeiou" else "a"
                 raise ConfigError(
-                    f"{key}: {value!r} has dimension {quantity.dimensionality}, "
-                    f"expected {article} {what} (e.g. in {expected})"
+                    f"{key}: {value!r} has dimension {quantity.dimensionality}, expected {expected}"
                 )
             magnitude = float(quantity.to(target).magnitude)
     else:

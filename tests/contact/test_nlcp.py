@@ -175,3 +175,26 @@ def test_exponent_parameter(params, pin, circle):
         rtol=1e-12,
         atol=1e-9,
     )
+
+
+def test_explicit_stiffness_replaces_eq2(params, pin, circle):
+    k = contact_law("nlcp", params).coefficient * params.spring_area
+    same = dataclasses.replace(params, stiffness=k)
+    a = solve(circle, pin, [200.0], [0.0], "nlcp", params)
+    b = solve(circle, pin, [200.0], [0.0], "nlcp", same)
+    np.testing.assert_array_equal(a.pressure, b.pressure)
+    # a softer spring: K / pi. Force per spring K delta^1.5 carries the same load, so the
+    # penetration grows and the arc widens; the pressure peak falls
+    soft = dataclasses.replace(params, stiffness=k / np.pi)
+    c = solve(circle, pin, [200.0], [0.0], "nlcp", soft)
+    assert c.penetration[0] > a.penetration[0]
+    assert c.half_angle_left[0] > a.half_angle_left[0]
+    assert c.pressure.max() < a.pressure.max()
+    # the balance still holds and the law is exactly p = (K/pi) delta^1.5 / A
+    delta = circle.penetration(pin, c.eccentricity[0])
+    np.testing.assert_allclose(
+        c.pressure[0],
+        k / np.pi * np.maximum(delta, 0) ** 1.5 / params.spring_area,
+        rtol=1e-12,
+        atol=1e-9,
+    )

@@ -180,3 +180,45 @@ def test_winkler_pressure_is_linear_in_node_penetration(params, pin, circle):
     fine = BushingContour.circle(params.bushing_radius, 720, params.axial_length)
     sol2 = solve(fine, Pin(params.pin_radius), [200.0], [0.0], "asymmetric-winkler", params)
     assert sol2.penetration[0] == pytest.approx(sol.penetration[0], rel=1e-3)
+
+
+# ---------------------------------------------------------------- spread factor
+def test_spread_factor_closed_form_and_its_small_arc_series() -> None:
+    alpha = np.array([1e-3, 0.0299, 0.0301, 0.3, 0.7, np.pi / 2])
+    kappa = winkler.spread_factor(alpha)
+    # pi/2: p ~ cos(phi) over a half circle, sum|p| / sum p cos = 2 / (pi/2) = 4 / pi
+    assert kappa[-1] == pytest.approx(4 / np.pi, rel=1e-14)
+    # small arcs: 1 + alpha^2/10 + 19 alpha^4/4200, continuous across the switch
+    assert kappa[0] - 1 == pytest.approx(1e-7 + 19e-12 / 4200, rel=1e-9)
+    assert kappa[2] - kappa[1] == pytest.approx(0.2 * 0.03 * 2e-4, rel=1e-3)
+    assert np.all(np.diff(kappa) > 0)
+
+
+@pytest.mark.parametrize("load", [50.0, 200.0, 1000.0])
+def test_springs_push_harder_than_the_load_by_the_spread_factor(params, pin, load) -> None:
+    # what Archard's law wears is the sum of the spring forces, not the load: on a circle
+    # the two differ by kappa(alpha), a pure function of the contact half-angle
+    contour = BushingContour.circle(params.bushing_radius, 7200, params.axial_length)
+    sol = solve(contour, pin, [load], [0.3], "winkler", params)
+    law = contact_law("winkler", params)
+    spring_sum = sol.pressure[0].sum() * contour.dtheta * contour.axial_length * contour.radius[0]
+    assert law.exponent == 1.0
+    alpha = sol.half_angle_left[0]
+    # the pin's curvature (s^2 sin^2 / 2 R_p, dropped by kappa's kinematics) is the main error
+    assert spring_sum / load == pytest.approx(winkler.spread_factor(alpha), rel=2e-4)
+    assert spring_sum / load > 1.0
+
+
+def test_spread_factor_falls_with_clearance_at_a_fixed_load(params) -> None:
+    # why the wear mass per revolution falls when only the clearance grows (report T3, T9)
+    ratios = []
+    for clearance in (0.05e-3, 0.1e-3, 0.2e-3, 0.4e-3):
+        p = dataclasses.replace(params, bushing_radius=params.pin_radius + clearance)
+        contour = BushingContour.circle(p.bushing_radius, 3600, p.axial_length)
+        sol = solve(contour, Pin(p.pin_radius), [250.0], [0.0], "winkler", p)
+        area = contour.dtheta * contour.axial_length * contour.radius[0]
+        ratios.append(sol.pressure[0].sum() * area / 250.0)
+    assert np.all(np.diff(ratios) < 0)
+    # 0.05 mm: a +-35 deg arc springs ~3.7 % harder than the load; 0.4 mm: under 1 %
+    assert ratios[0] > 1.03
+    assert ratios[-1] < 1.01

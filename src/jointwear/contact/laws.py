@@ -66,6 +66,9 @@ class ContactParameters:
         NLCP spring area ``A`` of eq. (7) [m^2].
     nlcp_variant : {"paper", "mesh-independent"}
         How NLCP springs turn pressure into force (see :mod:`jointwear.contact.nlcp`).
+    stiffness : float, optional
+        NLCP spring stiffness ``K`` [N/m^n]; ``None`` (default) takes eq. (2),
+        :func:`jointwear.contact.nlcp.stiffness`.
     """
 
     pin_radius: float
@@ -80,6 +83,7 @@ class ContactParameters:
     foundation_modulus: str = "youngs"
     spring_area: float = math.nan
     nlcp_variant: str = "paper"
+    stiffness: float | None = None
 
     def __post_init__(self) -> None:
         if math.isnan(self.spring_area):
@@ -102,6 +106,7 @@ class ContactParameters:
             foundation_modulus=config.contact.foundation_modulus,
             spring_area=config.spring_area,
             nlcp_variant=config.contact.nlcp_variant,
+            stiffness=config.contact.stiffness,
         )
 
     @property

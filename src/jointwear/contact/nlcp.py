@@ -26,6 +26,13 @@ default the area of a 1 degree spring at the unworn radius,
 over the nodes' own areas ``r_j dtheta b``, so results converge as ``N`` grows
 and coincide with the paper's form at 1 degree spacing.
 
+Stiffness
+---------
+``contact.stiffness`` overrides ``K``. Eq. (2)'s ``pi`` cancels against eq. (3)'s
+``sigma = (1 - nu^2) / (pi E)``; Lankarani-Nikravesh write ``sigma = (1 - nu^2) / E``
+without either ``pi``, and mixing the conventions gives ``K / pi``, a reading that
+reproduces the paper's NLCP wear widths (docs/reproduction.md).
+
 References
 ----------
 .. [1] The NLCP paper, eqs. (2), (7).
@@ -89,13 +96,15 @@ def pressure(
 
 def spring_law(parameters: ContactParameters) -> PowerLaw:
     """NLCP spring law from contact parameters (see the module notes on variants)."""
-    k = stiffness(
-        parameters.pin_radius,
-        parameters.pin_youngs_modulus,
-        parameters.pin_poisson_ratio,
-        parameters.bushing_youngs_modulus,
-        parameters.bushing_poisson_ratio,
-    )
+    k = parameters.stiffness
+    if k is None:
+        k = stiffness(
+            parameters.pin_radius,
+            parameters.pin_youngs_modulus,
+            parameters.pin_poisson_ratio,
+            parameters.bushing_youngs_modulus,
+            parameters.bushing_poisson_ratio,
+        )
     force_area = parameters.spring_area if parameters.nlcp_variant == "paper" else None
     return PowerLaw(
         k / parameters.spring_area, parameters.exponent, name="nlcp", force_area=force_area

@@ -34,7 +34,7 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.contact.laws import ContactParameters, PowerLaw
 from jointwear.errors import ConfigError
 
-__all__ = ["circle_force", "foundation_modulus", "pressure", "spring_law"]
+__all__ = ["circle_force", "foundation_modulus", "pressure", "spread_factor", "spring_law"]
 
 
 def foundation_modulus(youngs_modulus: float, poisson_ratio: float, kind: str = "youngs") -> float:
@@ -161,6 +161,35 @@ def circle_force(
         )
     )
     return force, alpha
+
+
+def spread_factor(half_angle: ArrayLike) -> NDArray[np.float64]:
+    """Sum of the spring forces over the load they carry, on a circle [-].
+
+    A contact arc carries the load at a slant: the springs push with
+    ``sum_j F_j`` while only ``sum_j F_j cos(phi_j) = F`` balances the load. For
+    linear springs and small-clearance kinematics (``p ~ cos(phi) - cos(alpha)``)
+
+    .. math:: \\kappa(\\alpha) = \\frac{\\int p \\, d\\phi}{\\int p \\cos\\phi \\, d\\phi}
+              = \\frac{2 (\\sin\\alpha - \\alpha \\cos\\alpha)}{\\alpha - \\sin\\alpha \\cos\\alpha}
+              \\approx 1 + \\frac{\\alpha^2}{10}.
+
+    Archard's law wears volume in proportion to ``sum_j F_j``, so ``kappa`` is the
+    factor by which a wide contact wears more than its load alone would say.
+
+    Parameters
+    ----------
+    half_angle : array_like
+        Contact half-angle ``alpha`` [rad], in ``(0, pi/2]``.
+    """
+    alpha = np.asarray(half_angle, dtype=float)
+    sin, cos = np.sin(alpha), np.cos(alpha)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        exact = 2 * (sin - alpha * cos) / (alpha - sin * cos)
+    # small arcs: the closed form loses ~eps / alpha^3 to cancellation, the series
+    # (next term ~4e-4 alpha^6) is the better of the two below 0.03 rad
+    series = 1 + alpha**2 / 10 + alpha**4 * (19 / 4200)
+    return np.where(alpha < 0.03, series, exact)
 
 
 def spring_law(parameters: ContactParameters) -> PowerLaw:
