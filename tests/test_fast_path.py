@@ -15,7 +15,7 @@ import pytest
 
 from jointwear import Simulation
 from jointwear.config import Config, load_config
-from jointwear.contact import solve_contact
+from jointwear.contact import balance, solve_contact
 from jointwear.geometry import BushingContour
 
 from .conftest import REPO
@@ -254,6 +254,51 @@ def test_reference_step_is_the_paper_balance(table5):
     force = pressure * law.force_area
     assert abs(float(np.sum(force * np.cos(phi))) - 250.0) < 1e-9
     assert offset > contour.radius.min() - simulation.pin.radius
+
+
+# ---------------------------------------------------------------- cold starts
+
+
+def test_cold_revolution_balances_in_two_evaluations(table5):
+    """A cold revolution on the unworn bushing: the node-free guess (~1e-5 of the load off)
+    and a fourth-order first step balance (almost) every load with two residual
+    evaluations, the step and the check."""
+    simulation = Simulation(table5)
+    solution = simulation.contact(simulation.initial_contour())
+    assert np.mean(solution.iterations == 2) >= 0.95
+    assert solution.iterations.max() <= 3
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_coarse_pass_guesses_a_worn_contour(table5, model):
+    """A cold batch on a worn contour solves every 8th load with two steps and one more,
+    unevaluated (polish), and interpolates the rest: most guesses are within ~1e-5 of the
+    penetration, none far off, and the fine pass takes two or three evaluations a load."""
+    simulation = Simulation(table5.replace({"contact.model": model}))
+    contour = contour_for(simulation, "worn")
+    load = simulation.joint_load
+    guess, widest = balance._coarse_guess(
+        contour,
+        simulation.pin,
+        simulation.law,
+        load.load,
+        load.azimuth,
+        1e-12,
+        100,
+        table5.joint.bushing_thickness,
+        None,
+    )
+    solution = simulation.contact(contour)
+    along = solution.eccentricity[:, 0] * np.cos(load.azimuth) + solution.eccentricity[
+        :, 1
+    ] * np.sin(load.azimuth)
+    error = np.abs(guess - along) / (along - (contour.radius.min() - simulation.pin.radius))
+    assert np.median(error) < 1e-4
+    assert error.max() < 1e-2
+    # the window is 1.05 times the widest coarse contact + 3 nodes
+    half = np.maximum(solution.half_angle_left, solution.half_angle_right).max()
+    assert abs(widest - half) < 0.05 * half
+    assert solution.iterations.mean() <= 3.0
 
 
 # ---------------------------------------------------------------- buffers and caches

@@ -152,3 +152,82 @@ def test_stiff_equation_converges_to_round_off():
     np.testing.assert_allclose(result.x, 1 / 3, rtol=4 * np.finfo(float).eps)
     assert abs(result.residual[2]) <= 1e-12  # the well-scaled one meets atol itself
     assert result.iterations.max() < 70
+
+
+# ---------------------------------------------------------------- second derivative, polish
+
+POWER = 10.0 ** np.random.default_rng(7).uniform(-3, 3, M)
+
+
+def power_law(x, index):
+    """f = x^2.5 - c (x >= 0): the shape of a contact's force against its penetration."""
+    lift = np.maximum(x, 0.0)
+    return lift**2.5 - POWER[index], 2.5 * lift**1.5, lift**2.5 + POWER[index]
+
+
+def power_law_with_second(x, index):
+    return (*power_law(x, index), 3.75 * np.sqrt(np.maximum(x, 0.0)))
+
+
+def power_law_with_third(x, index):
+    return (*power_law_with_second(x, index), 1.875 / np.sqrt(np.maximum(x, 1e-300)))
+
+
+def power_law_without_second(x, index):
+    """Returns a second derivative, but never computes it (all NaN)."""
+    return (*power_law(x, index), np.full(x.shape, np.nan))
+
+
+@pytest.mark.parametrize(
+    ("higher", "lower_order", "offset"),
+    [
+        # f'': Chebyshev's step (third order); from 1 % off two steps reach round-off
+        # (three evaluations) where Newton needs three steps
+        (power_law_with_second, power_law, 0.01),
+        # f''' as well: a Newton step on the cubic Taylor polynomial follows the Chebyshev
+        # step (fourth order); from 5 % off two steps, where Chebyshev alone needs three
+        (power_law_with_third, power_law_with_second, 0.05),
+    ],
+)
+def test_higher_derivatives_give_higher_order_steps(higher, lower_order, offset):
+    root = POWER**0.4
+    lower, upper = np.zeros(M), 2 * root + 1
+    start = root * (1 + offset)
+    fast = bracketed_newton(higher, start, lower, upper, atol=0.0)
+    slow = bracketed_newton(lower_order, start, lower, upper, atol=0.0)
+    assert fast.converged.all()
+    assert slow.converged.all()
+    np.testing.assert_allclose(fast.x, root, rtol=4 * np.finfo(float).eps)
+    np.testing.assert_allclose(slow.x, root, rtol=4 * np.finfo(float).eps)
+    assert fast.iterations.max() == 3
+    assert slow.iterations.min() == 4
+
+
+def test_missing_second_derivative_falls_back_to_the_curvature():
+    """A NaN second derivative is "not computed": the step is the one ``curvature`` gives."""
+    root = POWER**0.4
+    lower, upper, start = np.zeros(M), 2 * root + 1, root * 1.01
+    without = bracketed_newton(
+        power_law_without_second, start, lower, upper, atol=0.0, curvature=0.6
+    )
+    three = bracketed_newton(power_law, start, lower, upper, atol=0.0, curvature=0.6)
+    np.testing.assert_array_equal(without.x, three.x)
+    np.testing.assert_array_equal(without.iterations, three.iterations)
+
+
+def test_polish_takes_the_last_step_of_a_loose_solve():
+    """rtol = 1e-3 stops at |f| ~ 6e-6 (x 2e-6 off); with polish x takes one more,
+    unevaluated Newton step (1.6e-12 off) while the reported residual stays the evaluated one."""
+
+    def square(x, index):
+        return x * x - 2.0, 2 * x, x * x + 2.0
+
+    args = (square, np.ones(3), np.zeros(3), np.full(3, 2.0))
+    loose = bracketed_newton(*args, atol=0.0, rtol=1e-3)
+    polished = bracketed_newton(*args, atol=0.0, rtol=1e-3, polish=True)
+    assert loose.converged.all()
+    assert polished.converged.all()
+    np.testing.assert_array_equal(polished.iterations, loose.iterations)
+    np.testing.assert_array_equal(polished.residual, loose.residual)
+    assert np.all(np.abs(loose.x - np.sqrt(2)) > 1e-7)
+    assert np.all(np.abs(polished.x - np.sqrt(2)) < 1e-11)

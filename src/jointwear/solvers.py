@@ -21,10 +21,10 @@ __all__ = ["RootResult", "bracketed_newton"]
 
 FloatArray = NDArray[np.float64]
 
-#: ``func(x, index) -> (residual, derivative, scale)`` for the problems ``index``.
-#: ``scale`` is the size of the terms summed into the residual; it sets the
-#: round-off floor of the tolerance.
-Residual = Callable[[FloatArray, NDArray[np.intp]], tuple[FloatArray, FloatArray, FloatArray]]
+#: ``func(x, index) -> (residual, derivative, scale[, second[, third derivative]])`` for
+#: the problems ``index``. ``scale`` is the size of the terms summed into the residual;
+#: it sets the round-off floor of the tolerance.
+Residual = Callable[[FloatArray, NDArray[np.intp]], tuple[FloatArray, ...]]
 
 
 @dataclass(frozen=True)
@@ -61,6 +61,7 @@ def bracketed_newton(
     rtol: float = 8 * np.finfo(float).eps,
     max_iterations: int = 100,
     curvature: float = 0.0,
+    polish: bool = False,
 ) -> RootResult:
     """Solve many increasing scalar equations ``f_i(x_i) = 0`` at once.
 
@@ -70,9 +71,15 @@ def bracketed_newton(
     Parameters
     ----------
     func : callable
-        ``func(x, index)`` returns ``(f, df/dx, scale)`` for problems ``index``. A NaN
-        derivative means "not computed": the last derivative ``func`` gave for that
-        problem is reused (a chord step); with none yet, the step is a bisection.
+        ``func(x, index)`` returns ``(f, df/dx, scale)`` for problems ``index``,
+        optionally followed by ``d2f/dx2`` and ``d3f/dx3``. A NaN derivative means "not
+        computed": the last first derivative ``func`` gave for that problem is reused (a
+        chord step); with none yet, the step is a bisection. A second derivative makes
+        the step Chebyshev's, ``h = -f/f' (1 + f f'' / (2 f'^2))`` (third order); where it
+        is NaN (or not returned) ``curvature`` stands in for it. A third derivative adds
+        one Newton step on the cubic Taylor polynomial ``f + f' h + f'' h^2 / 2 + f''' h^3
+        / 6`` from there (fourth order; not where it is NaN, nor where it would change
+        the step by half of itself or more).
     x0 : ndarray
         Initial guesses (clipped into the bracket).
     lower, upper : ndarray
@@ -89,6 +96,11 @@ def bracketed_newton(
         ``f'' / f' = kappa f' / g``): the step ``-f/f'`` becomes
         ``-f/f' (1 + kappa f / (2 scale))``, which removes most of Newton's quadratic
         error term. 0: plain Newton. Only the step changes, never the convergence test.
+    polish : bool
+        Let a problem that converges take the step its last evaluation gives, too (where
+        that step stays inside the bracket). ``x`` is then not the point whose residual
+        is reported, but usually far closer to the root: for starting points from a loose
+        tolerance, not for roots.
 
     Returns
     -------
@@ -112,7 +124,7 @@ def bracketed_newton(
             # while every problem is active (the costly first iterations) no gathers
             whole = active.size == size
             xa = x.copy() if whole else x[active]
-            f, df, scale = func(xa, active)
+            f, df, scale, *second = func(xa, active)
             if whole:
                 iterations += 1
                 residual[:] = f
@@ -128,7 +140,30 @@ def bracketed_newton(
             below = f < 0
             lo_a = np.where(below, xa, lo_old)
             hi_a = np.where(below, hi_old, xa)
-            if half_curvature:
+            if second:
+                # f'' / (2 f'^2) where func gave f'', else kappa / (2 scale)
+                half = 0.5 * second[0] / (df * df)
+                if half_curvature:
+                    half = np.where(np.isnan(half), half_curvature / scale, half)
+                else:
+                    half = np.where(np.isnan(half), 0.0, half)
+                change = -f / df * (1.0 + half * f)
+                if len(second) > 1:
+                    # one Newton step on the cubic Taylor polynomial from the Chebyshev step;
+                    # a refinement only: where it would move the step by half of itself or
+                    # more, the expansion is not to be trusted (keep the Chebyshev step)
+                    d2, d3 = second
+                    have = ~np.isnan(d3)
+                    if have.any():
+                        h = change[have]
+                        a, b, c = df[have], d2[have], d3[have]
+                        value = f[have] + h * (a + h * (0.5 * b + h * c / 6.0))
+                        correction = value / (a + h * (b + 0.5 * h * c))
+                        change[have] = np.where(
+                            np.abs(correction) <= 0.5 * np.abs(h), h - correction, h
+                        )
+                step = xa + change
+            elif half_curvature:
                 step = xa - f / df * (1.0 + half_curvature * f / scale)
             else:
                 step = xa - f / df
@@ -146,13 +181,13 @@ def bracketed_newton(
                 resolved = stalled & ~done & (size_f <= 2 * np.abs(df) * np.maximum(bracket, ulp))
                 done = done | resolved
             converged[active[done]] = True
+            move = keep | (done & inside) if polish else keep
             if whole:
                 lo, hi, slope = lo_a, hi_a, df
-                x[keep] = new_x[keep]
+                x[move] = new_x[move]
                 active = active[keep]
             else:
                 lo[active], hi[active], slope[active] = lo_a, hi_a, df
-                rows = active[keep]
-                x[rows] = new_x[keep]
-                active = rows
+                x[active[move]] = new_x[move]
+                active = active[keep]
     return RootResult(x=x, residual=residual, iterations=iterations, converged=converged)

@@ -7,7 +7,8 @@ import dataclasses
 import numpy as np
 import pytest
 
-from jointwear.contact import CONTACT_MODELS, contact_law, solve, solve_contact
+from jointwear.contact import CONTACT_MODELS, CallableSpringLaw, contact_law, solve, solve_contact
+from jointwear.contact import balance as load_balance
 from jointwear.errors import ContactError, GeometryError
 from jointwear.geometry import BushingContour, Pin
 
@@ -465,3 +466,129 @@ def test_wear_pocket_beyond_the_pins_reach(params):
     # a load line straight into the pocket (gap 3 mm > R_p): out of reach at once
     with pytest.raises(ContactError, match="out of the pin's reach"):
         solve(pocket, Pin(rp), [1.0], [0.5], "winkler", small)
+
+
+# ---------------------------------------------------------------- cold starts
+
+
+def revolution_loads(count: int = 360) -> tuple[np.ndarray, np.ndarray]:
+    """A smooth load history like a revolution's: 130-420 N, the direction sweeping 60 deg."""
+    t = np.linspace(0, 2 * np.pi, count, endpoint=False)
+    return 275 + 125 * np.sin(t) + 20 * np.sin(3 * t), np.radians(180 + 30 * np.sin(t))
+
+
+@pytest.mark.parametrize(("model", "accuracy"), [("nlcp", 2e-5), ("asymmetric-winkler", 5e-4)])
+def test_circle_guess_is_within_the_node_ripple(params, pin, circle, model, accuracy):
+    """The node-free contact of a pin in a circle starts every load within the ripple of
+    where the contact edges fall between nodes (~1e-5 of the penetration for NLCP, more for
+    linear springs), and estimates the widest contact to a fraction of a node."""
+    law = contact_law(model, params)
+    load, azimuth = revolution_loads()
+    guess, widest = load_balance._circle_guess(circle, pin, law, load, azimuth)
+    sol = solve_contact(circle, pin, load, azimuth, law)
+    along, _ = pin_frame(sol, azimuth)
+    clearance = circle.radius[0] - pin.radius
+    assert np.max(np.abs(guess - along) / (along - clearance)) < accuracy
+    half = np.maximum(sol.half_angle_left, sol.half_angle_right)
+    assert abs(widest - half.max()) < 0.1 * circle.dtheta
+    # a long batch is solved at Chebyshev points of ln F and interpolated; a short one
+    # load by load: the same offsets
+    few, _ = load_balance._circle_guess(circle, pin, law, load[:5], azimuth[:5])
+    np.testing.assert_allclose(few, guess[:5], rtol=1e-9)
+
+
+def test_circle_guess_only_where_the_springs_lie_on_a_circle(params, pin, circle, worn):
+    load, azimuth = revolution_loads(8)
+    nlcp = contact_law("nlcp", params)
+    assert load_balance._circle_guess(worn, pin, nlcp, load, azimuth) is None
+    custom = CallableSpringLaw(lambda delta: 1e12 * delta)
+    assert load_balance._circle_guess(circle, pin, custom, load, azimuth) is None
+    # the symmetric law's springs lie on the circle through each compression centre
+    winkler = contact_law("winkler", params)
+    guess, _ = load_balance._circle_guess(worn, pin, winkler, load, azimuth)
+    sol = solve_contact(worn, pin, load, azimuth, winkler)
+    along, _ = pin_frame(sol, azimuth)
+    np.testing.assert_allclose(guess, along, rtol=1e-4)
+    # no load: the pin touches
+    zero, widest = load_balance._circle_guess(circle, pin, nlcp, np.zeros(3), azimuth[:3])
+    np.testing.assert_array_equal(zero, circle.radius[0] - pin.radius)
+    assert widest == 0.0
+
+
+@pytest.mark.parametrize("model", SPRING_MODELS)
+@pytest.mark.parametrize("balance_mode", ["paper", "equilibrium"])
+@pytest.mark.parametrize("clearance", [0.05e-3, 0.2e-3])
+def test_cold_start_on_a_circle_gives_the_warm_answer(params, pin, model, balance_mode, clearance):
+    """Cold (node-free guess, fourth-order steps, window from the estimated contact) and warm
+    (offsets 3 % off, 90 degree window) solves agree, with zero loads in the batch; every
+    load balanced to its bound."""
+    joint = dataclasses.replace(params, bushing_radius=params.pin_radius + clearance)
+    circle = BushingContour.circle(joint.bushing_radius, 360, joint.axial_length)
+    law = contact_law(model, joint)
+    load, azimuth = revolution_loads()
+    load[::37] = 0.0
+    cold = solve_contact(circle, pin, load, azimuth, law, balance=balance_mode)
+    along, _ = pin_frame(cold, azimuth)
+    warm = solve_contact(
+        circle, pin, load, azimuth, law, balance=balance_mode, initial_offset=1.03 * along
+    )
+    scale = np.maximum(np.abs(warm.pressure).max(axis=1, keepdims=True), 1e-300)
+    assert np.max(np.abs(cold.pressure - warm.pressure) / scale) <= 1e-9
+    area = force_area(model, circle, joint, azimuth)
+    _, _, total = resultants(cold, circle, area, azimuth)
+    assert np.all(np.abs(cold.normal_force - load) <= bound(total))
+    assert np.all(cold.pressure[load == 0] == 0.0)
+    if balance_mode == "paper" and model == "nlcp":
+        # the fourth-order first step lands within round-off for (almost) every load
+        assert np.mean(cold.iterations[load > 0] == 2) >= 0.95
+    assert cold.iterations.max() <= 8
+
+
+@pytest.mark.parametrize("model", ["asymmetric-winkler", "nlcp", "mesh-independent nlcp"])
+def test_unworn_window_equals_the_general_window(params, pin, circle, model):
+    """On an unworn bushing the window keeps one gap per row (a column) and one spring area.
+    A contour that differs only at a node out of every load's reach takes the general
+    window (gathered gaps and areas) and the conformal start: the same answer."""
+    if model == "mesh-independent nlcp":
+        params, model = dataclasses.replace(params, nlcp_variant="mesh-independent"), "nlcp"
+    law = contact_law(model, params)
+    radius = circle.radius.copy()
+    radius[180] += 1e-6  # 180 degrees from the loads, outwards
+    bumped = BushingContour(radius, circle.axial_length, circle.original_radius)
+    load = np.array([0.0, 0.01, 1.0, 50.0, 200.0, 400.0, 1000.0])
+    azimuth = np.radians([0.0, 10.0, -20.0, 30.0, 5.5, -0.3, 12.0])
+    plain = solve_contact(circle, pin, load, azimuth, law)
+    general = solve_contact(bumped, pin, load, azimuth, law)
+    # (both balanced to 1e-12 N: for 10 mN that is 1e-10 of the load)
+    scale = np.maximum(general.pressure.max(axis=1, keepdims=True), 1e-300)
+    assert np.max(np.abs(plain.pressure - general.pressure) / scale) <= 1e-9
+    np.testing.assert_allclose(plain.eccentricity, general.eccentricity, rtol=1e-11, atol=1e-20)
+
+
+def test_widest_is_the_largest_half_angle():
+    """The coarse pass sizes the window from the rows in the outermost contact columns only."""
+    rng = np.random.default_rng(5)
+    dtheta = np.radians(1.0)
+    for _ in range(300):
+        rows, half = rng.integers(1, 30), rng.integers(2, 20)
+        offsets = np.arange(-half, half + 1) * dtheta
+        phi = offsets + rng.uniform(-0.5, 0.5, (rows, 1)) * dtheta
+        depth = rng.normal(size=phi.shape) - rng.uniform(0, 3) * np.abs(phi) / (half * dtheta)
+        contact = depth > 0
+        left, right = load_balance._half_angles(phi, depth, contact)
+        widest = max(left.max(), right.max())
+        assert load_balance._widest(phi, depth, contact) == widest
+
+
+@pytest.mark.parametrize("model", ["winkler", "asymmetric-winkler"])
+def test_reach_on_the_load_line_equals_the_general_bound(params, pin, worn, model):
+    """Paper mode's reach bound (pin on the load line): the general one, nothing sideways."""
+    law = contact_law(model, params)
+    azimuth = RNG.uniform(-np.pi, np.pi, 50)
+    centre = worn.radius_at(np.mod(azimuth, 2 * np.pi))
+    gap = worn.radius.min() - pin.radius
+    for scale in (0.5, 1.0, 1.01, 1.3, 3.0):
+        along = scale * gap * RNG.uniform(0.9, 1.1, azimuth.size)
+        on_line = load_balance._reach_width(worn, pin, law, centre, along, None)
+        general = load_balance._reach_width(worn, pin, law, centre, along, np.zeros_like(along))
+        assert on_line == general
