@@ -80,13 +80,26 @@ def capacity(model, params, contour, pin, azimuth):
     centre = contour.radius_at(np.mod(azimuth, 2 * np.pi))
     s = min(0.999 * pin.radius, centre - pin.radius + params.bushing_thickness)
     e = s * np.array([np.cos(azimuth), np.sin(azimuth)])
-    if law.symmetric:
-        circle = BushingContour.circle(centre, contour.nodes, contour.axial_length)
-        delta = circle.penetration(pin, e)
-    else:
-        delta = contour.penetration(pin, e)
+    delta = penetration(law, contour, pin, e[None, :], np.array([azimuth]))[0]
     force = law.pressure(delta) * areas(model, params, contour, np.array([azimuth]))[0]
     return float(force @ np.cos(contour.theta - azimuth))
+
+
+def penetration(law, contour, pin, eccentricity, azimuth):
+    """Spring penetrations as the model sees them [m], one row per pin position.
+
+    The symmetric (traditional Winkler) law puts its springs on the circle through each
+    load's compression centre, not on the worn contour.
+    """
+    if not law.symmetric:
+        return contour.penetration(pin, eccentricity)
+    centre = contour.radius_at(np.mod(azimuth, 2 * np.pi))
+    return np.stack(
+        [
+            BushingContour.circle(c, contour.nodes, contour.axial_length).penetration(pin, e)
+            for c, e in zip(centre, eccentricity, strict=True)
+        ]
+    )
 
 
 def check_solution(sol, load, azimuth, model, params, contour, pin, balance):
@@ -101,7 +114,7 @@ def check_solution(sol, load, azimuth, model, params, contour, pin, balance):
     assert np.all((sol.half_angle_left >= 0) & (sol.half_angle_left <= np.pi))
     assert np.all((sol.half_angle_right >= 0) & (sol.half_angle_right <= np.pi))
     # balance, with the round-off floors: sum of forces, and one ulp of the pin position
-    delta = contour.penetration(pin, sol.eccentricity)
+    delta = penetration(law, contour, pin, sol.eccentricity, azimuth)
     s = np.hypot(sol.eccentricity[:, 0], sol.eccentricity[:, 1])
     stiffness = (law.pressure_derivative(delta) * area).sum(1)
     tol = np.maximum.reduce([np.full(load.size, 1e-12), 8 * EPS * total, 8 * EPS * s * stiffness])
@@ -164,7 +177,7 @@ def test_penetration_grows_with_load(joint, load, ratio, azimuth):
     law = contact_law(model, params)
     area = areas(model, params, contour, both)
     forces = (
-        law.pressure(contour.penetration(pin, sol.eccentricity))
+        law.pressure(penetration(law, contour, pin, sol.eccentricity, both))
         * area
         * np.cos(contour.theta - azimuth)
     ).sum(1)
