@@ -278,16 +278,13 @@ class Simulation:
             state, rate, self.config.simulation.revolutions - state.revolution
         )
         worn = update_contour(contour, rate * interval, self.config.joint.bushing_thickness)
-        offset = _along_load(solution, self.joint_load.azimuth)
         new = replace(
             state,
             revolution=state.revolution + interval,
             wear_depth=worn.wear_depth,
             wear_rate=rate,
             interval=interval,
-            warm_offset=offset,
-            warm_slope=_slope(state.warm_offset, offset, state.interval),
-            window=_window_nodes(solution, contour),
+            **self._warm_start(solution, contour, state.warm_offset, state.interval),
         )
         self._record(new, new.wear_depth, solution)
         return new
@@ -317,10 +314,8 @@ class Simulation:
             base = replace(
                 base,
                 wear_rate=self.wear_per_revolution(solution),
-                warm_offset=_along_load(solution, self.joint_load.azimuth),
-                warm_slope=None,
-                window=_window_nodes(solution, contour),
                 next_interval=1,
+                **self._warm_start(solution, contour),
             )
         remaining = sim.revolutions - base.revolution
         rate0 = base.wear_rate
@@ -347,17 +342,14 @@ class Simulation:
             )
         increment = 0.5 * interval * (rate0 + rate)
         worn = update_contour(self._contour(base.wear_depth), increment, thickness)
-        offset = _along_load(solution, self.joint_load.azimuth)
         new = replace(
             base,
             revolution=base.revolution + interval,
             wear_depth=worn.wear_depth,
             wear_rate=rate,
             interval=interval,
-            warm_offset=offset,
-            warm_slope=_slope(base.warm_offset, offset, interval),
-            window=_window_nodes(solution, contour),
             next_interval=adaptive_interval(error, interval, sim.adaptive_tolerance),
+            **self._warm_start(solution, contour, base.warm_offset, interval),
         )
         # saved profiles inside the jump: the corrector's quadratic in the revolution
         for target in self._profile_revolutions():
@@ -368,6 +360,25 @@ class Simulation:
                 )
         self._record(new, new.wear_depth, solution)
         return new
+
+    def _warm_start(
+        self,
+        solution: ContactSolution,
+        contour: BushingContour,
+        previous_offset: FloatArray | None = None,
+        interval: int = 1,
+    ) -> dict[str, Any]:
+        """State fields that warm-start the next contact solve from ``solution``.
+
+        ``previous_offset`` is the offset of the solve ``interval`` revolutions before
+        (None: no trend to extrapolate).
+        """
+        offset = _along_load(solution, self.joint_load.azimuth)
+        return {
+            "warm_offset": offset,
+            "warm_slope": _slope(previous_offset, offset, interval),
+            "window": _window_nodes(solution, contour),
+        }
 
     def run(
         self,

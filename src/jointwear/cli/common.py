@@ -47,6 +47,17 @@ SetOpt = Annotated[
     ),
 ]
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print exactly one JSON object on stdout.")]
+MeasuredArg = Annotated[
+    Path,
+    typer.Argument(
+        help="Measured inner-surface points: CSV with an 'x,y' header (units in brackets, "
+        "e.g. 'x \\[mm],y \\[mm]') or two whitespace-separated columns.",
+        show_default=False,
+    ),
+]
+ThresholdOpt = Annotated[
+    float, typer.Option("--threshold", help="Wear width threshold, fraction of the peak.")
+]
 UnitsOpt = Annotated[
     str | None,
     typer.Option("--units", help="Length unit of columns without one (default m), e.g. mm."),

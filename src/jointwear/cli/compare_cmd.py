@@ -13,20 +13,20 @@ import numpy as np
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, UnitsOpt, app, console, emit_json
+from jointwear.cli.common import (
+    JsonOpt,
+    MeasuredArg,
+    ThresholdOpt,
+    UnitsOpt,
+    app,
+    console,
+    emit_json,
+)
 from jointwear.errors import ConfigError, DataError
 
 ResultArg = Annotated[
     Path,
     typer.Argument(help="A result.nc written by `jointwear run --out`.", show_default=False),
-]
-MeasuredArg = Annotated[
-    Path,
-    typer.Argument(
-        help="Measured inner-surface points: CSV with an 'x,y' header (units in brackets, "
-        "e.g. 'x \\[mm],y \\[mm]') or two whitespace-separated columns.",
-        show_default=False,
-    ),
 ]
 FitOpt = Annotated[
     str,
@@ -51,9 +51,6 @@ OutOpt = Annotated[
         help="Write compare_polar and compare_profile plots (PNG+SVG), comparison.json and "
         "profiles.csv here.",
     ),
-]
-ThresholdOpt = Annotated[
-    float, typer.Option("--threshold", help="Wear width threshold, fraction of the peak.")
 ]
 FloorOpt = Annotated[
     str,

@@ -2,14 +2,21 @@
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import Annotated, Any
 
 import numpy as np
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, UnitsOpt, app, console, emit_json
+from jointwear.cli.common import (
+    JsonOpt,
+    MeasuredArg,
+    ThresholdOpt,
+    UnitsOpt,
+    app,
+    console,
+    emit_json,
+)
 from jointwear.errors import ConfigError
 from jointwear.measurement.fit import CircleFit, fit_circle_least_squares, fit_circle_robust
 from jointwear.measurement.io import length_unit_factor, read_points
@@ -20,22 +27,11 @@ from jointwear.measurement.profile import (
 )
 from jointwear.units import to_si
 
-MeasuredArg = Annotated[
-    Path,
-    typer.Argument(
-        help="Measured inner-surface points: CSV with an 'x,y' header (units in brackets, "
-        "e.g. 'x \\[mm],y \\[mm]') or two whitespace-separated columns.",
-        show_default=False,
-    ),
-]
 RadiusOpt = Annotated[
     str,
     typer.Option("--radius", help='Unworn bushing radius R0, e.g. "7.5 mm".', show_default=False),
 ]
 NodesOpt = Annotated[int, typer.Option("--nodes", help="Nodes of the profile grid.")]
-ThresholdOpt = Annotated[
-    float, typer.Option("--threshold", help="Wear width threshold, fraction of the peak.")
-]
 FloorOpt = Annotated[
     str,
     typer.Option(

@@ -46,7 +46,7 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.contact.laws import CallableSpringLaw, PowerLaw, SpringLaw
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ContactError, ConvergenceError
-from jointwear.geometry.contour import BushingContour, Pin
+from jointwear.geometry.contour import BushingContour, Pin, RadiusStencil
 from jointwear.solvers import bracketed_newton
 
 __all__ = ["solve_contact"]
@@ -107,20 +107,11 @@ class _Geometry:
         self.right = self.phi < 0
         self.unit = np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
         self.unit_perp = np.stack([-self.unit[:, 1], self.unit[:, 0]], axis=1)
-        # the stencil of BushingContour.radius_at(wrapped), same arithmetic
-        position = np.mod(wrapped, 2 * np.pi) / dtheta
-        floor = np.floor(position)
-        self.below = floor.astype(int) % nodes
-        self.above = (self.below + 1) % nodes
-        self.frac = position - floor
-        self.frac_below = 1 - self.frac
         for array in vars(self).values():
             array.setflags(write=False)
+        #: the contour's radius on each load line, from its node radii
+        self.radius_at_loads = RadiusStencil.at(nodes, wrapped)
         self._scaled: dict[tuple[float, int], FloatArray] = {}
-
-    def radius_at_loads(self, radius: FloatArray) -> FloatArray:
-        """The contour's radius on each load line, as ``BushingContour.radius_at`` [m]."""
-        return self.frac_below * radius[self.below] + self.frac * radius[self.above]
 
     def scaled_cos(self, factor: Any, power: int = 1) -> FloatArray | None:
         """``factor * cos**power`` for a scalar factor (cached), else None."""
@@ -816,6 +807,19 @@ def _circle_offsets(contour, pin_radius, law, load, radius, steps: int = 2) -> F
     return delta
 
 
+def _bracket(win, contour, pin_radius, load, max_penetration):
+    """Bracket ``[lower, upper]`` of the pin offset along each load line [m].
+
+    ``upper``: 0.999 of the pin radius (the ray geometry needs ``|e| < R_p``), or the
+    wall thickness beyond the compression centre, never below ``lower``.
+    """
+    lower = _lower_bound(win, contour, pin_radius, load)
+    upper = np.full(lower.shape, 0.999 * pin_radius)
+    if max_penetration is not None:
+        upper = np.minimum(upper, win.centre_radius - pin_radius + max_penetration)
+    return lower, np.maximum(upper, lower)
+
+
 def _coarse_indices(size: int) -> NDArray[np.intp]:
     """Every ``_COARSE_STRIDE``-th of ``size`` loads, and the last one."""
     coarse = np.arange(0, size, _COARSE_STRIDE)
@@ -863,11 +867,7 @@ def _coarse_guess(contour, pin, law, load, azimuth, tolerance, max_iterations, m
     width = min(-(-width // 4) * 4, full)
     while True:
         win = _Window(contour, c_azimuth, width, law, pin.radius, centre_radius=centre)
-        lower = _lower_bound(win, contour, pin.radius, c_load)
-        upper = np.full(lower.shape, 0.999 * pin.radius)
-        if max_penetration is not None:
-            upper = np.minimum(upper, centre - pin.radius + max_penetration)
-        upper = np.maximum(upper, lower)
+        lower, upper = _bracket(win, contour, pin.radius, c_load, max_penetration)
         if start is not None:
             guess = start
         elif depth0 is not None:
@@ -961,10 +961,7 @@ def _solve_window(
 ):
     radius_pin = pin.radius
     r_pin2 = radius_pin**2
-    lower = _lower_bound(win, contour, radius_pin, load)
-    upper = np.full(lower.shape, 0.999 * radius_pin)
-    if max_penetration is not None:
-        upper = np.minimum(upper, win.centre_radius - radius_pin + max_penetration)
+    lower, upper = _bracket(win, contour, radius_pin, load, max_penetration)
     # the ray geometry needs |e| < R_p: a radial gap as wide as the pin is out of its reach
     out_of_reach = (lower >= 0.999 * radius_pin) & (load > 0)
     if np.any(out_of_reach):
@@ -973,7 +970,6 @@ def _solve_window(
             f"load: {load[i]:.6g} N at {np.degrees(azimuth[i]):.4g} deg: the bushing is out of "
             f"the pin's reach (radial gap {lower[i]:.3g} m >= pin radius {radius_pin:.3g} m)"
         )
-    upper = np.maximum(upper, lower)
     area = win.area
     geometry = win.geometry
 

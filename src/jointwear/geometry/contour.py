@@ -24,7 +24,14 @@ from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import GeometryError
 
-__all__ = ["BushingContour", "Pin", "node_angles", "ray_distance", "ray_distance_derivative"]
+__all__ = [
+    "BushingContour",
+    "Pin",
+    "RadiusStencil",
+    "node_angles",
+    "ray_distance",
+    "ray_distance_derivative",
+]
 
 FloatArray = NDArray[np.float64]
 
@@ -51,6 +58,38 @@ class Pin:
             raise GeometryError(
                 f"joint.pin_radius: must be a positive finite length, got {self.radius!r}"
             )
+
+
+@dataclass(frozen=True, eq=False)
+class RadiusStencil:
+    """Periodic linear interpolation of node radii at fixed angles.
+
+    Kept apart from :meth:`BushingContour.radius_at` so that a solver that reads the
+    radius at the same angles on many contours computes the stencil once.
+
+    Attributes
+    ----------
+    lower, upper : ndarray of int
+        Nodes either side of each angle.
+    weight : ndarray
+        Weight of ``upper`` (``lower`` gets ``1 - weight``) [-].
+    """
+
+    lower: NDArray[np.intp]
+    upper: NDArray[np.intp]
+    weight: FloatArray
+
+    @classmethod
+    def at(cls, nodes: int, angle: ArrayLike) -> RadiusStencil:
+        """The stencil of ``angle`` [rad] on ``nodes`` equally spaced nodes."""
+        position = np.mod(np.asarray(angle, float), 2 * np.pi) / (2 * np.pi / nodes)
+        floor = np.floor(position)
+        lower = floor.astype(int) % nodes
+        return cls(lower, (lower + 1) % nodes, position - floor)
+
+    def __call__(self, radius: FloatArray) -> FloatArray:
+        """Interpolated radius [m] from the node radii ``radius`` [m]."""
+        return (1 - self.weight) * radius[self.lower] + self.weight * radius[self.upper]
 
 
 @dataclass(frozen=True, eq=False)
@@ -202,11 +241,7 @@ class BushingContour:
 
     def radius_at(self, angle: ArrayLike) -> FloatArray:
         """Periodic linear interpolation of the radius at ``angle`` [rad]."""
-        position = np.mod(np.asarray(angle, float), 2 * np.pi) / self.dtheta
-        lower = np.floor(position).astype(int) % self.nodes
-        frac = position - np.floor(position)
-        upper = (lower + 1) % self.nodes
-        return (1 - frac) * self.radius[lower] + frac * self.radius[upper]
+        return RadiusStencil.at(self.nodes, angle)(self.radius)
 
     def rotated(self, shift: int) -> BushingContour:
         """The contour rotated by ``shift`` nodes (``shift * dtheta`` [rad])."""

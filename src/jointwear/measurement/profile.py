@@ -26,11 +26,11 @@ from jointwear.errors import DataError
 from jointwear.geometry import BushingContour, node_angles
 from jointwear.measurement.fit import CircleFit
 from jointwear.tribology.metrics import (
-    removed_area,
     wear_mass,
     wear_peak,
     wear_volume,
     wear_width,
+    worn_area,
 )
 
 __all__ = [
@@ -282,7 +282,7 @@ def wear_metrics(
     for name, value in (("axial length", axial_length), ("density", density)):
         if value is not None and not (np.isfinite(value) and value > 0):
             raise DataError(f"wear metrics: {name} must be > 0, got {value!r}")
-    area = removed_area(original_radius, original_radius + depth)
+    area = worn_area(original_radius, depth)
     volume = wear_volume(area, axial_length) if axial_length is not None else float("nan")
     mass = (
         wear_mass(area, axial_length, density)

@@ -72,16 +72,14 @@ def removed_area(original_radius: float | ArrayLike, radius: ArrayLike) -> float
         Radius after wear [m].
     """
     radius = np.asarray(radius, dtype=float)
-    original = np.broadcast_to(np.asarray(original_radius, dtype=float), radius.shape)
-    return float(0.5 * np.sum((radius - original) * (radius + original)) * 2 * np.pi / radius.size)
+    return worn_area(original_radius, radius - original_radius)
 
 
 def worn_area(original_radius: float | ArrayLike, wear_depth: ArrayLike) -> float:
     """Area removed by a wear-depth profile, exact for a polar contour [m^2].
 
-    Same as :func:`removed_area` with ``radius = original + wear_depth``, written
-    as ``1/2 sum h_j (2 r_0 + h_j) dtheta`` so that micrometre depths on a
-    millimetre radius keep full precision.
+    :func:`removed_area` in terms of ``h = r - r_0``: ``1/2 sum h_j (2 r_0 + h_j) dtheta``,
+    so that micrometre depths on a millimetre radius keep full precision.
 
     Parameters
     ----------
