@@ -41,7 +41,12 @@ __all__ = [
     "DynamicsConfig",
     "JointConfig",
     "MaterialConfig",
+    "FourBarConfig",
+    "LoadHistoryConfig",
+    "MECHANISM_TYPES",
     "MechanismConfig",
+    "OscillatingConfig",
+    "SliderCrankConfig",
     "SimulationConfig",
     "apply_overrides",
     "config_from_dict",
@@ -75,21 +80,26 @@ Acceleration = Annotated[float, _si("acceleration"), Field(ge=0)]
 Density = Annotated[float, _si("density"), Field(gt=0)]
 WearCoefficient = Annotated[float, _si("wear_coefficient"), Field(ge=0)]
 PoissonRatio = Annotated[float, _si("dimensionless"), Field(gt=-1.0, lt=0.5)]
+Inertia = Annotated[float | None, _si("moment_of_inertia"), Field(ge=0)]
 
 
 class _Section(BaseModel):
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True)
 
 
-class MechanismConfig(_Section):
-    """Slider-crank data (paper Table 1, read in SI) and operating point."""
+class SliderCrankConfig(_Section):
+    """Slider-crank data (paper Table 1, read in SI) and operating point.
 
+    The clearance joint is the one between the connecting rod and the slider.
+    """
+
+    type: Literal["slider-crank"] = "slider-crank"
     crank_length: Length
     rod_length: Length
     crank_mass: NonNegMass
     rod_mass: NonNegMass
     slider_mass: NonNegMass
-    rod_inertia: Annotated[float | None, _si("moment_of_inertia"), Field(ge=0)] = None
+    rod_inertia: Inertia = None
     spring_stiffness: Stiffness
     spring_preload: Force
     spring_mode: Literal["pull", "push"] = "pull"
@@ -98,7 +108,7 @@ class MechanismConfig(_Section):
     bushing_body: Literal["slider", "rod"] = "slider"
 
     @model_validator(mode="after")
-    def _assembles(self) -> MechanismConfig:
+    def _assembles(self) -> SliderCrankConfig:
         if self.crank_length >= self.rod_length:
             raise ValueError(
                 f"mechanism.crank_length: the mechanism cannot assemble with crank_length "
@@ -112,6 +122,207 @@ class MechanismConfig(_Section):
         if self.rod_inertia is not None:
             return self.rod_inertia
         return self.rod_mass * self.rod_length**2 / 12.0
+
+    @property
+    def period(self) -> float:
+        """Duration of one crank revolution [s]."""
+        return 2.0 * math.pi / self.crank_speed
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Names of the clearance joints."""
+        return ("rod-slider",)
+
+    def resolved(self) -> dict[str, Any]:
+        """Keys whose defaults derive from others, written out."""
+        return {"rod_inertia": self.rod_centroidal_inertia}
+
+
+FourBarJoint = Literal["crank-coupler", "coupler-rocker", "rocker-ground"]
+FourBarBody = Literal["crank", "coupler", "rocker", "ground"]
+#: the two bodies of each four-bar joint; the bushing is on the second by default
+FOUR_BAR_JOINT_BODIES: dict[str, tuple[str, str]] = {
+    "crank-coupler": ("crank", "coupler"),
+    "coupler-rocker": ("coupler", "rocker"),
+    "rocker-ground": ("rocker", "ground"),
+}
+
+
+class FourBarConfig(_Section):
+    """Four-bar linkage: ground pivots A = (0, 0) (crank) and D = (ground_length, 0).
+
+    Crank AB turns counter-clockwise at constant speed, coupler BC, rocker DC.
+    Centres of mass at the link midpoints; inertias about the centres default to
+    the slender rod ``m l^2 / 12``. The rocker carries a torque about D
+    (counter-clockwise positive) and a torsional spring towards
+    ``rocker_spring_angle``.
+    """
+
+    type: Literal["four-bar"] = "four-bar"
+    ground_length: Length
+    crank_length: Length
+    coupler_length: Length
+    rocker_length: Length
+    crank_mass: NonNegMass
+    coupler_mass: NonNegMass
+    rocker_mass: NonNegMass
+    crank_inertia: Inertia = None
+    coupler_inertia: Inertia = None
+    rocker_inertia: Inertia = None
+    crank_speed: AngularVelocity
+    gravity: Acceleration = 9.81
+    rocker_torque: Annotated[float, _si("torque")] = 0.0
+    rocker_spring_stiffness: Annotated[float, _si("torsional_stiffness"), Field(ge=0)] = 0.0
+    rocker_spring_angle: Annotated[float, _si("angle"), Field(ge=-4 * math.pi, le=4 * math.pi)] = (
+        0.0
+    )
+    assembly: Literal["open", "crossed"] = "open"
+    clearance_joint: FourBarJoint | list[FourBarJoint] = "coupler-rocker"
+    bushing_body: FourBarBody | list[FourBarBody] | None = None
+
+    @model_validator(mode="after")
+    def _consistent(self) -> FourBarConfig:
+        joints = self.joints
+        if len(set(joints)) != len(joints) or not joints:
+            raise ValueError(
+                "mechanism.clearance_joint: name each joint once (at least one joint)"
+            )
+        bodies = self.bushing_bodies
+        if len(bodies) != len(joints):
+            raise ValueError(
+                f"mechanism.bushing_body: give one body per clearance joint ({len(joints)})"
+            )
+        for joint, body in zip(joints, bodies, strict=True):
+            if body not in FOUR_BAR_JOINT_BODIES[joint]:
+                first, second = FOUR_BAR_JOINT_BODIES[joint]
+                raise ValueError(
+                    f"mechanism.bushing_body: {body!r} is not a body of joint {joint!r} "
+                    f"(choose {first!r} or {second!r})"
+                )
+        from jointwear.mechanism.four_bar import check_four_bar
+
+        check_four_bar(
+            self.ground_length, self.crank_length, self.coupler_length, self.rocker_length
+        )
+        return self
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Names of the clearance joints."""
+        joint = self.clearance_joint
+        return (joint,) if isinstance(joint, str) else tuple(joint)
+
+    @property
+    def bushing_bodies(self) -> tuple[str, ...]:
+        """Body that carries the bushing, per clearance joint."""
+        body = self.bushing_body
+        if body is None:
+            return tuple(FOUR_BAR_JOINT_BODIES[j][1] for j in self.joints)
+        return (body,) if isinstance(body, str) else tuple(body)
+
+    @property
+    def period(self) -> float:
+        """Duration of one crank revolution [s]."""
+        return 2.0 * math.pi / self.crank_speed
+
+    def inertia(self, link: str) -> float:
+        """Centroidal inertia of ``link`` [kg m^2]; ``m l^2 / 12`` unless given."""
+        given = getattr(self, f"{link}_inertia")
+        if given is not None:
+            return given
+        return getattr(self, f"{link}_mass") * getattr(self, f"{link}_length") ** 2 / 12.0
+
+    def resolved(self) -> dict[str, Any]:
+        """Keys whose defaults derive from others, written out."""
+        return {
+            **{f"{link}_inertia": self.inertia(link) for link in ("crank", "coupler", "rocker")},
+            "bushing_body": list(self.bushing_bodies),
+            "clearance_joint": list(self.joints),
+        }
+
+
+class OscillatingConfig(_Section):
+    """Oscillating bearing test: the pin swings ``amplitude`` either way under a load.
+
+    The pin's rotation relative to the bushing is ``amplitude sin(2 pi f t)``; one
+    cycle is one full oscillation (sliding ``4 amplitude R_b``). The load is
+    ``load + load_amplitude cos(2 pi load_harmonic f t + load_phase)``, directed at
+    ``load_angle`` in the bushing's frame, or in the pin's (turning with it).
+    """
+
+    type: Literal["oscillating"] = "oscillating"
+    load: Annotated[float, _si("force"), Field(gt=0)]
+    load_frame: Literal["bushing", "pin"] = "bushing"
+    load_angle: Annotated[float, _si("angle"), Field(ge=-4 * math.pi, le=4 * math.pi)] = 0.0
+    amplitude: Annotated[float, _si("angle"), Field(gt=0, le=4 * math.pi)]
+    frequency: Annotated[float, _si("frequency"), Field(gt=0)]
+    load_amplitude: Force = 0.0
+    load_harmonic: Annotated[int, Field(ge=1, le=1000)] = 1
+    load_phase: Annotated[float, _si("angle"), Field(ge=-4 * math.pi, le=4 * math.pi)] = 0.0
+
+    @model_validator(mode="after")
+    def _load_positive(self) -> OscillatingConfig:
+        if self.load_amplitude > self.load:
+            raise ValueError(
+                f"mechanism.load_amplitude: {self.load_amplitude:g} N exceeds the mean load "
+                f"{self.load:g} N (the load would reverse)"
+            )
+        return self
+
+    @property
+    def period(self) -> float:
+        """Duration of one oscillation [s]."""
+        return 1.0 / self.frequency
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Names of the clearance joints."""
+        return ("bearing",)
+
+    def resolved(self) -> dict[str, Any]:
+        """Keys whose defaults derive from others, written out (none)."""
+        return {}
+
+
+class LoadHistoryConfig(_Section):
+    """One period of a joint's load read from a file (CSV or netCDF).
+
+    ``file`` is relative to the config file. CSV columns ``time``, ``force_x``,
+    ``force_y`` (the force of the pin on the bushing) and ``rotation`` (cumulative
+    rotation of the pin relative to the bushing), each with its unit in brackets;
+    with ``frame = "global"`` the forces are global and a ``bushing_angle`` column
+    gives the bushing's orientation.
+    """
+
+    type: Literal["load-history"] = "load-history"
+    file: Annotated[str, Field(min_length=1)]
+    frame: Literal["bushing", "global"] = "bushing"
+    period: Annotated[float | None, _si("time"), Field(gt=0)] = None
+    load_scale: Annotated[float, Field(gt=0, le=1e6)] = 1.0
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Names of the clearance joints."""
+        return ("joint",)
+
+    def resolved(self) -> dict[str, Any]:
+        """Keys whose defaults derive from others, written out (none)."""
+        return {}
+
+
+#: ``mechanism.type`` -> its config section; the single source of the type names
+MECHANISM_TYPES: dict[str, type[_Section]] = {
+    cls.model_fields["type"].default: cls
+    for cls in (SliderCrankConfig, FourBarConfig, OscillatingConfig, LoadHistoryConfig)
+}
+
+#: mechanism types whose load comes from dynamics (the others prescribe it)
+DYNAMIC_TYPES: tuple[str, ...] = ("slider-crank", "four-bar")
+
+MechanismConfig = Annotated[
+    SliderCrankConfig | FourBarConfig | OscillatingConfig | LoadHistoryConfig,
+    Field(discriminator="type"),
+]
 
 
 class JointConfig(_Section):
@@ -265,6 +476,21 @@ class Config(_Section):
     dynamics: DynamicsConfig = DynamicsConfig()
     simulation: SimulationConfig = SimulationConfig()
 
+    @model_validator(mode="after")
+    def _dynamics_fits_mechanism(self) -> Config:
+        if self.dynamics.model == "contact-impact" and self.mechanism.type not in DYNAMIC_TYPES:
+            raise ValueError(
+                f"dynamics.model: 'contact-impact' needs a mechanism with inertia "
+                f"({', '.join(repr(t) for t in DYNAMIC_TYPES)}); mechanism.type "
+                f"{self.mechanism.type!r} prescribes its load"
+            )
+        return self
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Names of the mechanism's clearance joints."""
+        return self.mechanism.joints
+
     @property
     def bushing_radius(self) -> float:
         """Unworn bushing inner radius [m]."""
@@ -303,7 +529,7 @@ class Config(_Section):
     def to_dict(self) -> dict[str, Any]:
         """Fully resolved config as plain data (SI numbers, every default written)."""
         data = self.model_dump(mode="json")
-        data["mechanism"]["rod_inertia"] = self.mechanism.rod_centroidal_inertia
+        data["mechanism"].update(self.mechanism.resolved())
         data["contact"]["spring_area"] = self.spring_area
         data["contact"]["stiffness"] = self.nlcp_stiffness
         return data
@@ -374,31 +600,44 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any] | Iterabl
         node[parts[-1]] = value
 
 
-def _field_names(loc: tuple[Any, ...]) -> list[str]:
-    model: Any = Config
-    for part in loc[:-1]:
-        field = model.model_fields.get(part) if hasattr(model, "model_fields") else None
-        if field is None:
-            return []
-        model = field.annotation
-    return list(getattr(model, "model_fields", {}))
+def _walk(loc: tuple[Any, ...]) -> tuple[tuple[Any, ...], Any]:
+    """The config key of an error location and the section model holding its last part.
 
-
-def _key_loc(loc: tuple[Any, ...]) -> tuple[Any, ...]:
-    """The config key of an error location (without pydantic's union-branch tags)."""
+    Pydantic's union-branch tags (the mechanism type of ``mechanism``, the branch of
+    an ``int | Literal`` field) are not part of the key.
+    """
     out: list[Any] = []
     model: Any = Config
+    parent: Any = Config
+    tagged = False
     for part in loc:
         if isinstance(part, int):
+            continue
+        if tagged:  # the discriminator value of the mechanism union
+            tagged = False
+            model = MECHANISM_TYPES.get(part)
+            parent = model
             continue
         if model is None:  # past a value: e.g. 'constrained-int' of an int | Literal field
             break
         out.append(part)
+        parent = model
         field = getattr(model, "model_fields", {}).get(part)
         annotation = getattr(field, "annotation", None)
         is_model = isinstance(annotation, type) and hasattr(annotation, "model_fields")
+        tagged = model is Config and part == "mechanism"
         model = annotation if is_model else None
-    return tuple(out)
+    return tuple(out), parent
+
+
+def _field_names(loc: tuple[Any, ...]) -> list[str]:
+    _, parent = _walk(loc)
+    return list(getattr(parent, "model_fields", {}))
+
+
+def _key_loc(loc: tuple[Any, ...]) -> tuple[Any, ...]:
+    """The config key of an error location (without pydantic's union-branch tags)."""
+    return _walk(loc)[0]
 
 
 def _first_error(errors: list[Any]) -> Mapping[str, Any]:
@@ -443,11 +682,20 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
         Merge the named parameter set's values underneath ``data``.
     """
     data = dict(data)
+    mechanism = data.get("mechanism", {})
+    if not isinstance(mechanism, Mapping):
+        raise ConfigError("mechanism: expected a section")
+    kind = mechanism.get("type", "slider-crank")
+    if not isinstance(kind, str) or kind not in MECHANISM_TYPES:
+        raise ConfigError(
+            f"mechanism.type: {kind!r} is not a mechanism type{suggest(str(kind), MECHANISM_TYPES)}"
+        )
+    data["mechanism"] = {**mechanism, "type": kind}
     if defaults:
         name = data.get("parameter_set", "nlcp-paper")
         if not isinstance(name, str):
             raise ConfigError(f"parameter_set: expected a name, got {name!r}")
-        data = _deep_merge(get_parameter_set(name), data)
+        data = _deep_merge(get_parameter_set(name, kind), data)
     try:
         return Config.model_validate(data)
     except ValidationError as exc:
@@ -491,6 +739,11 @@ def load_config(
     """
     data: dict[str, Any] = {} if path is None else read_toml(path)
     apply_overrides(data, overrides)
+    mechanism = data.get("mechanism")
+    if isinstance(mechanism, dict) and isinstance(mechanism.get("file"), str):
+        # a data file named in a config is found next to the config, wherever it is run
+        base = Path.cwd() if path is None else Path(path).parent
+        mechanism["file"] = str((base / mechanism["file"]).resolve())
     return config_from_dict(data)
 
 

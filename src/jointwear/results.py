@@ -27,7 +27,7 @@ if TYPE_CHECKING:
 
 __all__ = ["build_dataset", "config_of", "read_result", "write_metrics_csv", "write_netcdf"]
 
-#: how many crank angles keep a full pressure distribution
+#: how many steps of the cycle keep a full pressure distribution
 PRESSURE_SNAPSHOTS = 72
 
 _HISTORY_META = {
@@ -56,12 +56,12 @@ def build_dataset(
     from jointwear import __version__
 
     config = simulation.config
-    joint_load = simulation.joint_load
+    cycle = simulation.load_cycle
     nodes = config.contact.nodes
     theta = 2 * np.pi * np.arange(nodes) / nodes
     revolutions = np.array(sorted(state.profiles), dtype=np.int64)
     profiles = np.array([state.profiles[r] for r in revolutions]).reshape(len(revolutions), nodes)
-    steps = joint_load.load.size
+    steps = cycle.steps
     snapshot = np.unique(
         np.linspace(0, steps, min(PRESSURE_SNAPSHOTS, steps), endpoint=False).astype(int)
     )
@@ -80,21 +80,24 @@ def build_dataset(
             "m",
             "final inner radius of the bushing",
         ),
-        "joint_load": _var(("step",), joint_load.load, "N", "joint load magnitude"),
+        "joint_load": _var(("step",), cycle.load, "N", "joint load magnitude"),
         "load_azimuth": _var(
             ("step",),
-            joint_load.azimuth,
+            cycle.azimuth,
             "rad",
             "direction of the load on the bushing, bushing frame",
         ),
         "relative_rotation": _var(
             ("step",),
-            joint_load.relative_rotation,
+            cycle.relative_rotation,
             "rad",
             "rotation of the pin relative to the bushing over the step",
         ),
         "sliding_distance": _var(("step",), sliding, "m", "sliding distance over the step"),
-        "crank_torque": _var(("step",), joint_load.crank_torque, "N m", "crank driving torque"),
+        **{
+            name: _var(("step",), diagnostic.values, diagnostic.units, diagnostic.long_name)
+            for name, diagnostic in cycle.diagnostics.items()
+        },
         "pressure_initial": _var(
             ("snapshot", "theta"),
             initial.pressure[snapshot],
@@ -123,12 +126,13 @@ def build_dataset(
         "theta": _var(("theta",), theta, "rad", "bushing angle"),
         "revolution": _var(("revolution",), revolutions, "1", "revolutions completed"),
         "step": _var(("step",), np.arange(steps), "1", "time step of the revolution"),
-        "crank_angle": _var(("step",), joint_load.crank_angle, "rad", "crank angle"),
+        "phase": _var(("step",), cycle.phase, "rad", "phase of the cycle at the step start"),
+        "time": _var(("step",), cycle.time, "s", "time of the step start"),
         "snapshot": _var(
             ("snapshot",),
-            joint_load.crank_angle[snapshot],
+            cycle.phase[snapshot],
             "rad",
-            "crank angle of the pressure snapshot",
+            "cycle phase of the pressure snapshot",
         ),
         "update": _var(
             ("update",), np.arange(len(state.history["revolution"])), "1", "contour update"
@@ -143,6 +147,10 @@ def build_dataset(
     attrs = {
         "title": "jointwear wear simulation",
         "contact_model": final.model,
+        "mechanism": cycle.mechanism,
+        "dynamics_model": cycle.model,
+        "joint": cycle.joint,
+        "period_s": cycle.period,
         "runtime_s": runtime,
         "jointwear_version": __version__,
         "created": _dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),

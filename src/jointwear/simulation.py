@@ -3,7 +3,7 @@
 Data flows one way through four stages, each a plain function from one small
 data object to the next::
 
-    mechanism.joint_load(config)              -> JointLoad       (load, azimuth, rotation per step)
+    mechanism.load_cycles(config)             -> LoadCycle       (load, azimuth, rotation per step)
     contact.solve(contour, pin, load, ...)    -> ContactSolution (pressure per step and node)
     tribology.archard.wear_depth(p, ds, K_d)  -> wear depth per revolution and node
     geometry.update.update_contour(contour,h) -> BushingContour  (worn contour)
@@ -16,9 +16,14 @@ length is chosen by an error estimate, see :meth:`Simulation._adaptive_step`).
 Without contour update the wear of one revolution
 is simply scaled, so wear grows exactly linearly (paper Fig. 13).
 
-The joint load is computed once: the massless-link dynamics depend on the
+The load cycle is computed once: the massless-link dynamics depend on the
 clearance only through the link length ``e``, a 0.05 mm change of which moves
 the load azimuth by ``e / l2 ~ 2.5e-4`` rad, far below the node spacing.
+
+A mechanism with several clearance joints (``mechanism.clearance_joint`` a list)
+wears each joint on its own contour from its own load cycle; the joints do not
+interact through the (massless-link) loads, so each is its own simulation and the
+results gain a ``joint`` dimension.
 """
 
 from __future__ import annotations
@@ -171,9 +176,11 @@ class Simulation:
     contact_model : str or callable, optional
         Contact model name, a spring law, or ``pressure(penetration)``
         [m -> Pa]; default ``config.contact.model``.
-    joint_load : JointLoad, optional
-        Precomputed joint load per step (default: from ``config`` by
-        :func:`jointwear.mechanism.joint_load`).
+    load_cycle : LoadCycle, optional
+        Precomputed load cycle of the joint (default: from ``config`` by
+        :func:`jointwear.mechanism.load_cycles`).
+    joint : str, optional
+        The clearance joint to simulate; default all of ``config.joints``.
 
     Examples
     --------
@@ -187,28 +194,44 @@ class Simulation:
         self,
         config: Config,
         contact_model: str | Callable[..., Any] | None = None,
-        joint_load: mechanism.JointLoad | None = None,
+        load_cycle: mechanism.LoadCycle | None = None,
+        joint: str | None = None,
     ) -> None:
         self.config = config
         self.parameters = ContactParameters.from_config(config)
         self.contact_model = config.contact.model if contact_model is None else contact_model
         self.law = contact_law(self.contact_model, self.parameters)
         self.pin = Pin(config.joint.pin_radius)
-        self._joint_load = joint_load
+        if joint is not None and joint not in config.joints:
+            from jointwear.errors import ConfigError
+            from jointwear.registry import suggest
+
+            raise ConfigError(f"joint: no clearance joint {joint!r}{suggest(joint, config.joints)}")
+        self._cycles: dict[str, mechanism.LoadCycle] | None = None
+        if load_cycle is not None:
+            self._cycles = {joint or load_cycle.joint: load_cycle}
+            joint = joint or load_cycle.joint
+        self.joint = joint
 
     # ---------------------------------------------------------------- stages
     @property
-    def joint_load(self) -> mechanism.JointLoad:
-        """Stage 1: joint load, azimuth and relative rotation per step."""
-        if self._joint_load is None:
-            self._joint_load = mechanism.joint_load(self.config)
-        return self._joint_load
+    def load_cycles(self) -> dict[str, mechanism.LoadCycle]:
+        """Stage 1: the load cycle of every simulated clearance joint."""
+        if self._cycles is None:
+            cycles = mechanism.load_cycles(self.config)
+            self._cycles = cycles if self.joint is None else {self.joint: cycles[self.joint]}
+        return self._cycles
 
     @property
+    def load_cycle(self) -> mechanism.LoadCycle:
+        """Stage 1: load, azimuth and relative rotation per step (the first joint)."""
+        return next(iter(self.load_cycles.values()))
+
+    @functools.cached_property
     def sliding_distance(self) -> FloatArray:
         """Stage 3a: sliding distance per step [m]."""
         slide = SLIDING_MODELS.get(self.config.simulation.sliding)
-        return slide(self.joint_load, self.config.joint.bushing_radius)
+        return slide(self.load_cycle, self.config.joint.bushing_radius)
 
     def initial_contour(self) -> BushingContour:
         """The unworn bushing."""
@@ -245,8 +268,8 @@ class Simulation:
         return solve_contact(
             contour,
             self.pin,
-            self.joint_load.load,
-            self.joint_load.azimuth,
+            self.load_cycle.load,
+            self.load_cycle.azimuth,
             self.law,
             self.parameters,
             balance=cfg.balance,
@@ -373,7 +396,7 @@ class Simulation:
         ``previous_offset`` is the offset of the solve ``interval`` revolutions before
         (None: no trend to extrapolate).
         """
-        offset = _along_load(solution, self.joint_load.azimuth)
+        offset = _along_load(solution, self.load_cycle.azimuth)
         return {
             "warm_offset": offset,
             "warm_slope": _slope(previous_offset, offset, interval),

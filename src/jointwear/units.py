@@ -47,6 +47,9 @@ DIMENSIONS: dict[str, str] = {
     "wear_coefficient": "1/Pa",
     "moment_of_inertia": "kg*m**2",
     "time": "s",
+    "frequency": "Hz",
+    "torque": "N*m",
+    "torsional_stiffness": "N*m/rad",
     "dimensionless": "",
 }
 

@@ -1,24 +1,29 @@
-"""Mechanism dynamics (stage 1 of the pipeline: crank motion -> joint load).
+"""Mechanism dynamics (stage 1 of the pipeline: the joint's motion -> its load cycle).
 
-A dynamics model turns a :class:`~jointwear.config.Config` into a
-:class:`JointLoad` (load magnitude and azimuth on the bushing, relative rotation
-of pin and bushing, per time step of one crank revolution). Models are selected
-by ``dynamics.model`` through :data:`DYNAMICS_MODELS`:
+A mechanism type (``mechanism.type``) and, for the types with inertia, a dynamics
+model (``dynamics.model``) turn a :class:`~jointwear.config.Config` into one
+:class:`LoadCycle` per clearance joint: load magnitude and azimuth on the bushing
+and the relative rotation of pin and bushing, per time step of one period. The
+registry :data:`MECHANISMS` holds, per type, its dynamics models:
 
-=================  ==========================================================
-``massless-link``  slider-crank, clearance as a massless link along the
-                   load (continuous contact), paper eqs. (10)-(12)
-``contact-impact`` slider-crank with the pin free in the clearance: contact
-                   force law with hysteresis damping, Coulomb friction,
-                   event-driven integration (:mod:`.contact_impact`)
-=================  ==========================================================
+================  =================================================================
+``slider-crank``  the paper's mechanism, clearance between rod and slider
+                  (:mod:`.slider_crank`); ``massless-link`` (paper eqs. 10-12) or
+                  ``contact-impact`` (:mod:`.contact_impact`)
+``four-bar``      crank-rocker four-bar, any of its three moving joints with
+                  clearance (:mod:`.four_bar`); ``massless-link`` or
+                  ``contact-impact``
+``oscillating``   oscillating-bearing test, prescribed load (:mod:`.oscillating`)
+``load-history``  one period of load read from a file (:mod:`.history`)
+================  =================================================================
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
-from jointwear.config import Config
+from jointwear.config import MECHANISM_TYPES, Config
 from jointwear.mechanism import force_laws
 from jointwear.mechanism.contact_impact import (
     ContactImpactSettings,
@@ -27,7 +32,8 @@ from jointwear.mechanism.contact_impact import (
     contact_impact_load,
     solve_contact_impact,
 )
-from jointwear.mechanism.loads import JointLoad, wrap_angle
+from jointwear.mechanism.cycle import Diagnostic, LoadCycle, bushing_azimuth, wrap_angle
+from jointwear.mechanism.oscillating import oscillating_cycle
 from jointwear.mechanism.slider_crank import (
     JointReaction,
     MasslessLinkSolution,
@@ -50,15 +56,20 @@ from jointwear.mechanism.slider_crank import (
     spectral_derivative,
     spring_force,
 )
-from jointwear.registry import Registry
+from jointwear.errors import ConfigError
+from jointwear.registry import Registry, suggest
 
 __all__ = [
     "DYNAMICS_MODELS",
     "DYNAMICS_MODEL_DESCRIPTIONS",
     "ContactImpactSettings",
     "ContactImpactSolution",
+    "MECHANISMS",
+    "Diagnostic",
     "JointContact",
-    "JointLoad",
+    "LoadCycle",
+    "Mechanism",
+    "bushing_azimuth",
     "JointReaction",
     "MasslessLinkSolution",
     "SliderCrank",
@@ -70,7 +81,8 @@ __all__ = [
     "force_laws",
     "ideal_motion",
     "inverse_dynamics",
-    "joint_load",
+    "load_cycle",
+    "load_cycles",
     "load_bandwidth",
     "massless_link_load",
     "rod_angle",
@@ -86,23 +98,103 @@ __all__ = [
     "wrap_angle",
 ]
 
-#: name -> ``(Config) -> JointLoad``
-DYNAMICS_MODELS: Registry[Callable[[Config], JointLoad]] = Registry(
-    "dynamics model", "dynamics.model"
+#: a dynamics model: config -> one load cycle per clearance joint
+CycleModel = Callable[[Config], Mapping[str, LoadCycle]]
+
+
+@dataclass(frozen=True)
+class Mechanism:
+    """A mechanism type: what it is and how its load cycles are computed.
+
+    Attributes
+    ----------
+    description : str
+        One line for ``jointwear mechanisms``.
+    models : mapping of str to callable
+        Dynamics model name -> ``(Config) -> {joint: LoadCycle}``. A type whose load
+        is prescribed has the single model ``"prescribed"``, used whatever
+        ``dynamics.model`` says.
+    """
+
+    description: str
+    models: Mapping[str, CycleModel]
+
+
+def _single(function: Callable[[Config], LoadCycle]) -> CycleModel:
+    def cycles(config: Config) -> dict[str, LoadCycle]:
+        cycle = function(config)
+        return {cycle.joint: cycle}
+
+    return cycles
+
+
+def _four_bar(model: str) -> CycleModel:
+    def cycles(config: Config) -> dict[str, LoadCycle]:
+        from jointwear.mechanism import four_bar
+
+        return four_bar.four_bar_cycles(config, model)
+
+    return cycles
+
+
+def _history(config: Config) -> dict[str, LoadCycle]:
+    from jointwear.mechanism.history import history_cycle
+
+    cycle = history_cycle(config)
+    return {cycle.joint: cycle}
+
+
+#: ``mechanism.type`` -> :class:`Mechanism`; its names are those of the config schema
+MECHANISMS: Registry[Mechanism] = Registry("mechanism type", "mechanism.type")
+MECHANISMS.add(
+    "slider-crank",
+    Mechanism(
+        "the paper's slider-crank, clearance between connecting rod and slider",
+        {
+            "massless-link": _single(massless_link_load),
+            "contact-impact": _single(contact_impact_load),
+        },
+    ),
 )
-DYNAMICS_MODELS.add("massless-link", massless_link_load)
-DYNAMICS_MODELS.add("contact-impact", contact_impact_load)
+MECHANISMS.add(
+    "four-bar",
+    Mechanism(
+        "crank-rocker four-bar linkage, clearance in any of its moving joints",
+        {"massless-link": _four_bar("massless-link"), "contact-impact": _four_bar("contact-impact")},
+    ),
+)
+MECHANISMS.add(
+    "oscillating",
+    Mechanism(
+        "oscillating-bearing test: pin swinging +-amplitude under a radial load",
+        {"prescribed": oscillating_cycle},
+    ),
+)
+MECHANISMS.add(
+    "load-history",
+    Mechanism(
+        "one period of joint load from a file (CSV or netCDF), e.g. another multibody code",
+        {"prescribed": _history},
+    ),
+)
+if set(MECHANISMS) != set(MECHANISM_TYPES):  # pragma: no cover - a programming error
+    raise RuntimeError("mechanism registry and config schema disagree on the type names")
+
+#: dynamics model names (``dynamics.model``)
+DYNAMICS_MODELS: Registry[str] = Registry("dynamics model", "dynamics.model")
+DYNAMICS_MODELS.add("massless-link", "massless-link")
+DYNAMICS_MODELS.add("contact-impact", "contact-impact")
 
 DYNAMICS_MODEL_DESCRIPTIONS = {
     "massless-link": "clearance as a massless link along the load, continuous contact "
-    "(eqs. 10-12)",
+    "(eqs. 10-12); for the four-bar the ideal-joint reaction",
     "contact-impact": "pin free in the clearance: contact force law with hysteresis damping "
     "and friction, event-driven integration (no continuous-contact assumption)",
 }
 
 
-def joint_load(config: Config) -> JointLoad:
-    """Joint load over one crank revolution from the model named by ``dynamics.model``.
+def load_cycles(config: Config) -> dict[str, LoadCycle]:
+    """Load cycle of every clearance joint of the configured mechanism.
 
     Parameters
     ----------
@@ -111,11 +203,37 @@ def joint_load(config: Config) -> JointLoad:
 
     Returns
     -------
-    JointLoad
+    dict of str to LoadCycle
+        Joint name -> its load cycle, in the order of ``config.joints``.
 
     Raises
     ------
     ConfigError
-        If ``dynamics.model`` names no registered model.
+        If ``dynamics.model`` names no model of the mechanism type.
     """
-    return DYNAMICS_MODELS.get(config.dynamics.model)(config)
+    mechanism = MECHANISMS.get(config.mechanism.type)
+    models = mechanism.models
+    if "prescribed" in models:
+        return dict(models["prescribed"](config))
+    if config.dynamics.model not in models:
+        DYNAMICS_MODELS.get(config.dynamics.model)
+    return dict(models[config.dynamics.model](config))
+
+
+def load_cycle(config: Config, joint: str | None = None) -> LoadCycle:
+    """Load cycle of one clearance joint (default: the first of ``config.joints``).
+
+    Parameters
+    ----------
+    config : jointwear.config.Config
+        Validated configuration (SI values).
+    joint : str, optional
+        Name of the joint.
+    """
+    cycles = load_cycles(config)
+    if joint is None:
+        return next(iter(cycles.values()))
+    if joint not in cycles:
+        raise ConfigError(f"mechanism.clearance_joint: no clearance joint {joint!r}"
+                          f"{suggest(joint, cycles)}")
+    return cycles[joint]

@@ -79,12 +79,13 @@ from jointwear.contact.laws import ContactParameters, SpringLaw
 from jointwear.errors import ConfigError, ContactLossWarning, ConvergenceError, JointwearError
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.mechanism import force_laws
-from jointwear.mechanism.loads import JointLoad, bushing_frame
+from jointwear.mechanism.cycle import LoadCycle
 from jointwear.mechanism.slider_crank import (
     SliderCrank,
     ideal_motion,
     inverse_dynamics,
     massless_link_load,
+    slider_crank_cycle,
     solve_massless_link,
 )
 
@@ -986,7 +987,7 @@ class ContactImpactSolution:
 
     Attributes
     ----------
-    load : JointLoad
+    load : LoadCycle
         Joint load sampled over the recorded revolution (what the wear pipeline
         consumes).
     impacts : int
@@ -1004,7 +1005,7 @@ class ContactImpactSolution:
         RMS and maximum over the samples of ``|F_impact - F_massless|``, the
         difference of the normal-force *vectors* (magnitude and azimuth) from the
         massless-link model [N]; ``nan`` if that model fails.
-    massless : JointLoad or None
+    massless : LoadCycle or None
         The massless-link load it is compared with.
     massless_contact_lost : bool or None
         Whether the massless-link model reports contact loss.
@@ -1020,14 +1021,14 @@ class ContactImpactSolution:
         Wall-clock time of the integration [s].
     """
 
-    load: JointLoad
+    load: LoadCycle
     impacts: int
     free_flight_fraction: float
     max_penetration: float
     peak_load: float
     load_difference_rms: float
     load_difference_max: float
-    massless: JointLoad | None
+    massless: LoadCycle | None
     massless_contact_lost: bool | None
     history: ContactHistory
     system: SliderCrankContactSystem
@@ -1165,11 +1166,6 @@ def solve_contact_impact(
     torque = np.array([r["crank_torque"] for r in records])
     theta_all = states[:, 0]
     theta = theta_all[:-1]
-    increment = np.diff(theta_all)
-    azimuth, relative_rotation = bushing_frame(
-        n_x, n_y, theta, increment, config.mechanism.bushing_body
-    )
-
     record_end = record_start + period
     free = history.free_time(record_start, record_end)
     impacts = int(
@@ -1207,26 +1203,21 @@ def solve_contact_impact(
             ),
         )
 
-    load = JointLoad(
-        crank_angle=phi,
-        time=phi / omega,
+    load = slider_crank_cycle(
+        config,
+        force_x,
+        force_y,
+        theta,
+        np.diff(theta_all),
+        states[:-1, 1],
+        torque,
+        normal_x=n_x,
+        normal_y=n_y,
         load=normal,
-        azimuth=azimuth,
-        relative_rotation=relative_rotation,
-        crank_torque=torque,
-        force_x=force_x,
-        force_y=force_y,
-        slider_position=states[:-1, 1],
-        rod_angle=theta,
-        contact_lost=bool(free > 0.0),
-        contact_lost_angles=phi[step_lost],
-        crank_speed=float(omega),
-        bushing_body=config.mechanism.bushing_body,
         model="contact-impact",
-        iterations=0,
-        converged=True,
+        lost_steps=step_lost,
     )
-    massless: JointLoad | None = None
+    massless: LoadCycle | None = None
     massless_lost: bool | None = None
     rms = peak = math.nan
     if compare:
@@ -1260,10 +1251,10 @@ def solve_contact_impact(
     )
 
 
-def contact_impact_load(config: Config) -> JointLoad:
+def contact_impact_load(config: Config) -> LoadCycle:
     """Joint load over one settled revolution from the contact–impact model.
 
-    Registered as ``dynamics.model = "contact-impact"``.
+    Registered as ``dynamics.model = "contact-impact"`` of the slider-crank.
 
     Parameters
     ----------
@@ -1272,11 +1263,16 @@ def contact_impact_load(config: Config) -> JointLoad:
 
     Returns
     -------
-    JointLoad
+    LoadCycle
         ``load`` is the normal contact force ``F_N`` (zero in free flight),
-        ``azimuth`` the contact normal in the bushing body's frame.
+        ``azimuth`` the contact normal in the bushing body's frame; the extras hold
+        the impacts, the free-flight fraction and the difference from the
+        massless-link load (:meth:`ContactImpactSolution.summary`).
     """
-    return solve_contact_impact(config, compare=False).load
+    from dataclasses import replace
+
+    solution = solve_contact_impact(config)
+    return replace(solution.load, extras={**solution.load.extras, **solution.summary()})
 
 
 def free_pin_impact(

@@ -59,14 +59,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import ContactLossWarning, ConvergenceError, MechanismError
-from jointwear.mechanism.loads import JointLoad, bushing_frame
+from jointwear.mechanism.cycle import Diagnostic, LoadCycle, bushing_azimuth
 
 if TYPE_CHECKING:
-    from jointwear.config import Config, MechanismConfig
+    from jointwear.config import Config, SliderCrankConfig
 
 __all__ = [
     "JointReaction",
     "MasslessLinkSolution",
+    "bushing_frame",
+    "slider_crank_cycle",
     "SliderCrank",
     "SliderCrankMotion",
     "clearance_motion",
@@ -149,12 +151,12 @@ class SliderCrank:
             )
 
     @classmethod
-    def from_config(cls, mechanism: MechanismConfig) -> SliderCrank:
+    def from_config(cls, mechanism: SliderCrankConfig) -> SliderCrank:
         """Build from the ``[mechanism]`` section of a configuration.
 
         Parameters
         ----------
-        mechanism : jointwear.config.MechanismConfig
+        mechanism : jointwear.config.SliderCrankConfig
             Validated ``[mechanism]`` section (SI values); the rod inertia is
             ``rod_centroidal_inertia`` (``m2 l2^2 / 12`` unless given).
         """
@@ -829,7 +831,116 @@ def _contact_loss_message(lost: NDArray[np.bool_], spring_mode: SpringMode) -> s
     )
 
 
-def massless_link_load(config: Config) -> JointLoad:
+def bushing_frame(
+    force_x: ArrayLike,
+    force_y: ArrayLike,
+    rod_angle: ArrayLike,
+    rod_increment: ArrayLike,
+    bushing_body: str,
+) -> tuple[FloatArray, FloatArray]:
+    """Load azimuth and relative rotation in the frame of the body carrying the bushing.
+
+    Parameters
+    ----------
+    force_x, force_y : array_like
+        Global components of ``J``, the force the rod's pin exerts on the slider [N].
+    rod_angle : array_like
+        Rod angle at each step [rad].
+    rod_increment : array_like
+        Rod angle increment over each step [rad].
+    bushing_body : {"slider", "rod"}
+        Body that carries the bushing.
+
+    Returns
+    -------
+    azimuth : ndarray
+        Direction in which the pin presses on the bushing, unwrapped and shifted by
+        whole turns so that its mean lies in (-pi, pi] [rad].
+    relative_rotation : ndarray
+        Increment of ``phi_pin - phi_bushing`` over each step [rad].
+    """
+    fx, fy = np.asarray(force_x, dtype=float), np.asarray(force_y, dtype=float)
+    increment = np.asarray(rod_increment, dtype=float)
+    if bushing_body == "slider":
+        # the bushing does not rotate; the pin turns with the rod
+        return bushing_azimuth(fx, fy), increment
+    # bushing in the rod end, pin on the slider: the pin presses on it with -J,
+    # seen in the rod's frame; phi_pin - phi_bushing = 0 - theta_2
+    return bushing_azimuth(-fx, -fy, np.asarray(rod_angle, dtype=float)), -increment
+
+
+def slider_crank_cycle(
+    config: Config,
+    force_x: FloatArray,
+    force_y: FloatArray,
+    rod_angle: FloatArray,
+    rod_increment: FloatArray,
+    slider_position: FloatArray,
+    crank_torque: FloatArray,
+    normal_x: FloatArray | None = None,
+    normal_y: FloatArray | None = None,
+    **fields,
+) -> LoadCycle:
+    """A slider-crank's load cycle in the bushing frame, its own series as diagnostics.
+
+    Parameters
+    ----------
+    config : jointwear.config.Config
+        Uses ``[mechanism]`` (``crank_speed``, ``bushing_body``).
+    force_x, force_y : ndarray, shape (N,)
+        Global components of ``J``, the force of the rod end on the slider [N].
+    rod_angle, rod_increment : ndarray, shape (N,)
+        Rod angle and its increment over each step [rad].
+    slider_position : ndarray, shape (N,)
+        Slider position ``x_3`` [m].
+    crank_torque : ndarray, shape (N,)
+        Crank driving torque [N m].
+    normal_x, normal_y : ndarray, optional
+        Direction of the contact normal if not along ``J`` (contact-impact) [-].
+    **fields
+        Further :class:`~jointwear.mechanism.cycle.LoadCycle` fields.
+    """
+    mech = config.mechanism
+    steps = force_x.size
+    nx = force_x if normal_x is None else normal_x
+    ny = force_y if normal_y is None else normal_y
+    azimuth, relative_rotation = bushing_frame(nx, ny, rod_angle, rod_increment, mech.bushing_body)
+    load = fields.pop("load", None)
+    diagnostics = {
+        "crank_torque": Diagnostic(crank_torque, "N m", "crank driving torque"),
+        "slider_position": Diagnostic(slider_position, "m", "slider position x_3"),
+        "rod_angle": Diagnostic(rod_angle, "rad", "connecting-rod angle"),
+        "global_force_x": Diagnostic(force_x, "N", "x force of the rod end on the slider"),
+        "global_force_y": Diagnostic(force_y, "N", "y force of the rod end on the slider"),
+    }
+    lost = np.zeros(steps, bool) if fields.get("lost_steps") is None else fields["lost_steps"]
+    extras = {
+        "bushing_body": mech.bushing_body,
+        "spring_mode": mech.spring_mode,
+        "crank_speed_rad_s": float(mech.crank_speed),
+        "crank_speed_rpm": float(mech.crank_speed) * 60.0 / (2.0 * math.pi),
+        # the crank angle of step k is 2 pi k / N (rounded so that it prints as 15.0)
+        "contact_lost_crank_angles_deg": [
+            float(a) for a in np.round(360.0 * np.flatnonzero(lost) / steps, 9)
+        ],
+        "crank_torque_rms_nm": float(np.sqrt(np.mean(crank_torque**2))),
+        "crank_torque_max_abs_nm": float(np.max(np.abs(crank_torque))),
+    }
+    return LoadCycle(
+        time=mech.period * np.arange(steps) / steps,
+        load=np.hypot(force_x, force_y) if load is None else load,
+        azimuth=azimuth,
+        relative_rotation=relative_rotation,
+        period=mech.period,
+        mechanism="slider-crank",
+        joint="rod-slider",
+        diagnostics=diagnostics,
+        extras=extras,
+        **fields,
+    )
+
+
+def massless_link_load(config: Config) -> LoadCycle:
     """Joint load over one revolution from the massless-link model (eqs. 10-12).
 
     Parameters
@@ -840,7 +951,7 @@ def massless_link_load(config: Config) -> JointLoad:
 
     Returns
     -------
-    JointLoad
+    LoadCycle
         Load, its azimuth in the frame of ``mechanism.bushing_body`` and the
         relative rotation of pin and bushing per step.
 
@@ -902,30 +1013,18 @@ def massless_link_load(config: Config) -> JointLoad:
         warnings.warn(message, ContactLossWarning, stacklevel=2)
 
     motion, reaction = solution.motion, solution.reaction
-    force_x, force_y = reaction.force_x, reaction.force_y
     theta = motion.rod_angle
-    # exact increment of the rod angle over each step (periodic: step N-1 ends at step 0)
-    rod_increment = np.roll(theta, -1) - theta
-    azimuth, relative_rotation = bushing_frame(
-        force_x, force_y, theta, rod_increment, config.mechanism.bushing_body
-    )
-    phi = motion.crank_angle
-    return JointLoad(
-        crank_angle=phi,
-        time=phi / omega,
-        load=np.hypot(force_x, force_y),
-        azimuth=azimuth,
-        relative_rotation=relative_rotation,
-        crank_torque=reaction.crank_torque,
-        force_x=force_x,
-        force_y=force_y,
-        slider_position=motion.slider_position,
-        rod_angle=theta,
-        contact_lost=bool(lost.any()),
-        contact_lost_angles=phi[lost],
-        crank_speed=float(omega),
-        bushing_body=config.mechanism.bushing_body,
+    return slider_crank_cycle(
+        config,
+        reaction.force_x,
+        reaction.force_y,
+        theta,
+        # exact increment of the rod angle over each step (periodic: step N-1 ends at step 0)
+        np.roll(theta, -1) - theta,
+        motion.slider_position,
+        reaction.crank_torque,
         model="massless-link",
+        lost_steps=lost,
         iterations=solution.iterations,
         converged=converged,
     )

@@ -1,0 +1,386 @@
+"""The load cycle: the one object between the mechanism and the wear model.
+
+Every mechanism type (``mechanism.type``) and dynamics model hands the rest of the
+pipeline a :class:`LoadCycle`: per time step of one period of the joint's motion,
+the time, the magnitude of the force between pin and bushing, its direction in the
+bushing's frame and the increment of the relative rotation pin - bushing (which
+sets the sliding distance of the Archard step). Nothing downstream of stage 1
+knows which mechanism produced it; mechanism-specific series (crank torque,
+slider position, ...) travel beside it as :attr:`LoadCycle.diagnostics`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+from types import MappingProxyType
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+__all__ = ["Diagnostic", "LoadCycle", "bushing_azimuth", "wrap_angle"]
+
+FloatArray = NDArray[np.float64]
+
+
+def wrap_angle(angle: FloatArray | float) -> FloatArray:
+    """Wrap angles to the interval (-pi, pi] [rad].
+
+    Parameters
+    ----------
+    angle : array_like
+        Angles [rad].
+
+    Returns
+    -------
+    ndarray
+        The same angles in (-pi, pi] [rad].
+    """
+    wrapped = np.mod(np.asarray(angle, dtype=float) + np.pi, 2.0 * np.pi) - np.pi
+    # mod maps +pi to -pi; the interval is closed on the right
+    return np.where(wrapped == -np.pi, np.pi, wrapped)
+
+
+def bushing_azimuth(
+    force_x: ArrayLike, force_y: ArrayLike, bushing_angle: ArrayLike | float = 0.0
+) -> FloatArray:
+    """Direction of the force on the bushing, in the bushing's frame [rad].
+
+    Unwrapped (continuous from step to step) and shifted by whole turns so that its
+    mean lies in (-pi, pi].
+
+    Parameters
+    ----------
+    force_x, force_y : array_like
+        Global components of the force the pin exerts on the bushing [N].
+    bushing_angle : array_like or float
+        Angle of the bushing body's x axis from the global x axis [rad].
+
+    Returns
+    -------
+    ndarray
+        Azimuth of the force, counter-clockwise from the bushing's x axis [rad].
+    """
+    azimuth = np.unwrap(
+        np.arctan2(np.asarray(force_y, dtype=float), np.asarray(force_x, dtype=float))
+        - np.asarray(bushing_angle, dtype=float)
+    )
+    mean = float(azimuth.mean())
+    return azimuth + (wrap_angle(mean) - mean)
+
+
+@dataclass(frozen=True, eq=False)
+class Diagnostic:
+    """A mechanism-specific per-step series that travels beside the cycle.
+
+    Attributes
+    ----------
+    values : ndarray, shape (N,)
+        One value per step, SI [units].
+    units : str
+        Unit of ``values`` (UDUNITS spelling, e.g. ``"N m"``).
+    long_name : str
+        What the series is.
+    """
+
+    values: FloatArray
+    units: str
+    long_name: str
+
+
+@dataclass(frozen=True, eq=False)
+class LoadCycle:
+    """Load on a clearance joint over one period of its motion.
+
+    Step ``k`` (``k = 0 .. N-1``) starts at ``time[k]`` and ends at ``time[k+1]``
+    (``period`` for the last step). Forces and directions are sampled at the start
+    of the step; ``relative_rotation`` is the increment over the step. Steps need
+    not be equally long.
+
+    Attributes
+    ----------
+    time : ndarray, shape (N,)
+        Start of each step, ``time[0] = 0`` [s].
+    load : ndarray, shape (N,)
+        Magnitude of the force between pin and bushing [N]; never negative.
+    azimuth : ndarray, shape (N,)
+        Direction in which the pin presses on the bushing, counter-clockwise from
+        the x axis of the body that carries the bushing [rad]. Unwrapped and shifted
+        by whole turns so that its mean lies in (-pi, pi].
+    relative_rotation : ndarray, shape (N,)
+        Signed increment of ``phi_pin - phi_bushing`` over each step [rad];
+        ``R_b |relative_rotation|`` is the sliding distance of the step.
+    period : float
+        Duration of one cycle [s].
+    mechanism : str
+        Mechanism type that produced the cycle (``mechanism.type``).
+    model : str
+        Dynamics model (``"massless-link"``, ``"contact-impact"``, ``"prescribed"``).
+    joint : str
+        Name of the clearance joint within the mechanism.
+    lost_steps : ndarray of bool, shape (N,)
+        Steps where the model's continuous-contact assumption fails.
+    iterations : int
+        Fixed-point iterations of the dynamics model (0 if none).
+    converged : bool
+        False if the dynamics model reports a one-pass fallback.
+    diagnostics : mapping of str to Diagnostic
+        Mechanism-specific per-step series (crank torque, slider position, ...).
+    extras : mapping of str to scalar
+        Mechanism-specific scalars for the ``dynamics`` summary (units in the keys).
+    """
+
+    time: FloatArray
+    load: FloatArray
+    azimuth: FloatArray
+    relative_rotation: FloatArray
+    period: float
+    mechanism: str = "load-history"
+    model: str = "prescribed"
+    joint: str = "joint"
+    lost_steps: NDArray[np.bool_] | None = None
+    iterations: int = 0
+    converged: bool = True
+    diagnostics: Mapping[str, Diagnostic] = field(default_factory=dict)
+    extras: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        from jointwear.errors import DataError
+
+        arrays = {}
+        for name in ("time", "load", "azimuth", "relative_rotation"):
+            value = np.asarray(getattr(self, name), dtype=float).ravel()
+            arrays[name] = value
+            object.__setattr__(self, name, value)
+        steps = arrays["load"].size
+        if steps < 2 or any(v.size != steps for v in arrays.values()):
+            raise DataError(
+                "load cycle: time, load, azimuth and relative_rotation need one value per "
+                "step (at least 2 steps)"
+            )
+        if not all(np.all(np.isfinite(v)) for v in arrays.values()):
+            raise DataError("load cycle: values must be finite")
+        if np.any(arrays["load"] < 0):
+            raise DataError("load cycle: load magnitudes must be >= 0")
+        period = float(self.period)
+        ends = np.append(arrays["time"], period)
+        if not (math.isfinite(period) and np.all(np.diff(ends) > 0)):
+            raise DataError("load cycle: times must increase and end before the period")
+        object.__setattr__(self, "period", period)
+        lost = np.zeros(steps, bool) if self.lost_steps is None else self.lost_steps
+        object.__setattr__(self, "lost_steps", np.asarray(lost, dtype=bool).ravel())
+        object.__setattr__(self, "diagnostics", MappingProxyType(dict(self.diagnostics)))
+        object.__setattr__(self, "extras", MappingProxyType(dict(self.extras)))
+
+    # ------------------------------------------------------------ construction
+    @classmethod
+    def from_arrays(
+        cls,
+        load: ArrayLike,
+        azimuth: ArrayLike,
+        relative_rotation: ArrayLike,
+        period: float = 1.0,
+        time: ArrayLike | None = None,
+        **kwargs: Any,
+    ) -> LoadCycle:
+        """A load cycle from arrays, e.g. exported by another multibody code.
+
+        Parameters
+        ----------
+        load : array_like, shape (N,)
+            Load magnitude at each step [N].
+        azimuth : array_like, shape (N,)
+            Direction in which the pin presses on the bushing, bushing frame [rad].
+        relative_rotation : array_like, shape (N,)
+            Rotation of the pin relative to the bushing over each step [rad].
+        period : float
+            Duration of the cycle [s].
+        time : array_like, shape (N,), optional
+            Start of each step [s]; default equally spaced over the period.
+        **kwargs
+            Further :class:`LoadCycle` fields (``mechanism``, ``joint``, ...).
+        """
+        load = np.asarray(load, dtype=float).ravel()
+        if time is None:
+            time = period * np.arange(load.size) / max(load.size, 1)
+        azimuth = np.asarray(azimuth, dtype=float).ravel()
+        if azimuth.size == load.size and np.all(np.isfinite(azimuth)):
+            azimuth = np.unwrap(azimuth)
+            azimuth = azimuth + (wrap_angle(azimuth.mean()) - azimuth.mean())
+        return cls(
+            time=time,
+            load=load,
+            azimuth=azimuth,
+            relative_rotation=relative_rotation,
+            period=period,
+            **kwargs,
+        )
+
+    def with_load(self, load: ArrayLike) -> LoadCycle:
+        """The same cycle with another load magnitude per step [N]."""
+        return replace(self, load=np.asarray(load, dtype=float))
+
+    # ------------------------------------------------------------ derived
+    @property
+    def steps(self) -> int:
+        """Number of steps ``N`` per cycle."""
+        return int(self.load.size)
+
+    @property
+    def step_duration(self) -> FloatArray:
+        """Duration of each step [s]."""
+        return np.diff(np.append(self.time, self.period))
+
+    @property
+    def phase(self) -> FloatArray:
+        """Phase ``2 pi t / period`` at the start of each step [rad] (crank angle of a crank)."""
+        return 2.0 * np.pi * self.time / self.period
+
+    @property
+    def frequency(self) -> float:
+        """Cycles per second [Hz]."""
+        return 1.0 / self.period
+
+    @property
+    def contact_lost(self) -> bool:
+        """True if the continuous-contact assumption fails at some step."""
+        return bool(np.any(self.lost_steps))
+
+    @property
+    def force_x(self) -> FloatArray:
+        """Force of the pin on the bushing along the bushing's x axis [N]."""
+        return self.load * np.cos(self.azimuth)
+
+    @property
+    def force_y(self) -> FloatArray:
+        """Force of the pin on the bushing along the bushing's y axis [N]."""
+        return self.load * np.sin(self.azimuth)
+
+    @property
+    def rotation(self) -> FloatArray:
+        """Cumulative relative rotation at the start of each step and at the end [rad]."""
+        return np.concatenate(([0.0], np.cumsum(self.relative_rotation)))
+
+    @property
+    def total_relative_rotation(self) -> float:
+        """Sum of the absolute relative-rotation increments over the cycle [rad]."""
+        return float(np.sum(np.abs(self.relative_rotation)))
+
+    def azimuth_increment(self) -> FloatArray:
+        """Change of the load azimuth over each step, wrapped to (-pi, pi] [rad]."""
+        return wrap_angle(np.roll(self.azimuth, -1) - self.azimuth)
+
+    def sliding_distance(
+        self,
+        radius: float,
+        variant: Literal["relative-rotation", "contact-azimuth"] = "relative-rotation",
+    ) -> FloatArray:
+        """Sliding distance at the pin-bushing interface over each step [m].
+
+        Parameters
+        ----------
+        radius : float
+            Radius at which the sliding is measured, normally the bushing radius
+            ``R_b`` [m].
+        variant : {"relative-rotation", "contact-azimuth"}
+            ``"relative-rotation"`` (default, kinematically correct):
+            ``R |d(phi_pin - phi_bushing)|``. ``"contact-azimuth"``: ``R |d psi|``,
+            the change of the load azimuth on the bushing, as the paper words it
+            (its section 3.1).
+
+        Returns
+        -------
+        ndarray, shape (N,)
+            Sliding distance ``ds_k`` of each step [m].
+        """
+        if variant == "relative-rotation":
+            return radius * np.abs(self.relative_rotation)
+        if variant == "contact-azimuth":
+            return radius * np.abs(self.azimuth_increment())
+        raise ValueError(f"unknown sliding variant {variant!r}")
+
+    @property
+    def mean_load(self) -> float:
+        """Time mean of the load magnitude [N]."""
+        duration = self.step_duration
+        if np.ptp(duration) <= 1e-12 * duration.mean():
+            return float(np.mean(self.load))
+        return float(np.dot(self.load, duration) / self.period)
+
+    @property
+    def sliding_mean_load(self) -> float:
+        """Sliding-weighted mean load ``sum F |d phi| / sum |d phi|`` [N].
+
+        Archard wear over a cycle is proportional to ``sum F ds``, so this is the
+        load that, applied over the total sliding distance, wears as much. Falls
+        back to the time mean if pin and bushing do not rotate relatively.
+        """
+        weight = np.abs(self.relative_rotation)
+        total = weight.sum()
+        if total == 0.0:
+            return self.mean_load
+        return float(np.sum(self.load * weight) / total)
+
+    # ------------------------------------------------------------ reporting
+    def summary(self) -> dict[str, Any]:
+        """Scalar results (SI, units in the keys), keyed as ``jointwear dynamics --json``."""
+        azimuth_deg = np.degrees(self.azimuth)
+        lost_phase = np.round(np.degrees(self.phase[self.lost_steps]), 9)
+        out: dict[str, Any] = {
+            "mechanism": self.mechanism,
+            "dynamics_model": self.model,
+            "joint": self.joint,
+            "steps": self.steps,
+            "period_s": self.period,
+            "load_min_n": float(self.load.min()),
+            "load_max_n": float(self.load.max()),
+            "load_mean_n": self.mean_load,
+            "load_sliding_mean_n": self.sliding_mean_load,
+            "azimuth_min_deg": float(azimuth_deg.min()),
+            "azimuth_max_deg": float(azimuth_deg.max()),
+            "azimuth_range_deg": float(azimuth_deg.max() - azimuth_deg.min()),
+            "total_relative_rotation_rad": self.total_relative_rotation,
+            "contact_lost": self.contact_lost,
+            # rounded so that 2 pi k / N prints as 15.0, not 14.999999999999998
+            "contact_lost_phases_deg": [float(a) for a in lost_phase],
+            "iterations": int(self.iterations),
+            "fixed_point_converged": bool(self.converged),
+        }
+        out.update(self.extras)
+        return out
+
+    def columns(self) -> dict[str, FloatArray]:
+        """Per-step arrays keyed by unit-bearing headers, one closing row appended.
+
+        The first four columns are the ``load-history`` file format (force of the pin
+        on the bushing in the bushing frame, cumulative relative rotation), so the
+        table reads back as the same cycle; the closing row (time = period) repeats
+        the first row's forces and carries the rotation at the end of the cycle.
+        """
+
+        def closed(values: FloatArray) -> FloatArray:
+            return np.append(values, values[0])
+
+        cols = {
+            "time [s]": np.append(self.time, self.period),
+            "force_x [N]": closed(self.force_x),
+            "force_y [N]": closed(self.force_y),
+            "rotation [rad]": self.rotation,
+            "phase [deg]": np.append(np.round(np.degrees(self.phase), 9), 360.0),
+            "load [N]": closed(self.load),
+            "azimuth [deg]": closed(np.degrees(self.azimuth)),
+            "relative_rotation [rad]": closed(self.relative_rotation),
+        }
+        for name, diagnostic in self.diagnostics.items():
+            cols[f"{name} [{diagnostic.units}]"] = closed(diagnostic.values)
+        return cols
+
+    def __repr__(self) -> str:
+        return (
+            f"LoadCycle(mechanism={self.mechanism!r}, model={self.model!r}, "
+            f"joint={self.joint!r}, steps={self.steps}, period={self.period:.6g} s, "
+            f"load={self.load.min():.4g}..{self.load.max():.4g} N, "
+            f"rotation={self.total_relative_rotation:.4g} rad)"
+        )
