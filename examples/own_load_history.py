@@ -12,15 +12,15 @@ from __future__ import annotations
 import numpy as np
 
 import jointwear as jw
-from jointwear.mechanism import JointLoad
+from jointwear.mechanism import LoadCycle
 
 steps = 180
 phase = 2 * np.pi * np.arange(steps) / steps
-history = JointLoad.from_history(
+history = LoadCycle.from_arrays(
     load=300 + 150 * np.cos(phase),  # [N]
     azimuth=np.radians(25) * np.sin(phase),  # [rad], oscillating hinge load
     relative_rotation=np.full(steps, np.radians(60) * 2 / steps),  # +-30 deg oscillation
-    crank_speed=2 * np.pi,  # one cycle per second
+    period=1.0,  # [s]
 )
 
 config = jw.load_config(
@@ -40,7 +40,7 @@ def stiffening_foundation(penetration: np.ndarray) -> np.ndarray:
 
 
 for name, model in (("winkler", "asymmetric-winkler"), ("custom", stiffening_foundation)):
-    summary = jw.Simulation(config, contact_model=model, joint_load=history).run().summary()
+    summary = jw.Simulation(config, contact_model=model, load_cycle=history).run().summary()
     print(
         f"{name:8s}: peak {summary['peak_wear_depth_m'] * 1e6:6.2f} um, "
         f"width {summary['wear_width_deg']:5.1f} deg, mass {summary['wear_mass_kg'] * 1e6:.3f} mg"

@@ -53,14 +53,14 @@ def worn_profile(nodes: int, azimuth: np.ndarray) -> np.ndarray:
 def contour_for(simulation: Simulation, shape: str) -> BushingContour:
     if shape == "circle":
         return simulation.initial_contour()
-    depth = worn_profile(simulation.config.contact.nodes, simulation.joint_load.azimuth)
+    depth = worn_profile(simulation.config.contact.nodes, simulation.load_cycle.azimuth)
     joint = simulation.config.joint
     return BushingContour.from_wear_profile(joint.bushing_radius, depth, joint.axial_length)
 
 
 def force_area(simulation: Simulation, contour: BushingContour) -> np.ndarray:
     """Area turning each node's pressure into its spring force, shape (M, N) [m^2]."""
-    law, azimuth = simulation.law, simulation.joint_load.azimuth
+    law, azimuth = simulation.law, simulation.load_cycle.azimuth
     shape = (azimuth.size, contour.nodes)
     if law.force_area is not None:
         return np.full(shape, law.force_area)
@@ -86,7 +86,7 @@ def test_fast_path_matches_the_reference(table5, model, shape):
     """One revolution, 360 nodes x 360 steps: pressure of every step and the wear profile."""
     simulation = Simulation(table5.replace({"contact.model": model}))
     contour = contour_for(simulation, shape)
-    load = simulation.joint_load
+    load = simulation.load_cycle
     k_d = table5.materials.bushing.wear_coefficient
     solution = simulation.contact(contour)
     wear = simulation.wear_per_revolution(solution)
@@ -116,7 +116,7 @@ def test_equilibrium_mode_matches_the_reference(table5, model):
     """Full 2-D equilibrium on the worn contour against scipy's hybrid root finder."""
     simulation = Simulation(table5.replace({"contact.model": model}))
     contour = contour_for(simulation, "worn")
-    load = simulation.joint_load
+    load = simulation.load_cycle
     solution = solve_contact(
         contour,
         simulation.pin,
@@ -157,7 +157,7 @@ def test_batched_equals_per_load(table5, model, balance):
     """The batch (coarse-to-fine warm start, narrow window) equals load-by-load solves."""
     simulation = Simulation(table5.replace({"contact.model": model}))
     contour = contour_for(simulation, "worn")
-    load = simulation.joint_load
+    load = simulation.load_cycle
     options = {"balance": balance, "max_penetration": table5.joint.bushing_thickness}
     batch = solve_contact(
         contour, simulation.pin, load.load, load.azimuth, simulation.law, **options
@@ -182,7 +182,7 @@ def test_warm_starts_give_the_cold_answer(table5, balance):
     """Warm starts (previous offsets, extrapolated, narrow window) change nothing."""
     simulation = Simulation(table5.replace({"contact.balance": balance}))
     contour = contour_for(simulation, "worn")
-    load = simulation.joint_load
+    load = simulation.load_cycle
     cold = simulation.contact(contour)
     along = cold.eccentricity[:, 0] * np.cos(load.azimuth) + cold.eccentricity[:, 1] * np.sin(
         load.azimuth
@@ -225,7 +225,7 @@ def test_no_update_wear_is_exactly_linear(table5):
     simulation = Simulation(config)
     result = simulation.run()
     contour = simulation.initial_contour()
-    load = simulation.joint_load
+    load = simulation.load_cycle
     _, wear = reference_revolution(
         contour.radius,
         contour.axial_length,
@@ -276,7 +276,7 @@ def test_coarse_pass_guesses_a_worn_contour(table5, model):
     penetration, none far off, and the fine pass takes two or three evaluations a load."""
     simulation = Simulation(table5.replace({"contact.model": model}))
     contour = contour_for(simulation, "worn")
-    load = simulation.joint_load
+    load = simulation.load_cycle
     guess, widest = balance._coarse_guess(
         contour,
         simulation.pin,
@@ -307,7 +307,7 @@ def test_coarse_pass_guesses_a_worn_contour(table5, model):
 def test_threads_do_not_share_scratch_buffers(table5):
     """Each thread has its own scratch buffers: concurrent solves give the serial answer."""
     simulation = Simulation(table5)
-    load = simulation.joint_load
+    load = simulation.load_cycle
     contours = [contour_for(simulation, "circle"), contour_for(simulation, "worn")]
     serial = [simulation.contact(c).pressure for c in contours]
     results: dict[int, np.ndarray] = {}
@@ -336,7 +336,7 @@ def test_cached_window_geometry_follows_the_azimuths(table5):
     """The window geometry is cached by azimuths: a new load set must not reuse it."""
     simulation = Simulation(table5)
     contour = contour_for(simulation, "worn")
-    load = simulation.joint_load
+    load = simulation.load_cycle
     first = solve_contact(contour, simulation.pin, load.load, load.azimuth, simulation.law)
     turned = solve_contact(
         contour.rotated(7),
@@ -358,7 +358,7 @@ def test_warm_revolution_balances_every_load_in_two_evaluations(table5):
         state = simulation.step(state)
     contour = simulation._contour(state.wear_depth)
     warm = simulation.contact(contour, state)
-    load = simulation.joint_load.load
+    load = simulation.load_cycle.load
     force = warm.pressure * force_area(simulation, contour)
     bound = np.maximum(1e-12, 8 * EPS * np.abs(force).sum(axis=1))
     assert np.all(np.abs(warm.normal_force - load) <= bound)

@@ -8,7 +8,7 @@ import pytest
 from jointwear import Simulation
 from jointwear.config import Config
 from jointwear.errors import WearThroughError
-from jointwear.mechanism import JointLoad
+from jointwear.mechanism import LoadCycle
 from jointwear.tribology import archard
 
 MODELS = ["hertz", "winkler", "asymmetric-winkler", "nlcp"]
@@ -41,7 +41,7 @@ def test_wear_volume_is_archards_global_form(base: Config, model: str) -> None:
 
     normal = solution.pressure @ contour.spring_area
     assert volume == pytest.approx(archard.archard_volume(normal, ds, k_d), rel=1e-6)
-    load_form = archard.archard_volume(simulation.joint_load.load, ds, k_d)
+    load_form = archard.archard_volume(simulation.load_cycle.load, ds, k_d)
     widest = max(solution.half_angle_left.max(), solution.half_angle_right.max())
     assert load_form < volume < load_form / np.cos(widest)
 
@@ -98,9 +98,9 @@ def test_contour_update_lowers_the_peak_and_widens_the_zone(base: Config) -> Non
     assert updated["wear_volume_m3"] == pytest.approx(frozen["wear_volume_m3"], rel=0.05)
 
 
-def _symmetric_history(steps: int = 120) -> JointLoad:
+def _symmetric_history(steps: int = 120) -> LoadCycle:
     phase = 2 * np.pi * np.arange(steps) / steps
-    return JointLoad.from_history(
+    return LoadCycle.from_arrays(
         load=200 + 80 * np.cos(phase),
         azimuth=0.4 * np.sin(phase),
         relative_rotation=np.full(steps, 1.4 / steps),
@@ -117,7 +117,7 @@ def test_symmetric_load_history_gives_a_symmetric_profile(base: Config, update: 
             "contact.model": "nlcp",
         }
     )
-    depth = Simulation(config, joint_load=_symmetric_history()).run().wear_depth
+    depth = Simulation(config, load_cycle=_symmetric_history()).run().wear_depth
     mirrored = np.roll(depth[::-1], 1)  # theta_j -> -theta_j
     assert depth.max() > 0
     np.testing.assert_allclose(depth, mirrored, rtol=0, atol=1e-9 * depth.max())
@@ -127,11 +127,11 @@ def test_symmetric_load_history_gives_a_symmetric_profile(base: Config, update: 
 def test_rotating_the_load_history_rotates_the_profile(base: Config) -> None:
     history = _symmetric_history()
     shift = 30  # nodes of 2 deg
-    turned = JointLoad.from_history(
+    turned = LoadCycle.from_arrays(
         history.load, history.azimuth + shift * 2 * np.pi / 180, history.relative_rotation
     )
-    a = Simulation(base, joint_load=history).run().wear_depth
-    b = Simulation(base, joint_load=turned).run().wear_depth
+    a = Simulation(base, load_cycle=history).run().wear_depth
+    b = Simulation(base, load_cycle=turned).run().wear_depth
     np.testing.assert_allclose(np.roll(a, shift), b, rtol=0, atol=1e-9 * a.max())
 
 

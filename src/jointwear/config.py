@@ -49,6 +49,8 @@ __all__ = [
     "SliderCrankConfig",
     "SimulationConfig",
     "apply_overrides",
+    "is_section",
+    "key_field",
     "config_from_dict",
     "load_config",
     "parse_override",
@@ -319,6 +321,8 @@ MECHANISM_TYPES: dict[str, type[_Section]] = {
 #: mechanism types whose load comes from dynamics (the others prescribe it)
 DYNAMIC_TYPES: tuple[str, ...] = ("slider-crank", "four-bar")
 
+_MECHANISM_UNION = object()  # marks the union while walking keys (see key_field)
+
 MechanismConfig = Annotated[
     SliderCrankConfig | FourBarConfig | OscillatingConfig | LoadHistoryConfig,
     Field(discriminator="type"),
@@ -545,6 +549,75 @@ class Config(_Section):
         data = _without_none(self.model_dump(mode="json"))
         apply_overrides(data, overrides)
         return config_from_dict(data, defaults=False)
+
+
+# ---------------------------------------------------------------- keys
+
+
+def key_field(dotted: str, mechanism: str | None = None) -> Any:
+    """The pydantic field of a dotted config key, e.g. ``"joint.clearance"``.
+
+    Parameters
+    ----------
+    dotted : str
+        Dotted key; sections are separated by dots.
+    mechanism : str, optional
+        Mechanism type whose ``mechanism.*`` keys are meant; default any type that
+        has the key (the first in :data:`MECHANISM_TYPES` order).
+
+    Returns
+    -------
+    pydantic.fields.FieldInfo or type
+        The field of a key; the section model of a section.
+
+    Raises
+    ------
+    ConfigError
+        For an unknown key (with the closest known key) or a key inside a value.
+    """
+    model: Any = Config
+    parts = dotted.split(".")
+    for i, part in enumerate(parts):
+        if model is _MECHANISM_UNION:
+            candidates = (
+                [MECHANISM_TYPES[mechanism]] if mechanism in MECHANISM_TYPES
+                else list(MECHANISM_TYPES.values())
+            )
+            owner = next((c for c in candidates if part in c.model_fields), candidates[0])
+            model = owner
+        fields = getattr(model, "model_fields", None)
+        if fields is None:
+            raise ConfigError(f"{dotted}: {parts[i - 1]!r} is a value, not a section")
+        if part not in fields:
+            if model is MECHANISM_TYPES.get(mechanism or "") or model in MECHANISM_TYPES.values():
+                known = sorted({k for c in candidates for k in c.model_fields})
+            else:
+                known = list(fields)
+            prefix = ".".join(parts[:i])
+            what = f"unknown key {part!r}" + (f" in [{prefix}]" if prefix else "")
+            raise ConfigError(f"{dotted}: {what}{suggest(part, known)}")
+        info = fields[part]
+        annotation = info.annotation
+        if model is Config and part == "mechanism":
+            model = _MECHANISM_UNION
+        elif isinstance(annotation, type) and issubclass(annotation, BaseModel):
+            model = annotation
+        else:
+            model = None
+            if i < len(parts) - 1:
+                raise ConfigError(f"{dotted}: {part!r} is a value, not a section")
+            return info
+    return model
+
+
+def is_section(dotted: str) -> bool:
+    """True if ``dotted`` names a config section (``"joint"``, ``"materials.pin"``)."""
+    from pydantic.fields import FieldInfo
+
+    try:
+        return not isinstance(key_field(dotted), FieldInfo)
+    except ConfigError:
+        return False
 
 
 # ---------------------------------------------------------------- loading

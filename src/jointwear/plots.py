@@ -152,16 +152,17 @@ def plot_result(
     plt.close(fig)
 
     # -- joint load and azimuth
-    crank = np.degrees(dataset["crank_angle"].values)
+    phase_name = "phase" if "phase" in dataset else "crank_angle"
+    crank = np.degrees(dataset[phase_name].values)
     fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(7, 5))
     ax1.plot(crank, dataset["joint_load"].values)
     ax1.set_ylabel("joint load [N]")
     ax1.grid(alpha=0.3)
     ax2.plot(crank, np.degrees(np.unwrap(dataset["load_azimuth"].values)))
     ax2.set_ylabel("load azimuth [deg]")
-    ax2.set_xlabel("crank angle [deg]")
+    ax2.set_xlabel("cycle phase [deg]")
     ax2.grid(alpha=0.3)
-    ax1.set_title(f"{label}: joint load over a revolution")
+    ax1.set_title(f"{label}: joint load over a cycle")
     written += _save(fig, directory, "joint_load")
     plt.close(fig)
 

@@ -54,7 +54,15 @@ from typing import Any
 
 import numpy as np
 
-from jointwear.config import Config, apply_overrides, config_from_dict, load_config, read_toml
+from jointwear.config import (
+    Config,
+    apply_overrides,
+    config_from_dict,
+    is_section,
+    key_field,
+    load_config,
+    read_toml,
+)
 from jointwear.errors import ConfigError, DataError, JointwearError
 from jointwear.io import atomic_write, write_json
 from jointwear.registry import suggest
@@ -111,24 +119,14 @@ FINISHED = ("ok", "failed")
 
 def _field(dotted: str, where: str) -> Any:
     """The pydantic field of a dotted config key; unknown keys raise with a suggestion."""
-    from pydantic import BaseModel
+    from pydantic.fields import FieldInfo
 
-    model: Any = Config
-    parts = dotted.split(".")
-    for i, part in enumerate(parts):
-        fields = model.model_fields
-        if part not in fields:
-            prefix = ".".join(parts[:i])
-            what = f"unknown key {part!r}" + (f" in [{prefix}]" if prefix else "")
-            raise ConfigError(f"{where} {dotted}: {what}{suggest(part, fields)}")
-        info = fields[part]
-        annotation = info.annotation
-        if i < len(parts) - 1:
-            if not (isinstance(annotation, type) and issubclass(annotation, BaseModel)):
-                raise ConfigError(f"{where} {dotted}: {part!r} is a value, not a section")
-            model = annotation
-        elif isinstance(annotation, type) and issubclass(annotation, BaseModel):
-            raise ConfigError(f"{where} {dotted}: is a section; name one of its keys")
+    try:
+        info = key_field(dotted)
+    except ConfigError as exc:
+        raise ConfigError(f"{where} {exc}") from None
+    if not isinstance(info, FieldInfo):
+        raise ConfigError(f"{where} {dotted}: is a section; name one of its keys")
     return info
 
 
@@ -446,23 +444,11 @@ def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
     out: dict[str, Any] = {}
     for key, value in table.items():
         dotted = f"{prefix}{key}"
-        if isinstance(value, Mapping) and _is_section(dotted):
+        if isinstance(value, Mapping) and is_section(dotted):
             out.update(_flatten(value, dotted + "."))
         else:
             out[dotted] = value
     return out
-
-
-def _is_section(dotted: str) -> bool:
-    from pydantic import BaseModel
-
-    model: Any = Config
-    for part in dotted.split("."):
-        info = getattr(model, "model_fields", {}).get(part)
-        if info is None:
-            return False
-        model = info.annotation
-    return isinstance(model, type) and issubclass(model, BaseModel)
 
 
 def _value_list(values: Any, where: str) -> list[Any]:

@@ -59,14 +59,16 @@ def test_csv_has_unit_headers_and_matches_json(
     with out.open(newline="", encoding="utf-8") as handle:
         rows = list(csv.reader(handle))
     header, body = rows[0], np.array(rows[1:], dtype=float)
-    assert header[0] == "crank_angle [deg]"
+    assert header[:4] == ["time [s]", "force_x [N]", "force_y [N]", "rotation [rad]"]
     units = {"load [N]", "azimuth [deg]", "relative_rotation [rad]", "crank_torque [N m]"}
     assert units <= set(header)
     assert all("[" in name and name.endswith("]") for name in header)
-    assert body.shape == (360, len(header))
+    # one row per step and the closing row at the period
+    assert body.shape == (361, len(header))
     load = body[:, header.index("load [N]")]
     assert load.max() == pytest.approx(data["load_max_n"], rel=1e-15)
-    np.testing.assert_allclose(body[:, 0], np.arange(360.0))
+    np.testing.assert_allclose(body[:, header.index("phase [deg]")], np.arange(361.0))
+    np.testing.assert_allclose(body[:, 0], np.arange(361.0) * data["period_s"] / 360)
     assert not list(tmp_path.glob("sub/.*.tmp"))  # no temporary file left behind
 
 

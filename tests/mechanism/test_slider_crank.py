@@ -18,13 +18,13 @@ from jointwear.config import Config
 from jointwear.errors import ConfigError, ContactLossWarning, ConvergenceError, MechanismError
 from jointwear.mechanism import (
     DYNAMICS_MODELS,
-    JointLoad,
+    LoadCycle,
     SliderCrank,
     SliderCrankMotion,
     crank_angle_grid,
     ideal_motion,
     inverse_dynamics,
-    joint_load,
+    load_cycle,
     rod_angle,
     rod_angular_acceleration,
     rod_angular_velocity,
@@ -200,13 +200,14 @@ def test_force_along_massless_rod(paper_config: Config, clearance: float) -> Non
 
 
 def test_total_relative_rotation_is_four_rod_swings(paper_config: Config) -> None:
-    load = joint_load(paper_config.replace({"joint.clearance": 1e-12}))
+    load = load_cycle(paper_config.replace({"joint.clearance": 1e-12}))
     # theta_2 swings 0 -> -asin(l1/l2) -> 0 -> +asin(l1/l2) -> 0 (extremes at 90 and 270 deg)
     assert load.total_relative_rotation == pytest.approx(4 * math.asin(L1 / L2), rel=1e-9)
     assert load.relative_rotation.sum() == pytest.approx(0.0, abs=1e-12)
     # exact increments: they telescope to the rod angle
     np.testing.assert_allclose(
-        np.cumsum(load.relative_rotation)[:-1], load.rod_angle[1:] - load.rod_angle[0], atol=1e-14
+        np.cumsum(load.relative_rotation)[:-1], load.diagnostics['rod_angle'].values[1:]
+        - load.diagnostics['rod_angle'].values[0], atol=1e-14
     )
 
 
@@ -215,7 +216,7 @@ def test_total_relative_rotation_is_four_rod_swings(paper_config: Config) -> Non
 
 def test_no_clearance_limit(paper_config: Config) -> None:
     config = paper_config.replace({"joint.clearance": 1e-12, "mechanism.crank_speed": 240 * RPM})
-    load = joint_load(config)
+    load = load_cycle(config)
     ideal = solve_massless_link(SliderCrank.from_config(config.mechanism), 240 * RPM, 0.0, 360)
     j_x, j_y = ideal.reaction.force_x, ideal.reaction.force_y
     scale = np.hypot(j_x, j_y).max()
@@ -223,7 +224,8 @@ def test_no_clearance_limit(paper_config: Config) -> None:
     np.testing.assert_allclose(load.force_y, j_y, rtol=0, atol=1e-9 * scale)
     np.testing.assert_allclose(load.load, np.hypot(j_x, j_y), rtol=1e-9)
     np.testing.assert_allclose(wrap_angle(load.azimuth - np.arctan2(j_y, j_x)), 0.0, atol=1e-9)
-    np.testing.assert_allclose(load.crank_torque, ideal.reaction.crank_torque, rtol=0,
+    np.testing.assert_allclose(load.diagnostics["crank_torque"].values,
+                               ideal.reaction.crank_torque, rtol=0,
                                atol=1e-9 * np.abs(ideal.reaction.crank_torque).max())
 
 
@@ -264,7 +266,7 @@ def test_large_clearance_high_speed_no_pin_flutter(paper_config: Config) -> None
     # pin flutter near the pin's lateral clearance mode (~50th harmonic)
     config = paper_config.replace({"joint.clearance": 0.2e-3,
                                    "mechanism.crank_speed": 240 * RPM})
-    load = joint_load(config)
+    load = load_cycle(config)
     ideal = solve_massless_link(SliderCrank.from_config(config.mechanism), 240 * RPM, 0.0, 360)
     ideal_load = np.hypot(*ideal.reaction[:2])
     assert load.converged
@@ -276,7 +278,7 @@ def test_large_clearance_high_speed_no_pin_flutter(paper_config: Config) -> None
 def test_fixed_point_budget_exhausted_raises(paper_config: Config) -> None:
     config = paper_config.replace({"dynamics.max_iterations": 1})
     with pytest.raises(ConvergenceError, match=r"dynamics\.max_iterations"):
-        joint_load(config)
+        load_cycle(config)
 
 
 def test_paper_one_pass_scheme_is_first_iterate(paper_config: Config) -> None:
@@ -292,14 +294,16 @@ def test_paper_one_pass_scheme_is_first_iterate(paper_config: Config) -> None:
 
 
 def test_joint_load_fields_and_sliding(paper_config: Config) -> None:
-    load = joint_load(paper_config)
+    load = load_cycle(paper_config)
     n = paper_config.simulation.steps_per_revolution
-    assert isinstance(load, JointLoad)
-    for name in ("crank_angle", "time", "load", "azimuth", "relative_rotation", "crank_torque",
-                 "force_x", "force_y", "slider_position", "rod_angle"):
+    assert isinstance(load, LoadCycle)
+    for name in ("phase", "time", "load", "azimuth", "relative_rotation", "force_x", "force_y"):
         assert getattr(load, name).shape == (n,)
-    np.testing.assert_allclose(load.crank_angle, 2 * np.pi * np.arange(n) / n)
-    np.testing.assert_allclose(load.time, load.crank_angle / paper_config.mechanism.crank_speed)
+    for name in ("crank_torque", "slider_position", "rod_angle"):
+        assert load.diagnostics[name].values.shape == (n,)
+    np.testing.assert_allclose(load.phase, 2 * np.pi * np.arange(n) / n)
+    np.testing.assert_allclose(load.time, load.phase / paper_config.mechanism.crank_speed)
+    assert load.period == pytest.approx(2 * np.pi / paper_config.mechanism.crank_speed)
     assert np.all(load.load >= 0)
     np.testing.assert_allclose(load.load, np.hypot(load.force_x, load.force_y))
     # pull spring, bushing on the slider: the pin presses towards the crank (-x)
@@ -316,16 +320,16 @@ def test_joint_load_fields_and_sliding(paper_config: Config) -> None:
     weights = np.abs(load.relative_rotation)
     assert load.sliding_mean_load == pytest.approx(np.sum(load.load * weights) / weights.sum())
     assert not load.contact_lost
-    assert load.contact_lost_angles.size == 0
+    assert not load.lost_steps.any()
 
 
 def test_bushing_on_rod_frame(paper_config: Config) -> None:
-    on_slider = joint_load(paper_config)
-    on_rod = joint_load(paper_config.replace({"mechanism.bushing_body": "rod"}))
+    on_slider = load_cycle(paper_config)
+    on_rod = load_cycle(paper_config.replace({"mechanism.bushing_body": "rod"}))
     np.testing.assert_allclose(on_rod.load, on_slider.load)
     np.testing.assert_allclose(on_rod.relative_rotation, -on_slider.relative_rotation)
     # the bushing sees -J, turned into the rod's frame
-    expected = on_slider.azimuth + np.pi - on_slider.rod_angle
+    expected = on_slider.azimuth + np.pi - on_slider.diagnostics["rod_angle"].values
     np.testing.assert_allclose(wrap_angle(on_rod.azimuth - expected), 0.0, atol=1e-12)
     # a bushing in the rod sees the load almost along the rod: a narrow azimuth band
     assert np.ptp(on_rod.azimuth) < 0.2 * np.ptp(on_slider.azimuth)
@@ -357,7 +361,7 @@ def test_speed_trend_of_sliding_mean_load(
         })
         with warnings.catch_warnings():
             warnings.simplefilter("error", ContactLossWarning)
-            return joint_load(config).sliding_mean_load
+            return load_cycle(config).sliding_mean_load
 
     slow, fast = sliding_mean(120.0), sliding_mean(240.0)
     assert (fast > slow) is faster_wears_more
@@ -373,10 +377,10 @@ def contact_loss_config(paper_config: Config, strict: bool = False) -> Config:
 
 def test_contact_loss_warns_with_angles(paper_config: Config) -> None:
     with pytest.warns(ContactLossWarning, match=r"crank angles 0-30, 329-359 deg") as record:
-        load = joint_load(contact_loss_config(paper_config))
+        load = load_cycle(contact_loss_config(paper_config))
     assert len(record) == 1
     assert load.contact_lost
-    lost_deg = np.degrees(load.contact_lost_angles)
+    lost_deg = np.degrees(load.phase[load.lost_steps])
     assert lost_deg.size == 62
     # near the outer dead centre the slider decelerates hard, more than the weak
     # push spring can supply, so the rod goes into tension
@@ -388,16 +392,16 @@ def test_contact_loss_pull_spring_too_fast(paper_config: Config) -> None:
     # faster than the spring can drive it (m3 x3'' > F_spring): the rod would push
     config = paper_config.replace({"mechanism.crank_speed": 480 * RPM})
     with pytest.warns(ContactLossWarning, match="needs the rod in tension") as record:
-        load = joint_load(config)
+        load = load_cycle(config)
     assert len(record) == 1
-    lost_deg = np.degrees(load.contact_lost_angles)
+    lost_deg = np.degrees(load.phase[load.lost_steps])
     assert np.any(np.isclose(lost_deg, 180.0))
     assert np.all((lost_deg > 60) & (lost_deg < 300))
 
 
 def test_contact_loss_strict_raises(paper_config: Config) -> None:
     with pytest.raises(MechanismError, match="reverses relative to the rod"):
-        joint_load(contact_loss_config(paper_config, strict=True))
+        load_cycle(contact_loss_config(paper_config, strict=True))
 
 
 def test_paper_mechanism_keeps_contact(paper_config: Config) -> None:
@@ -405,7 +409,7 @@ def test_paper_mechanism_keeps_contact(paper_config: Config) -> None:
         warnings.simplefilter("error", ContactLossWarning)
         for rpm in (120.0, 240.0):
             config = paper_config.replace({"mechanism.crank_speed": rpm * RPM})
-            assert not joint_load(config).contact_lost
+            assert not load_cycle(config).contact_lost
 
 
 # ------------------------------------------------------------------ registry
@@ -415,7 +419,7 @@ def test_registry_and_unknown_model(paper_config: Config) -> None:
     assert "massless-link" in DYNAMICS_MODELS
     message = r"dynamics\.model: unknown dynamics model .*massless-link"
     with pytest.raises(ConfigError, match=message):
-        joint_load(paper_config.replace({"dynamics.model": "massles-link"}))
+        load_cycle(paper_config.replace({"dynamics.model": "massles-link"}))
 
 
 def test_mechanism_that_cannot_assemble() -> None:

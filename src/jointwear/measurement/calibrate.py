@@ -66,7 +66,7 @@ from jointwear.calibration import (
     calibrate,
     calibrate_metrics,
 )
-from jointwear.config import Config, parse_override
+from jointwear.config import Config, key_field, parse_override
 from jointwear.errors import ConfigError, DataError, JointwearError
 from jointwear.measurement.compare import (
     ALIGN_BEST,
@@ -138,18 +138,13 @@ def _numeric_keys(data: Mapping[str, Any], prefix: str = "") -> list[str]:
 
 
 def _field(key: str) -> Any:
-    from pydantic import BaseModel
+    from pydantic.fields import FieldInfo
 
-    model: Any = Config
-    parts = key.split(".")
-    for part in parts[:-1]:
-        fields = getattr(model, "model_fields", {})
-        if part not in fields:
-            return None
-        model = fields[part].annotation
-        if not (isinstance(model, type) and issubclass(model, BaseModel)):
-            return None
-    return getattr(model, "model_fields", {}).get(parts[-1])
+    try:
+        info = key_field(key)
+    except ConfigError:
+        return None
+    return info if isinstance(info, FieldInfo) else None
 
 
 def key_kind(key: str) -> str | None:
