@@ -36,22 +36,22 @@ from jointwear.registry import suggest
 from jointwear.units import to_si, to_si_unit
 
 __all__ = [
+    "MECHANISM_TYPES",
     "Config",
     "ContactConfig",
     "DynamicsConfig",
-    "JointConfig",
-    "MaterialConfig",
     "FourBarConfig",
+    "JointConfig",
     "LoadHistoryConfig",
-    "MECHANISM_TYPES",
+    "MaterialConfig",
     "MechanismConfig",
     "OscillatingConfig",
-    "SliderCrankConfig",
     "SimulationConfig",
+    "SliderCrankConfig",
     "apply_overrides",
+    "config_from_dict",
     "is_section",
     "key_field",
-    "config_from_dict",
     "load_config",
     "parse_override",
     "read_toml",
@@ -729,7 +729,7 @@ def _message(error: Mapping[str, Any]) -> str:
     key = ".".join(str(p) for p in loc) or "config"
     kind = error["type"]
     if kind == "extra_forbidden":
-        return f"{key}: unknown key{suggest(str(loc[-1]), _field_names(loc))}"
+        return f"{key}: unknown key{suggest(str(loc[-1]), _field_names(tuple(error['loc'])))}"
     if kind == "missing":
         return f"{key}: missing"
     msg = error["msg"].removeprefix("Value error, ")

@@ -25,7 +25,17 @@ if TYPE_CHECKING:
     from jointwear.contact import ContactSolution
     from jointwear.simulation import Simulation, SimulationState
 
-__all__ = ["build_dataset", "config_of", "read_result", "write_metrics_csv", "write_netcdf"]
+__all__ = [
+    "build_dataset",
+    "combine_joints",
+    "config_of",
+    "joint_datasets",
+    "read_result",
+    "select_joint",
+    "summarize",
+    "write_metrics_csv",
+    "write_netcdf",
+]
 
 #: how many steps of the cycle keep a full pressure distribution
 PRESSURE_SNAPSHOTS = 72
@@ -160,6 +170,88 @@ def build_dataset(
     return xr.Dataset(data_vars, coords=coords, attrs=attrs)
 
 
+def combine_joints(datasets: list[xr.Dataset]) -> xr.Dataset:
+    """One dataset with a ``joint`` dimension from the datasets of single joints.
+
+    Joints updated a different number of times (adaptive updating) leave the
+    shorter ``update`` series padded with NaN.
+    """
+    names = [str(ds.attrs["joint"]) for ds in datasets]
+    per_joint = [
+        ds.reset_coords("update_revolution").assign(
+            update_revolution=ds["update_revolution"].astype(float)
+        )
+        for ds in datasets
+    ]
+    combined = xr.concat(
+        per_joint,
+        dim=xr.Variable(("joint",), names, attrs={"long_name": "clearance joint"}),
+        data_vars="different",
+        coords="minimal",
+        compat="override",
+        join="outer",
+        combine_attrs="drop_conflicts",
+    )
+    combined.attrs["joint"] = ", ".join(names)
+    combined.attrs["runtime_s"] = float(sum(ds.attrs["runtime_s"] for ds in datasets))
+    return combined
+
+
+def select_joint(dataset: xr.Dataset, joint: str | None = None) -> xr.Dataset:
+    """The dataset of one joint (default: the one with the deepest wear).
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A result, with or without a ``joint`` dimension.
+    joint : str, optional
+        Name of the joint.
+    """
+    if "joint" not in dataset.dims:
+        if joint is not None and joint != dataset.attrs.get("joint", joint):
+            raise DataError(f"result: no clearance joint {joint!r} (it has "
+                            f"{dataset.attrs.get('joint')!r})")
+        return dataset
+    names = [str(j) for j in dataset["joint"].values]
+    if joint is None:
+        peaks = [float(np.nanmax(dataset["peak_wear_depth"].sel(joint=j).values)) for j in names]
+        joint = names[int(np.argmax(peaks))]
+    if joint not in names:
+        from jointwear.registry import suggest
+
+        raise DataError(f"result: no clearance joint {joint!r}{suggest(joint, names)}")
+    single = dataset.sel(joint=joint, drop=True)
+    updates = int(np.count_nonzero(np.isfinite(single["update_revolution"].values)))
+    single = single.isel(update=slice(0, updates))
+    single = single.assign_coords(
+        update_revolution=single["update_revolution"].astype(np.int64)
+    )
+    single.attrs["joint"] = joint
+    return single
+
+
+def summarize(dataset: xr.Dataset) -> dict[str, Any]:
+    """The scalar results of a single-joint result dataset (SI, units in the keys)."""
+    last = {
+        name: float(dataset[name].values[-1])
+        for name in ("peak_wear_depth", "wear_width", "wear_mass", "wear_volume",
+                     "min_wall_thickness")
+    }
+    return {
+        "peak_wear_depth_m": last["peak_wear_depth"],
+        "wear_width_deg": math.degrees(last["wear_width"]),
+        "wear_mass_kg": last["wear_mass"],
+        "wear_volume_m3": last["wear_volume"],
+        "min_wall_thickness_m": last["min_wall_thickness"],
+        "revolutions": int(dataset["update_revolution"].values[-1]),
+        "contour_updates": int(dataset.sizes["update"]),
+        "contact_model": dataset.attrs["contact_model"],
+        "mechanism": dataset.attrs.get("mechanism", "slider-crank"),
+        "joint": str(dataset.attrs.get("joint", "rod-slider")),
+        "runtime_s": float(dataset.attrs.get("runtime_s", math.nan)),
+    }
+
+
 def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
     """Write a result Dataset to netCDF-4 (h5netcdf) atomically."""
     with atomic_path(path) as tmp:
@@ -199,19 +291,31 @@ def config_of(dataset: xr.Dataset) -> Config:
     return config_from_dict(data, defaults=False)
 
 
+def joint_datasets(dataset: xr.Dataset) -> dict[str, xr.Dataset]:
+    """Joint name -> its single-joint dataset (one entry for a single-joint result)."""
+    if "joint" not in dataset.dims:
+        return {str(dataset.attrs.get("joint", "joint")): dataset}
+    return {str(j): select_joint(dataset, str(j)) for j in dataset["joint"].values}
+
+
 def write_metrics_csv(dataset: xr.Dataset, path: str | Path) -> None:
-    """Per-update metrics as CSV, units in the header."""
-    columns = [
-        ("revolution", dataset["update_revolution"].values, 1.0),
-        ("peak_wear_depth [m]", dataset["peak_wear_depth"].values, 1.0),
-        ("wear_width [deg]", dataset["wear_width"].values, 180.0 / math.pi),
-        ("wear_area [m^2]", dataset["wear_area"].values, 1.0),
-        ("wear_volume [m^3]", dataset["wear_volume"].values, 1.0),
-        ("wear_mass [kg]", dataset["wear_mass"].values, 1.0),
-        ("min_wall_thickness [m]", dataset["min_wall_thickness"].values, 1.0),
-    ]
+    """Per-update metrics as CSV, units in the header; a ``joint`` column for several joints."""
+    joints = joint_datasets(dataset)
+    several = len(joints) > 1
     with atomic_write(path, newline="", encoding="utf-8") as handle:
         writer = csv.writer(handle)
-        writer.writerow([name for name, _, _ in columns])
-        for i in range(len(columns[0][1])):
-            writer.writerow([f"{values[i] * scale:.10g}" for _, values, scale in columns])
+        for index, (joint, single) in enumerate(joints.items()):
+            columns = [
+                ("revolution", single["update_revolution"].values, 1.0),
+                ("peak_wear_depth [m]", single["peak_wear_depth"].values, 1.0),
+                ("wear_width [deg]", single["wear_width"].values, 180.0 / math.pi),
+                ("wear_area [m^2]", single["wear_area"].values, 1.0),
+                ("wear_volume [m^3]", single["wear_volume"].values, 1.0),
+                ("wear_mass [kg]", single["wear_mass"].values, 1.0),
+                ("min_wall_thickness [m]", single["min_wall_thickness"].values, 1.0),
+            ]
+            if index == 0:
+                writer.writerow((["joint"] if several else []) + [n for n, _, _ in columns])
+            for i in range(len(columns[0][1])):
+                row = [f"{values[i] * scale:.10g}" for _, values, scale in columns]
+                writer.writerow(([joint] if several else []) + row)

@@ -131,33 +131,41 @@ class WearResult:
 
     @property
     def wear_depth(self) -> FloatArray:
-        """Final wear-depth profile [m]."""
-        return self.dataset["wear_depth"].isel(revolution=-1).values
+        """Final wear-depth profile [m] (of the most worn joint if there are several)."""
+        return self.joint_dataset()["wear_depth"].isel(revolution=-1).values
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Names of the simulated clearance joints."""
+        if "joint" in self.dataset.dims:
+            return tuple(str(j) for j in self.dataset["joint"].values)
+        return (str(self.dataset.attrs.get("joint", "joint")),)
+
+    def joint_dataset(self, joint: str | None = None) -> Any:
+        """The dataset of one joint (default: the most worn one), without a joint dimension.
+
+        Parameters
+        ----------
+        joint : str, optional
+            Name of the joint.
+        """
+        from jointwear.results import select_joint
+
+        return select_joint(self.dataset, joint)
 
     def summary(self) -> dict[str, Any]:
-        """The ``jointwear run --json`` object (SI units in the key names)."""
-        ds = self.dataset
-        last = {
-            name: float(ds[name].values[-1])
-            for name in (
-                "peak_wear_depth",
-                "wear_width",
-                "wear_mass",
-                "wear_volume",
-                "min_wall_thickness",
-            )
-        }
-        return {
-            "peak_wear_depth_m": last["peak_wear_depth"],
-            "wear_width_deg": math.degrees(last["wear_width"]),
-            "wear_mass_kg": last["wear_mass"],
-            "wear_volume_m3": last["wear_volume"],
-            "min_wall_thickness_m": last["min_wall_thickness"],
-            "revolutions": int(ds["update_revolution"].values[-1]),
-            "contour_updates": int(ds.sizes["update"]),
-            "contact_model": ds.attrs["contact_model"],
-            "runtime_s": self.runtime,
-        }
+        """The ``jointwear run --json`` object (SI units in the key names).
+
+        With several clearance joints, the top-level values are those of the most
+        worn joint (``joint``), and ``joints`` holds every joint's.
+        """
+        from jointwear.results import summarize
+
+        out = summarize(self.joint_dataset())
+        if len(self.joints) > 1:
+            out["joints"] = {j: summarize(self.joint_dataset(j)) for j in self.joints}
+        out["runtime_s"] = self.runtime
+        return out
 
     def to_netcdf(self, path) -> None:
         """Write the dataset as netCDF (h5netcdf), atomically."""
@@ -420,7 +428,13 @@ class Simulation:
         on_step : callable, optional
             Called with the state after every contour update (checkpointing).
         """
+        if self.joint is None and len(self.config.joints) > 1:
+            return self._run_joints(progress, state, on_step)
         start = time.perf_counter()
+        steps = self.load_cycle.steps
+        if steps != self.config.simulation.steps_per_revolution:
+            # a load history brings its own steps: the config says what really ran
+            self.config = self.config.replace({"simulation.steps_per_revolution": steps})
         total = self.config.simulation.revolutions
         state = self.initial_state() if state is None else state
         first_solution = None
@@ -445,6 +459,28 @@ class Simulation:
         from jointwear.results import build_dataset
 
         dataset = build_dataset(self, state, initial_solution, final_solution, runtime)
+        return WearResult(config=self.config, dataset=dataset, runtime=runtime)
+
+    def _run_joints(self, progress, state, on_step) -> WearResult:
+        """Each clearance joint on its own contour from its own load cycle."""
+        if state is not None or on_step is not None:
+            from jointwear.errors import ConfigError
+
+            raise ConfigError(
+                "simulation.checkpoint_every: checkpoints hold one clearance joint; give "
+                "mechanism.clearance_joint a single joint to checkpoint"
+            )
+        from jointwear.results import combine_joints
+
+        start = time.perf_counter()
+        results = [
+            Simulation(self.config, self.contact_model, load_cycle=cycle, joint=joint).run(
+                progress
+            )
+            for joint, cycle in self.load_cycles.items()
+        ]
+        runtime = time.perf_counter() - start
+        dataset = combine_joints([r.dataset for r in results])
         return WearResult(config=self.config, dataset=dataset, runtime=runtime)
 
     # ---------------------------------------------------------------- helpers

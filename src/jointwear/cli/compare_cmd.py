@@ -141,6 +141,11 @@ def compare(
     floor: FloorOpt = "0 m",
     profile: ProfileOpt = "auto",
     revolution: RevolutionOpt = None,
+    joint: Annotated[
+        str | None,
+        typer.Option("--joint", help="The clearance joint of a result with several "
+                     "(default: the most worn)."),
+    ] = None,
     json_: JsonOpt = False,
 ) -> None:
     """Compare a simulated wear profile with a measured bushing.
@@ -158,7 +163,7 @@ def compare(
     )
     from jointwear.measurement.io import length_unit_factor, read_points
     from jointwear.registry import suggest
-    from jointwear.results import config_of, read_result
+    from jointwear.results import config_of, read_result, select_joint
     from jointwear.units import to_si
 
     # options first: a typo must not cost a circle fit, and must leave --out untouched
@@ -179,7 +184,7 @@ def compare(
         length_unit_factor(units, "--units")
     check_out(out)
 
-    dataset = read_result(result)
+    dataset = select_joint(read_result(result), joint)
     config = config_of(dataset)
     simulated, shown_revolution = simulated_profile(dataset, result, revolution)
     if simulated.size != config.contact.nodes:

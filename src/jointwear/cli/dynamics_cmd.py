@@ -25,16 +25,22 @@ from jointwear.mechanism import LoadCycle, load_cycles
 
 CsvOpt = Annotated[
     Path | None,
-    typer.Option("--csv", help="Write the per-step arrays (time, forces in the bushing frame, "
-                 "cumulative rotation, load, azimuth, ...) to this CSV file; headers carry the "
-                 "units, and the file reads back as mechanism.type = 'load-history'. With "
-                 "several clearance joints, one file per joint (NAME.JOINT.csv).",
-                 show_default=False),
+    typer.Option(
+        "--csv",
+        help="Write the per-step arrays (time, forces in the bushing frame, "
+        "cumulative rotation, load, azimuth, ...) to this CSV file; headers carry the "
+        "units, and the file reads back as mechanism.type = 'load-history'. With "
+        "several clearance joints, one file per joint (NAME.JOINT.csv).",
+        show_default=False,
+    ),
 ]
 StrictOpt = Annotated[
     bool,
-    typer.Option("--strict", help="Fail (exit status 2) instead of warning when the "
-                 "continuous-contact assumption fails (sets dynamics.strict = true)."),
+    typer.Option(
+        "--strict",
+        help="Fail (exit status 2) instead of warning when the "
+        "continuous-contact assumption fails (sets dynamics.strict = true).",
+    ),
 ]
 
 
@@ -52,7 +58,9 @@ def csv_paths(path: Path, joints: list[str]) -> dict[str, Path]:
     """One CSV path per joint: ``path`` itself for a single joint."""
     if len(joints) == 1:
         return {joints[0]: path}
-    return {joint: path.with_name(f"{path.stem}.{joint}{path.suffix or '.csv'}") for joint in joints}
+    return {
+        joint: path.with_name(f"{path.stem}.{joint}{path.suffix or '.csv'}") for joint in joints
+    }
 
 
 def _rows(summary: dict[str, Any]) -> list[tuple[str, str]]:
@@ -60,34 +68,46 @@ def _rows(summary: dict[str, Any]) -> list[tuple[str, str]]:
         ("load min / max", f"{summary['load_min_n']:.6g} N / {summary['load_max_n']:.6g} N"),
         ("load time mean", f"{summary['load_mean_n']:.6g} N"),
         ("load sliding-weighted mean", f"{summary['load_sliding_mean_n']:.6g} N"),
-        ("azimuth min / max",
-         f"{summary['azimuth_min_deg']:.5g}° / {summary['azimuth_max_deg']:.5g}°"),
+        (
+            "azimuth min / max",
+            f"{summary['azimuth_min_deg']:.5g}° / {summary['azimuth_max_deg']:.5g}°",
+        ),
         ("azimuth range", f"{summary['azimuth_range_deg']:.5g}°"),
         ("total relative rotation", f"{summary['total_relative_rotation_rad']:.6g} rad"),
         ("period / steps", f"{summary['period_s']:.6g} s / {summary['steps']}"),
     ]
     if "crank_torque_rms_nm" in summary:
-        rows.append(("crank torque rms / max |T|",
-                     f"{summary['crank_torque_rms_nm']:.5g} N m / "
-                     f"{summary['crank_torque_max_abs_nm']:.5g} N m"))
+        rows.append(
+            (
+                "crank torque rms / max |T|",
+                f"{summary['crank_torque_rms_nm']:.5g} N m / "
+                f"{summary['crank_torque_max_abs_nm']:.5g} N m",
+            )
+        )
     if summary["dynamics_model"] == "massless-link":
         rows.append(("fixed-point iterations", str(summary["iterations"])))
     rows.append(("contact lost", "yes" if summary["contact_lost"] else "no"))
     if "impacts" in summary:
         rows += [
-            ("force law / c_e / mu",
-             f"{summary['force_law']} / {summary['restitution']:.4g} / "
-             f"{summary['friction_coefficient']:.4g}"),
+            (
+                "force law / c_e / mu",
+                f"{summary['force_law']} / {summary['restitution']:.4g} / "
+                f"{summary['friction_coefficient']:.4g}",
+            ),
             ("impacts in the cycle", str(summary["impacts"])),
             ("free-flight fraction", f"{summary['free_flight_fraction']:.4g}"),
             ("max penetration", f"{summary['max_penetration_m'] * 1e6:.4g} µm"),
             ("peak contact force", f"{summary['peak_load_n']:.6g} N"),
-            ("|F - F_massless| rms / max",
-             f"{summary['load_difference_rms_n']:.4g} N / "
-             f"{summary['load_difference_max_n']:.4g} N"),
-            ("integration (" + str(summary["integrator"]) + ")",
-             f"{summary['integration_runtime_s']:.3g} s, "
-             f"{summary['rhs_evaluations']} evaluations"),
+            (
+                "|F - F_massless| rms / max",
+                f"{summary['load_difference_rms_n']:.4g} N / "
+                f"{summary['load_difference_max_n']:.4g} N",
+            ),
+            (
+                "integration (" + str(summary["integrator"]) + ")",
+                f"{summary['integration_runtime_s']:.3g} s, "
+                f"{summary['rhs_evaluations']} evaluations",
+            ),
         ]
     return rows
 
@@ -110,8 +130,9 @@ def dynamics(
         cycles = load_cycles(cfg)
     # warnings go to stderr as one line each, so stdout stays a single JSON object
     for warning in caught:
-        err_console.print(f"warning: {warning.message}", markup=False, highlight=False,
-                          soft_wrap=True)
+        err_console.print(
+            f"warning: {warning.message}", markup=False, highlight=False, soft_wrap=True
+        )
     if csv_path is not None:
         for joint, path in csv_paths(csv_path, list(cycles)).items():
             write_csv(path, cycles[joint])
@@ -133,3 +154,38 @@ def dynamics(
         console.print(table)
     if csv_path is not None:
         console.print(f"per-step arrays written to {csv_path}", markup=False)
+
+
+@app.command()
+def mechanisms(json_: JsonOpt = False) -> None:
+    """List the mechanism types ([mechanism] type = ...), their dynamics models and keys."""
+    from rich.markup import escape
+
+    from jointwear.config import MECHANISM_TYPES
+    from jointwear.mechanism import MECHANISMS
+
+    catalogue = {
+        name: {
+            "description": entry.description,
+            "dynamics_models": list(entry.models),
+            "required_keys": [
+                k for k, f in MECHANISM_TYPES[name].model_fields.items() if f.is_required()
+            ],
+            "optional_keys": [
+                k
+                for k, f in MECHANISM_TYPES[name].model_fields.items()
+                if not f.is_required() and k != "type"
+            ],
+        }
+        for name, entry in MECHANISMS.items()
+    }
+    if json_:
+        emit_json({"mechanisms": catalogue})
+        return
+    table = Table(title=escape("mechanism types ([mechanism] type = ...)"))
+    for column in ("type", "description", "dynamics models", "keys (required first)"):
+        table.add_column(column)
+    for name, entry in catalogue.items():
+        keys = ", ".join(entry["required_keys"]) + "; " + ", ".join(entry["optional_keys"])
+        table.add_row(name, entry["description"], ", ".join(entry["dynamics_models"]), keys)
+    console.print(table)

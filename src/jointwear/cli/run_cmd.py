@@ -79,6 +79,21 @@ class ProgressBar:
         self.close()
 
 
+def plot_joints(dataset, directory: Path, **options) -> list[Path]:
+    """Figures of a result; with several clearance joints, a folder per joint."""
+    from jointwear.plots import plot_result
+    from jointwear.results import joint_datasets
+
+    joints = joint_datasets(dataset)
+    if len(joints) == 1:
+        return plot_result(dataset, directory, **options)
+    return [
+        path
+        for joint, single in joints.items()
+        for path in plot_result(single, directory / joint, **options)
+    ]
+
+
 def write_outputs(result, out: Path, plots: bool = True) -> None:
     """Write a run's files into ``out``: all or nothing (staged, then moved in)."""
     from jointwear.io import write_json
@@ -94,9 +109,7 @@ def write_outputs(result, out: Path, plots: bool = True) -> None:
         )
         write_json(staging / "summary.json", result.summary())
         if plots:
-            from jointwear.plots import plot_result
-
-            plot_result(result.dataset, staging / "plots")
+            plot_joints(result.dataset, staging / "plots")
         for item in staging.iterdir():
             target = out / item.name
             if target.is_dir() and item.is_dir():
@@ -247,7 +260,6 @@ def plot(
 ) -> None:
     """Redraw the figures of a saved result."""
     from jointwear.errors import ConfigError
-    from jointwear.plots import plot_result
     from jointwear.results import read_result
 
     dataset = read_result(result)
@@ -263,5 +275,5 @@ def plot(
     else:
         value = "auto"
     target = out if out is not None else result.parent / "plots"
-    paths = plot_result(dataset, target, magnification=value)
+    paths = plot_joints(dataset, target, magnification=value)
     console.print(f"{len(paths)} files written to {target}/")

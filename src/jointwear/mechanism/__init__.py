@@ -24,6 +24,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from jointwear.config import MECHANISM_TYPES, Config
+from jointwear.errors import ConfigError
 from jointwear.mechanism import force_laws
 from jointwear.mechanism.contact_impact import (
     ContactImpactSettings,
@@ -56,24 +57,23 @@ from jointwear.mechanism.slider_crank import (
     spectral_derivative,
     spring_force,
 )
-from jointwear.errors import ConfigError
 from jointwear.registry import Registry, suggest
 
 __all__ = [
     "DYNAMICS_MODELS",
     "DYNAMICS_MODEL_DESCRIPTIONS",
+    "MECHANISMS",
     "ContactImpactSettings",
     "ContactImpactSolution",
-    "MECHANISMS",
     "Diagnostic",
     "JointContact",
-    "LoadCycle",
-    "Mechanism",
-    "bushing_azimuth",
     "JointReaction",
+    "LoadCycle",
     "MasslessLinkSolution",
+    "Mechanism",
     "SliderCrank",
     "SliderCrankMotion",
+    "bushing_azimuth",
     "clearance_motion",
     "contact_impact_load",
     "contact_loss",
@@ -81,9 +81,9 @@ __all__ = [
     "force_laws",
     "ideal_motion",
     "inverse_dynamics",
+    "load_bandwidth",
     "load_cycle",
     "load_cycles",
-    "load_bandwidth",
     "massless_link_load",
     "rod_angle",
     "rod_angular_acceleration",
@@ -160,7 +160,10 @@ MECHANISMS.add(
     "four-bar",
     Mechanism(
         "crank-rocker four-bar linkage, clearance in any of its moving joints",
-        {"massless-link": _four_bar("massless-link"), "contact-impact": _four_bar("contact-impact")},
+        {
+            "massless-link": _four_bar("massless-link"),
+            "contact-impact": _four_bar("contact-impact"),
+        },
     ),
 )
 MECHANISMS.add(
@@ -234,6 +237,7 @@ def load_cycle(config: Config, joint: str | None = None) -> LoadCycle:
     if joint is None:
         return next(iter(cycles.values()))
     if joint not in cycles:
-        raise ConfigError(f"mechanism.clearance_joint: no clearance joint {joint!r}"
-                          f"{suggest(joint, cycles)}")
+        raise ConfigError(
+            f"mechanism.clearance_joint: no clearance joint {joint!r}{suggest(joint, cycles)}"
+        )
     return cycles[joint]

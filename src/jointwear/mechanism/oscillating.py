@@ -55,7 +55,9 @@ def oscillating_cycle(config: Config) -> dict[str, LoadCycle]:
     time = period * np.arange(steps) / steps
     phase = 2.0 * np.pi * np.arange(steps + 1) / steps
     rotation = mech.amplitude * np.sin(phase)
-    load = mech.load + mech.load_amplitude * np.cos(mech.load_harmonic * phase[:-1] + mech.load_phase)
+    load = mech.load + mech.load_amplitude * np.cos(
+        mech.load_harmonic * phase[:-1] + mech.load_phase
+    )
     azimuth = np.full(steps, mech.load_angle)
     if mech.load_frame == "pin":
         azimuth = azimuth + rotation[:-1]
