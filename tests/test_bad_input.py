@@ -253,28 +253,38 @@ CASES: list[Bad] = [
     ),
     # ------------------------------------------------------------ physics during a run
     Bad(
-        "wear-through",
-        "run",
-        ["run", "{paper}", *SMALL, "--set", "materials.bushing.wear_coefficient=1e-3"],
-        ["joint.bushing_thickness", "gone through"],
+        "life-clearance-below-initial",
+        "config",
+        ["run", "{paper}", *SMALL, "--set", "life.clearance=0.01 mm"],
+        ["life.clearance", "must exceed the initial clearance"],
     ),
     Bad(
-        "wear-through-while-checkpointing",
-        "run",
-        [
-            "run",
-            "{paper}",
-            *SMALL,
-            "--set",
-            "materials.bushing.wear_coefficient=2e-8",
-            "--set",
-            "simulation.update_contour=true",
-            "--set",
-            "simulation.revolutions=50",
-            "--checkpoint-every",
-            "2",
-        ],
-        ["joint.bushing_thickness", "gone through"],
+        "life-wall-beyond-bushing",
+        "config",
+        ["run", "{paper}", *SMALL, "--set", "life.wall_thickness=3 mm"],
+        ["life.wall_thickness", "must be below joint.bushing_thickness"],
+    ),
+    Bad(
+        "mechanism-type-unknown",
+        "config",
+        ["run", "{paper}", "--set", "mechanism.type=four-bars"],
+        ["mechanism.type", "did you mean 'four-bar'"],
+    ),
+    Bad(
+        "mechanism-key-of-another-type",
+        "config",
+        ["run", "{paper}", "--set", "mechanism.type=oscillating"],
+        ["mechanism.crank_length: unknown key", "'amplitude'"],
+    ),
+    Bad(
+        "contact-impact-for-a-prescribed-load",
+        "config",
+        ["dynamics", "{tmp}/swing.toml", "--set", "dynamics.model=contact-impact"],
+        ["dynamics.model", "prescribes its load"],
+        files={
+            "swing.toml": '[mechanism]\ntype = "oscillating"\nload = "1 kN"\n'
+            'amplitude = "25 deg"\nfrequency = "1 Hz"\n'
+        },
     ),
     Bad(
         "no-convergence",
@@ -627,7 +637,7 @@ def test_bad_input(case: Bad, tmp_path, capsys, result_bytes):
 
 SUBPROCESS_CASES = [
     "mass-as-length",
-    "wear-through",
+    "mechanism-type-unknown",
     *(
         pytest.param(name, marks=pytest.mark.slow)
         for name in ("plot-garbage-netcdf", "unknown-option", "sweep-unknown-config-key")

@@ -26,6 +26,7 @@ from jointwear.checkpoint import (
 from jointwear.cli import main
 from jointwear.errors import DataError
 from jointwear.results import read_result
+from jointwear.state import Log
 
 REPO = Path(__file__).resolve().parents[1]
 UPDATE_CONFIG = REPO / "examples" / "paper" / "fig14_nlcp_update.toml"
@@ -100,13 +101,17 @@ def test_state_round_trip_keeps_every_field(tmp_path):
         other = getattr(back, name)
         if isinstance(value, np.ndarray):
             np.testing.assert_array_equal(value, other)
-        elif isinstance(value, dict):
-            assert list(value) == list(other)
-            for key in value:
-                np.testing.assert_array_equal(value[key], other[key])
+        elif isinstance(value, Log):
+            assert len(value) == len(other), name
+            for mine, theirs in zip(value, other, strict=True):
+                if isinstance(mine, dict):
+                    assert mine == theirs, name
+                else:
+                    assert mine[0] == theirs[0], name
+                    np.testing.assert_array_equal(mine[1], theirs[1])
         else:
             assert value == other, name
-    assert all(isinstance(r, int) for r in back.history["revolution"])
+    assert all(isinstance(r, int) for r in back.history_columns["revolution"])
 
 
 def test_truncated_checkpoint_is_a_data_error(tmp_path):

@@ -7,7 +7,6 @@ import pytest
 
 from jointwear import Simulation
 from jointwear.config import Config
-from jointwear.errors import WearThroughError
 from jointwear.mechanism import LoadCycle
 from jointwear.tribology import archard
 
@@ -142,16 +141,23 @@ def test_callable_contact_model_equals_the_named_one(base: Config) -> None:
     np.testing.assert_allclose(custom, named, rtol=1e-9, atol=1e-9 * named.max())
 
 
-def test_wear_through_the_wall_is_an_error(base: Config) -> None:
+def test_wear_through_the_wall_ends_the_run_at_that_revolution(base: Config) -> None:
     config = base.replace(
         {
-            "materials.bushing.wear_coefficient": 1e-6,
+            "materials.bushing.wear_coefficient": 2e-8,
             "simulation.revolutions": 50,
             "simulation.update_contour": True,
         }
     )
-    with pytest.raises(WearThroughError, match="joint.bushing_thickness"):
-        Simulation(config).run()
+    summary = Simulation(config).run().summary()
+    assert summary["life_revolutions"] > 2
+    assert summary["stopped_by"] == "wall_thickness"
+    assert summary["min_wall_thickness_m"] <= 0
+    # per-revolution updating: one revolution less has not gone through
+    shorter = config.replace({"simulation.revolutions": summary["life_revolutions"] - 1})
+    before = Simulation(shorter).run().summary()
+    assert before["stopped_by"] is None
+    assert before["min_wall_thickness_m"] > 0
 
 
 def test_history_is_kept_for_every_update(base: Config) -> None:

@@ -303,18 +303,22 @@ def test_failed_cases_are_recorded_not_fatal(tmp_path):
     plan = load_sweep(path)
     result = run_sweep(plan, tmp_path / "out", workers=2)
     statuses = [r["status"] for r in result.records]
-    assert statuses == ["ok", "failed", "failed", "failed"]
-    assert "joint.bushing_thickness" in result.records[2]["error"]  # wear-through
+    assert statuses == ["ok", "failed", "ok", "failed"]
+    # wear-through ends a case at the wall, with its results
+    assert result.records[2]["metrics"]["stopped_by"] == "wall_thickness"
+    assert result.records[2]["metrics"]["life_revolutions"] == 1
     assert "cannot assemble" in result.records[1]["error"]  # invalid combination
     assert all("\n" not in r["error"] for r in result.records)
     with open(tmp_path / "out" / CASES_CSV, newline="", encoding="utf-8") as handle:
         rows = list(csv.DictReader(handle))
-    assert rows[2]["status"] == "failed"
-    assert rows[2]["peak_wear_depth_m"] == ""
-    assert "joint.bushing_thickness" in rows[2]["error"]
+    assert rows[3]["status"] == "failed"
+    assert rows[3]["peak_wear_depth_m"] == ""
+    assert "cannot assemble" in rows[3]["error"]
+    assert rows[2]["stopped_by"] == "wall_thickness"
     with xr.open_dataset(tmp_path / "out" / DATASET_FILE, engine="h5netcdf") as ds:
-        assert np.isnan(ds["peak_wear_depth_m"].values[2])
-        assert np.isnan(ds["wear_depth"].values[2]).all()
+        assert np.isnan(ds["peak_wear_depth_m"].values[3])
+        assert np.isnan(ds["wear_depth"].values[3]).all()
+        assert str(ds["stopped_by"].values[2]) == "wall_thickness"
 
 
 def test_resume_skips_finished_cases(serial, tmp_path, monkeypatch):

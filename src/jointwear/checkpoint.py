@@ -68,7 +68,7 @@ CHECKPOINT_STATE = "checkpoint.npz"
 #: resolved configuration inside a checkpoint directory
 CHECKPOINT_CONFIG = "checkpoint.toml"
 #: version of the state layout
-FORMAT = 1
+FORMAT = 2
 
 
 def config_digest(config: Config) -> str:
@@ -88,9 +88,12 @@ def has_checkpoint(directory: str | Path) -> bool:
 def _state_arrays(state: SimulationState, digest: str) -> dict[str, np.ndarray]:
     """Flatten a state into named arrays, generically over its dataclass fields.
 
-    Field values are ``None``, integers, floats, arrays, ``dict[str, list]``
-    (the history) or ``dict[int, array]`` (the saved profiles).
+    Field values are ``None``, booleans, integers, floats, strings, arrays or
+    :class:`~jointwear.state.Log` objects of mapping rows (the per-update and dynamics
+    records) or of ``(revolution, array)`` rows (the saved profiles).
     """
+    from jointwear.state import Log
+
     arrays: dict[str, np.ndarray] = {
         "format": np.array(FORMAT, dtype=np.int64),
         "config_digest": np.array(digest),
@@ -109,22 +112,26 @@ def _state_arrays(state: SimulationState, digest: str) -> dict[str, np.ndarray]:
         elif isinstance(value, float | np.floating):
             schema[name] = "float"
             arrays[f"f_{name}"] = np.array(float(value), dtype=np.float64)
+        elif isinstance(value, str):
+            schema[name] = "str"
+            arrays[f"f_{name}"] = np.array(value)
         elif isinstance(value, np.ndarray):
             schema[name] = "array"
             arrays[f"f_{name}"] = value
-        elif isinstance(value, dict) and all(isinstance(k, str) for k in value):
-            schema[name] = "lists"
-            arrays[f"f_{name}__keys"] = np.array(list(value), dtype=str)
-            for key, values in value.items():
+        elif isinstance(value, Log) and (not len(value) or isinstance(value.last, dict)):
+            schema[name] = "rows"
+            columns = value.columns()
+            arrays[f"f_{name}__keys"] = np.array(list(columns), dtype=str)
+            for key, values in columns.items():
                 integral = all(isinstance(v, int | np.integer) for v in values)
                 dtype = np.int64 if integral and values else np.float64
                 arrays[f"f_{name}__{key}"] = np.asarray(values, dtype=dtype)
-        elif isinstance(value, dict):
-            schema[name] = "arrays"
-            keys = sorted(value)
-            arrays[f"f_{name}__keys"] = np.asarray(keys, dtype=np.int64)
-            for i, key in enumerate(keys):
-                arrays[f"f_{name}__{i}"] = np.asarray(value[key])
+        elif isinstance(value, Log):
+            schema[name] = "profiles"
+            rows = value.items()
+            arrays[f"f_{name}__keys"] = np.asarray([r for r, _ in rows], dtype=np.int64)
+            for i, (_, profile) in enumerate(rows):
+                arrays[f"f_{name}__{i}"] = np.asarray(profile)
         else:  # a state field this module does not know how to store: a bug
             raise TypeError(f"cannot checkpoint SimulationState.{name} ({type(value).__name__})")
     arrays["schema"] = np.array(json.dumps(schema))
@@ -133,6 +140,7 @@ def _state_arrays(state: SimulationState, digest: str) -> dict[str, np.ndarray]:
 
 def _state_from_arrays(arrays: dict[str, np.ndarray]) -> SimulationState:
     from jointwear.simulation import SimulationState
+    from jointwear.state import Log
 
     schema: dict[str, str] = json.loads(str(arrays["schema"]))
     expected = [spec.name for spec in dataclasses.fields(SimulationState)]
@@ -148,17 +156,21 @@ def _state_from_arrays(arrays: dict[str, np.ndarray]) -> SimulationState:
             values[name] = int(arrays[f"f_{name}"])
         elif kind == "float":
             values[name] = float(arrays[f"f_{name}"])
+        elif kind == "str":
+            values[name] = str(arrays[f"f_{name}"])
         elif kind == "array":
             values[name] = arrays[f"f_{name}"].copy()
-        elif kind == "lists":
-            values[name] = {
-                str(key): arrays[f"f_{name}__{key}"].tolist() for key in arrays[f"f_{name}__keys"]
-            }
-        elif kind == "arrays":
-            values[name] = {
-                int(key): arrays[f"f_{name}__{i}"].copy()
+        elif kind == "rows":
+            keys = [str(key) for key in arrays[f"f_{name}__keys"]]
+            columns = [arrays[f"f_{name}__{key}"].tolist() for key in keys]
+            values[name] = Log.of(
+                dict(zip(keys, row, strict=True)) for row in zip(*columns, strict=True)
+            )
+        elif kind == "profiles":
+            values[name] = Log.of(
+                (int(key), arrays[f"f_{name}__{i}"].copy())
                 for i, key in enumerate(arrays[f"f_{name}__keys"])
-            }
+            )
         else:
             raise ValueError(f"unknown field kind {kind!r}")
     return SimulationState(**values)

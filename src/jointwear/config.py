@@ -42,6 +42,7 @@ __all__ = [
     "DynamicsConfig",
     "FourBarConfig",
     "JointConfig",
+    "LifeConfig",
     "LoadHistoryConfig",
     "MaterialConfig",
     "MechanismConfig",
@@ -467,6 +468,25 @@ class SimulationConfig(_Section):
     width_threshold: Annotated[float, Field(gt=0, lt=1)] = 0.01
     saved_profiles: Annotated[int, Field(ge=1, le=100_000)] = 11
     checkpoint_every: Annotated[int, Field(ge=0)] = 0
+    #: re-solve the dynamics on the worn joint: never, every K contour updates, or
+    #: whenever the load cycle would move by more than dynamics_tolerance
+    dynamics_update: Annotated[int, Field(ge=1)] | Literal["once", "adaptive"] = "once"
+    dynamics_tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.02
+
+
+class LifeConfig(_Section):
+    """Wear limits: the run stops at the first revolution where one is reached.
+
+    ``wall_thickness`` is the least remaining wall; its default 0 stops the run where
+    wear goes through the wall.
+    """
+
+    peak_wear_depth: Annotated[float | None, _si("length"), Field(gt=0)] = None
+    wear_mass: Annotated[float | None, _si("mass"), Field(gt=0)] = None
+    wear_volume: Annotated[float | None, _si("volume"), Field(gt=0)] = None
+    clearance: Annotated[float | None, _si("length"), Field(gt=0)] = None
+    wall_thickness: NonNegLength = 0.0
+
 
 
 class Config(_Section):
@@ -479,6 +499,22 @@ class Config(_Section):
     contact: ContactConfig = ContactConfig()
     dynamics: DynamicsConfig = DynamicsConfig()
     simulation: SimulationConfig = SimulationConfig()
+    life: LifeConfig = LifeConfig()
+
+    @model_validator(mode="after")
+    def _life_limits_fit(self) -> Config:
+        life, joint = self.life, self.joint
+        if life.clearance is not None and life.clearance <= joint.clearance:
+            raise ValueError(
+                f"life.clearance: the limit ({life.clearance:g} m) must exceed the initial "
+                f"clearance joint.clearance ({joint.clearance:g} m)"
+            )
+        if life.wall_thickness >= joint.bushing_thickness:
+            raise ValueError(
+                f"life.wall_thickness: the limit ({life.wall_thickness:g} m) must be below "
+                f"joint.bushing_thickness ({joint.bushing_thickness:g} m)"
+            )
+        return self
 
     @model_validator(mode="after")
     def _dynamics_fits_mechanism(self) -> Config:
@@ -714,7 +750,14 @@ def _key_loc(loc: tuple[Any, ...]) -> tuple[Any, ...]:
 
 
 def _first_error(errors: list[Any]) -> Mapping[str, Any]:
-    """The error to report; for text given to an ``int | Literal`` key, the Literal one."""
+    """The error to report; for text given to an ``int | Literal`` key, the Literal one.
+
+    An unknown key is reported before a missing one: keys of another mechanism type
+    (or a misspelt key) explain the missing ones.
+    """
+    unknown = [e for e in errors if e["type"] == "extra_forbidden"]
+    if unknown and any(e["type"] == "missing" for e in errors):
+        return unknown[0]
     first = errors[0]
     if isinstance(first.get("input"), str):
         key = _key_loc(tuple(first["loc"]))

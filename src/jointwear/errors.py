@@ -15,6 +15,7 @@ __all__ = [
     "GeometryError",
     "JointwearError",
     "MechanismError",
+    "WearFeedbackWarning",
     "WearThroughError",
 ]
 
@@ -60,4 +61,13 @@ class ContactLossWarning(UserWarning):
     The massless-link dynamics model assumes continuous contact; where the force
     reverses its results are not physical. ``dynamics.strict = true`` turns this
     warning into :class:`MechanismError`.
+    """
+
+
+class WearFeedbackWarning(UserWarning):
+    """A run's assumptions are in doubt as the joint wears (said once per run).
+
+    Wear of the order of the clearance under the massless-link load, a load that
+    falls to zero, or separation found when the dynamics are solved on the worn
+    joint; the message names the setting that would model it.
     """

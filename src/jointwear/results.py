@@ -19,6 +19,7 @@ import xarray as xr
 
 from jointwear.errors import DataError
 from jointwear.io import atomic_path, atomic_write
+from jointwear.tribology.metrics import WEAR_METRICS
 
 if TYPE_CHECKING:
     from jointwear.config import Config
@@ -41,13 +42,18 @@ __all__ = [
 PRESSURE_SNAPSHOTS = 72
 
 _HISTORY_META = {
-    "peak_wear_depth": ("m", "largest wear depth of the bushing"),
-    "wear_width": ("rad", "angular width of the worn zone"),
-    "wear_area": ("m2", "cross-section area removed by wear"),
-    "wear_volume": ("m3", "worn volume"),
-    "wear_mass": ("kg", "worn mass"),
-    "min_wall_thickness": ("m", "smallest remaining bushing wall thickness"),
+    **{m.name: (m.units, m.long_name) for m in WEAR_METRICS},
     "contact_iterations": ("1", "contact balance iterations of the revolution"),
+}
+_DYNAMICS_META = {
+    "revolution": ("1", "revolutions completed when the dynamics were solved"),
+    "load_max": ("N", "largest joint load of the cycle (sampled steps)"),
+    "load_mean": ("N", "time mean of the joint load"),
+    "peak_load": ("N", "largest contact force of the cycle, impacts included"),
+    "impacts": ("1", "impacts per cycle"),
+    "free_flight_fraction": ("1", "fraction of the cycle in free flight"),
+    "load_change": ("1", "RMS change of the load vector since the last solve over RMS load"),
+    "max_clearance": ("m", "largest radial play of the pin when the dynamics were solved"),
 }
 
 
@@ -69,8 +75,9 @@ def build_dataset(
     cycle = simulation.load_cycle
     nodes = config.contact.nodes
     theta = 2 * np.pi * np.arange(nodes) / nodes
-    revolutions = np.array(sorted(state.profiles), dtype=np.int64)
-    profiles = np.array([state.profiles[r] for r in revolutions]).reshape(len(revolutions), nodes)
+    saved = state.saved_profiles
+    revolutions = np.array(sorted(saved), dtype=np.int64)
+    profiles = np.array([saved[r] for r in revolutions]).reshape(len(revolutions), nodes)
     steps = cycle.steps
     snapshot = np.unique(
         np.linspace(0, steps, min(PRESSURE_SNAPSHOTS, steps), endpoint=False).astype(int)
@@ -127,11 +134,16 @@ def build_dataset(
             "mean contact half-angle on the unworn bushing",
         ),
     }
-    for name, values in state.history.items():
+    history = state.history_columns
+    for name, values in history.items():
         if name == "revolution":
             continue
         units, long_name = _HISTORY_META[name]
         data_vars[name] = _var(("update",), values, units, long_name)
+    dynamics = state.dynamics_updates.columns()
+    for name, values in dynamics.items():
+        units, long_name = _DYNAMICS_META[name]
+        data_vars[f"dynamics_{name}"] = _var(("dynamics_update",), values, units, long_name)
     coords = {
         "theta": _var(("theta",), theta, "rad", "bushing angle"),
         "revolution": _var(("revolution",), revolutions, "1", "revolutions completed"),
@@ -145,11 +157,11 @@ def build_dataset(
             "cycle phase of the pressure snapshot",
         ),
         "update": _var(
-            ("update",), np.arange(len(state.history["revolution"])), "1", "contour update"
+            ("update",), np.arange(len(history["revolution"])), "1", "contour update"
         ),
         "update_revolution": _var(
             ("update",),
-            np.asarray(state.history["revolution"], dtype=np.int64),
+            np.asarray(history["revolution"], dtype=np.int64),
             "1",
             "revolutions completed at the update",
         ),
@@ -161,6 +173,8 @@ def build_dataset(
         "dynamics_model": cycle.model,
         "joint": cycle.joint,
         "period_s": cycle.period,
+        "stopped_by": state.stopped_by or "",
+        "dynamics_update": str(config.simulation.dynamics_update),
         "runtime_s": runtime,
         "jointwear_version": __version__,
         "created": _dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),
@@ -223,6 +237,9 @@ def select_joint(dataset: xr.Dataset, joint: str | None = None) -> xr.Dataset:
     single = dataset.sel(joint=joint, drop=True)
     updates = int(np.count_nonzero(np.isfinite(single["update_revolution"].values)))
     single = single.isel(update=slice(0, updates))
+    if "dynamics_revolution" in single:
+        solves = int(np.count_nonzero(np.isfinite(single["dynamics_revolution"].values)))
+        single = single.isel(dynamics_update=slice(0, solves))
     single = single.assign_coords(
         update_revolution=single["update_revolution"].astype(np.int64)
     )
@@ -231,25 +248,38 @@ def select_joint(dataset: xr.Dataset, joint: str | None = None) -> xr.Dataset:
 
 
 def summarize(dataset: xr.Dataset) -> dict[str, Any]:
-    """The scalar results of a single-joint result dataset (SI, units in the keys)."""
-    last = {
-        name: float(dataset[name].values[-1])
-        for name in ("peak_wear_depth", "wear_width", "wear_mass", "wear_volume",
-                     "min_wall_thickness")
+    """The scalar results of a single-joint result dataset (SI, units in the keys).
+
+    The wear metrics (:data:`~jointwear.tribology.metrics.WEAR_METRICS`) at the end
+    of the run, what ran, and the life: ``stopped_by`` (the ``[life]`` limit that
+    ended the run, or ``None``), ``life_revolutions`` and ``life_hours`` (when it
+    was reached, or ``None``) and ``dynamics_updates`` (solves of the dynamics on the
+    worn joint, the first on the unworn joint not counted).
+    """
+    out: dict[str, Any] = {
+        m.key: float(dataset[m.name].values[-1]) * m.scale
+        for m in WEAR_METRICS
+        if m.key is not None and m.name in dataset
     }
-    return {
-        "peak_wear_depth_m": last["peak_wear_depth"],
-        "wear_width_deg": math.degrees(last["wear_width"]),
-        "wear_mass_kg": last["wear_mass"],
-        "wear_volume_m3": last["wear_volume"],
-        "min_wall_thickness_m": last["min_wall_thickness"],
-        "revolutions": int(dataset["update_revolution"].values[-1]),
-        "contour_updates": int(dataset.sizes["update"]),
-        "contact_model": dataset.attrs["contact_model"],
-        "mechanism": dataset.attrs.get("mechanism", "slider-crank"),
-        "joint": str(dataset.attrs.get("joint", "rod-slider")),
-        "runtime_s": float(dataset.attrs.get("runtime_s", math.nan)),
-    }
+    revolutions = int(dataset["update_revolution"].values[-1])
+    stopped_by = str(dataset.attrs.get("stopped_by", "")) or None
+    period = float(dataset.attrs.get("period_s", math.nan))
+    updates = dataset.sizes.get("dynamics_update", 1)
+    out.update(
+        {
+            "revolutions": revolutions,
+            "contour_updates": int(dataset.sizes["update"]),
+            "contact_model": dataset.attrs["contact_model"],
+            "mechanism": dataset.attrs.get("mechanism", "slider-crank"),
+            "joint": str(dataset.attrs.get("joint", "rod-slider")),
+            "stopped_by": stopped_by,
+            "life_revolutions": revolutions if stopped_by else None,
+            "life_hours": revolutions * period / 3600.0 if stopped_by else None,
+            "dynamics_updates": max(int(updates) - 1, 0),
+            "runtime_s": float(dataset.attrs.get("runtime_s", math.nan)),
+        }
+    )
+    return out
 
 
 def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
@@ -305,14 +335,10 @@ def write_metrics_csv(dataset: xr.Dataset, path: str | Path) -> None:
     with atomic_write(path, newline="", encoding="utf-8") as handle:
         writer = csv.writer(handle)
         for index, (joint, single) in enumerate(joints.items()):
-            columns = [
-                ("revolution", single["update_revolution"].values, 1.0),
-                ("peak_wear_depth [m]", single["peak_wear_depth"].values, 1.0),
-                ("wear_width [deg]", single["wear_width"].values, 180.0 / math.pi),
-                ("wear_area [m^2]", single["wear_area"].values, 1.0),
-                ("wear_volume [m^3]", single["wear_volume"].values, 1.0),
-                ("wear_mass [kg]", single["wear_mass"].values, 1.0),
-                ("min_wall_thickness [m]", single["min_wall_thickness"].values, 1.0),
+            columns = [("revolution", single["update_revolution"].values, 1.0)] + [
+                (m.header, single[m.name].values, m.scale)
+                for m in WEAR_METRICS
+                if m.name in single
             ]
             if index == 0:
                 writer.writerow((["joint"] if several else []) + [n for n, _, _ in columns])

@@ -31,8 +31,9 @@ from __future__ import annotations
 import functools
 import math
 import time
+import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -43,72 +44,17 @@ from jointwear.config import Config
 from jointwear.contact import ContactParameters, ContactSolution, contact_law
 from jointwear.contact import solve as solve_contact
 from jointwear.geometry.contour import BushingContour, Pin
+from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
+from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.update import update_contour
-from jointwear.tribology import archard, metrics
+from jointwear.state import SimulationState
+from jointwear.tribology import archard
+from jointwear.tribology.metrics import evaluate_metrics
 from jointwear.tribology.sliding import SLIDING_MODELS
 
-__all__ = ["Simulation", "SimulationState", "WearResult"]
+__all__ = ["Simulation", "SimulationState", "WearResult", "WearStep"]
 
 FloatArray = NDArray[np.float64]
-
-#: the per-update summary kept for every contour update
-HISTORY_FIELDS = (
-    "revolution",
-    "peak_wear_depth",
-    "wear_width",
-    "wear_area",
-    "wear_volume",
-    "wear_mass",
-    "min_wall_thickness",
-    "contact_iterations",
-)
-
-
-@dataclass
-class SimulationState:
-    """Everything the revolution loop carries from one update to the next.
-
-    Plain arrays and numbers only, so a state can be checkpointed and resumed.
-
-    Attributes
-    ----------
-    revolution : int
-        Revolutions completed.
-    wear_depth : ndarray, shape (N,)
-        Accumulated radial wear depth [m] (the contour is the unworn circle plus
-        this; kept as depth, not radius, so small depths carry full precision).
-    wear_rate : ndarray, shape (N,) or None
-        Wear depth per revolution on the current contour [m].
-    interval : int
-        Revolutions covered by the last update.
-    history : dict of lists
-        One entry per update (see ``HISTORY_FIELDS``), SI units.
-    profiles : dict of int -> ndarray
-        Saved wear-depth profiles by revolution [m].
-    warm_offset : ndarray or None
-        Pin displacement along each load line at the last solve [m] (warm start).
-    window : int or None
-        Node window of the last contact solve.
-    warm_slope : ndarray or None
-        Change of ``warm_offset`` per revolution between the last two solves [m]: the
-        next solve starts from the linear extrapolation (one Newton step saved).
-    next_interval : int or None
-        Adaptive updating: the interval the step-size controller proposes next.
-    """
-
-    revolution: int
-    wear_depth: FloatArray
-    wear_rate: FloatArray | None = None
-    interval: int = 1
-    history: dict[str, list[float]] = field(
-        default_factory=lambda: {name: [] for name in HISTORY_FIELDS}
-    )
-    profiles: dict[int, FloatArray] = field(default_factory=dict)
-    warm_offset: FloatArray | None = None
-    window: int | None = None
-    warm_slope: FloatArray | None = None
-    next_interval: int | None = None
-
 
 @dataclass(frozen=True, eq=False)
 class WearResult:
@@ -174,6 +120,52 @@ class WearResult:
         write_netcdf(self.dataset, path)
 
 
+@dataclass(frozen=True, eq=False)
+class WearStep:
+    """One contour update before it is applied: where the wear depth goes over the interval.
+
+    Attributes
+    ----------
+    base : SimulationState
+        The state the update starts from (its wear rate may have been refreshed).
+    interval : int
+        Revolutions the update covers.
+    rate : ndarray, shape (N,)
+        Wear per revolution at the start of the interval [m].
+    end_rate : ndarray, shape (N,) or None
+        Wear per revolution at the predicted end (adaptive jumps; ``None``: the
+        explicit scheme, linear over the interval) [m].
+    solution : ContactSolution
+        The last contact solve of the update.
+    contour : BushingContour
+        The contour of that solve.
+    error : float
+        Error estimate of an adaptive jump [-] (0 otherwise).
+    """
+
+    base: SimulationState
+    interval: int
+    rate: FloatArray
+    end_rate: FloatArray | None
+    solution: ContactSolution
+    contour: BushingContour
+    error: float = 0.0
+
+    def depth_at(self, revolutions: int) -> FloatArray:
+        """Wear depth ``revolutions`` into the interval [m].
+
+        The explicit scheme grows linearly; an adaptive jump follows the trapezoid
+        corrector's quadratic, whose end value is the corrector's.
+        """
+        depth, rate, end = self.base.wear_depth, self.rate, self.end_rate
+        if end is None:
+            return depth + rate * revolutions
+        if revolutions == self.interval:
+            return depth + 0.5 * self.interval * (rate + end)
+        tau = revolutions
+        return depth + tau * rate + (0.5 * tau * tau / self.interval) * (end - rate)
+
+
 class Simulation:
     """Wear of a clearance joint over revolutions (paper Fig. 7).
 
@@ -186,7 +178,7 @@ class Simulation:
         [m -> Pa]; default ``config.contact.model``.
     load_cycle : LoadCycle, optional
         Precomputed load cycle of the joint (default: from ``config`` by
-        :func:`jointwear.mechanism.load_cycles`).
+        :func:`jointwear.mechanism.load_cycles`; a given cycle is never re-solved).
     joint : str, optional
         The clearance joint to simulate; default all of ``config.joints``.
 
@@ -216,15 +208,19 @@ class Simulation:
 
             raise ConfigError(f"joint: no clearance joint {joint!r}{suggest(joint, config.joints)}")
         self._cycles: dict[str, mechanism.LoadCycle] | None = None
+        self._given_cycle = load_cycle is not None
         if load_cycle is not None:
             self._cycles = {joint or load_cycle.joint: load_cycle}
             joint = joint or load_cycle.joint
         self.joint = joint
+        self.life = LifeLimits.from_config(config)
+        self.schedule = DynamicsSchedule.from_config(config)
+        self._warned: set[str] = set()
 
     # ---------------------------------------------------------------- stages
     @property
     def load_cycles(self) -> dict[str, mechanism.LoadCycle]:
-        """Stage 1: the load cycle of every simulated clearance joint."""
+        """Stage 1: the load cycle of every simulated clearance joint (unworn joint)."""
         if self._cycles is None:
             cycles = mechanism.load_cycles(self.config)
             self._cycles = cycles if self.joint is None else {self.joint: cycles[self.joint]}
@@ -232,14 +228,18 @@ class Simulation:
 
     @property
     def load_cycle(self) -> mechanism.LoadCycle:
-        """Stage 1: load, azimuth and relative rotation per step (the first joint)."""
+        """Stage 1: load, azimuth and relative rotation per step (the current cycle)."""
         return next(iter(self.load_cycles.values()))
 
-    @functools.cached_property
+    @property
     def sliding_distance(self) -> FloatArray:
-        """Stage 3a: sliding distance per step [m]."""
+        """Stage 3a: sliding distance per step of the current cycle [m]."""
+        return self._sliding(self.load_cycle)
+
+    @functools.lru_cache(maxsize=4)  # noqa: B019 - one simulation, a handful of cycles
+    def _sliding(self, cycle: mechanism.LoadCycle) -> FloatArray:
         slide = SLIDING_MODELS.get(self.config.simulation.sliding)
-        return slide(self.load_cycle, self.config.joint.bushing_radius)
+        return slide(cycle, self.config.joint.bushing_radius)
 
     def initial_contour(self) -> BushingContour:
         """The unworn bushing."""
@@ -293,34 +293,84 @@ class Simulation:
         )
 
     # ---------------------------------------------------------------- loop
+    def run(
+        self,
+        progress: Callable[[int, int], None] | None = None,
+        state: SimulationState | None = None,
+        on_step: Callable[[SimulationState], None] | None = None,
+    ) -> WearResult:
+        """Run all revolutions, or up to the first ``[life]`` limit reached.
+
+        Parameters
+        ----------
+        progress : callable, optional
+            Called as ``progress(revolutions_done, revolutions_total)``.
+        state : SimulationState, optional
+            Resume from this state (e.g. a checkpoint).
+        on_step : callable, optional
+            Called with the state after every contour update (checkpointing).
+        """
+        if self.joint is None and len(self.config.joints) > 1:
+            return self._run_joints(progress, state, on_step)
+        start = time.perf_counter()
+        state = self.initial_state() if state is None else state
+        self._use_load_of(state)
+        steps = self.load_cycle.steps
+        if steps != self.config.simulation.steps_per_revolution:
+            # a load history brings its own steps: the config says what really ran
+            self.config = self.config.replace({"simulation.steps_per_revolution": steps})
+        total = self.config.simulation.revolutions
+        first_solution = None
+        if state.revolution == 0 and not len(state.dynamics_updates):
+            state = self._record_dynamics(state, None)
+        if not self.config.simulation.update_contour and state.revolution == 0:
+            # without update one revolution is computed and scaled (exactly linear)
+            state, first_solution = self._linear(state)
+        while state.revolution < total and state.stopped_by is None:
+            state = self.step(state)
+            if on_step is not None:
+                on_step(state)
+            if progress is not None:
+                progress(state.revolution, total)
+        if progress is not None:
+            progress(total, total)
+        final_solution = (
+            self.contact(self._contour(state.wear_depth))
+            if first_solution is None
+            else first_solution
+        )
+        initial_solution = first_solution or self._unworn_solution(state)
+        runtime = time.perf_counter() - start
+        from jointwear.results import build_dataset
+
+        dataset = build_dataset(self, state, initial_solution, final_solution, runtime)
+        return WearResult(config=self.config, dataset=dataset, runtime=runtime)
+
     def step(self, state: SimulationState) -> SimulationState:
-        """One contour update: solve a revolution, apply its wear over the next interval.
+        """One contour update, and the dynamics solved again on the worn joint when due.
 
         A fixed interval (``update_every = k``) is the paper's explicit scheme: the wear
         of one revolution on the current contour, times ``k``. ``"adaptive"`` integrates
-        the wear with error control, see :meth:`_adaptive_step`.
+        the wear with error control, see :meth:`_adaptive_step`. A ``[life]`` limit
+        reached inside the interval ends it at the first revolution that reaches it.
         """
+        if self.schedule.due(state.updates_since_dynamics, state.dynamics_every):
+            state = self._resolve_dynamics(state)
+        remaining = self.config.simulation.revolutions - state.revolution
         if self.config.simulation.update_every == "adaptive":
-            return self._adaptive_step(state)
+            wear_step = self._adaptive_step(state, remaining)
+        else:
+            wear_step = self._fixed_step(state, remaining)
+        return self._apply(wear_step)
+
+    def _fixed_step(self, state: SimulationState, remaining: int) -> WearStep:
         contour = self._contour(state.wear_depth)
         solution = self.contact(contour, state)
         rate = self.wear_per_revolution(solution)
-        interval = self._interval(
-            state, rate, self.config.simulation.revolutions - state.revolution
-        )
-        worn = update_contour(contour, rate * interval, self.config.joint.bushing_thickness)
-        new = replace(
-            state,
-            revolution=state.revolution + interval,
-            wear_depth=worn.wear_depth,
-            wear_rate=rate,
-            interval=interval,
-            **self._warm_start(solution, contour, state.warm_offset, state.interval),
-        )
-        self._record(new, new.wear_depth, solution)
-        return new
+        interval = min(int(self.config.simulation.update_every), remaining)
+        return WearStep(state, interval, rate, None, solution, contour)
 
-    def _adaptive_step(self, state: SimulationState) -> SimulationState:
+    def _adaptive_step(self, state: SimulationState, remaining: int) -> WearStep:
         """One adaptive contour update: a jump of many revolutions, error-controlled.
 
         The worn depth obeys ``dh/dn = w(h)``, ``w`` the wear per revolution on the
@@ -334,7 +384,9 @@ class Simulation:
         mass, and must stay below ``simulation.adaptive_tolerance``; otherwise the jump is
         rejected and retried shorter. The next jump follows from
         :func:`adaptive_interval`. Saved profiles that fall inside a jump are the
-        quadratic (dense) output of the corrector, at their exact revolutions.
+        quadratic (dense) output of the corrector, at their exact revolutions. After the
+        dynamics were solved again the rate is that of the new load, and the jumps
+        start again from one revolution.
         """
         sim = self.config.simulation
         thickness = self.config.joint.bushing_thickness
@@ -348,16 +400,13 @@ class Simulation:
                 next_interval=1,
                 **self._warm_start(solution, contour),
             )
-        remaining = sim.revolutions - base.revolution
         rate0 = base.wear_rate
         interval = min(max(1, base.next_interval or base.interval), remaining)
-        # the predicted contour must stay inside the wall (the last jumps before wear-through
-        # shrink to single revolutions, which then raise as per-revolution updating does)
+        # the predicted contour stays inside the wall; the last jumps before wear-through
+        # shrink to single revolutions, where the wall limit ends the run
         wearing = rate0 > 0
         if np.any(wearing):
             room = float(np.min((thickness - base.wear_depth[wearing]) / rate0[wearing]))
-            if room < 1.0:  # the next revolution wears through: raises WearThroughError
-                update_contour(self._contour(base.wear_depth), rate0, thickness)
             interval = max(1, min(interval, math.floor(room)))
         while True:
             contour = self._contour(base.wear_depth + interval * rate0)
@@ -371,26 +420,46 @@ class Simulation:
             interval = max(
                 1, min(interval - 1, adaptive_interval(error, interval, sim.adaptive_tolerance))
             )
-        increment = 0.5 * interval * (rate0 + rate)
-        worn = update_contour(self._contour(base.wear_depth), increment, thickness)
+        return WearStep(base, interval, rate0, rate, solution, contour, error)
+
+    def _apply(self, step: WearStep) -> SimulationState:
+        """The state after a contour update, cut short where a ``[life]`` limit is reached."""
+        base, interval = step.base, step.interval
+        stop = self.life.first_reached(step.depth_at, interval)
+        stopped_by = None
+        if stop is not None:
+            interval, stopped_by = stop
+        depth = step.depth_at(interval)
+        adaptive = step.end_rate is not None
+        if stopped_by is None:
+            # the contour must stay inside the wall (a run without a wall limit cannot
+            # get here with wear beyond it: the wall is always a limit)
+            depth = update_contour(
+                self._contour(base.wear_depth), depth - base.wear_depth
+            ).wear_depth
+        profiles = base.profiles
+        if adaptive:
+            # saved profiles inside the jump: the corrector's quadratic in the revolution
+            for target in self._profile_targets:
+                if base.revolution < target < base.revolution + interval:
+                    profiles = profiles.append((target, step.depth_at(target - base.revolution)))
         new = replace(
             base,
             revolution=base.revolution + interval,
-            wear_depth=worn.wear_depth,
-            wear_rate=rate,
+            wear_depth=depth,
+            wear_rate=step.end_rate if adaptive else step.rate,
             interval=interval,
-            next_interval=adaptive_interval(error, interval, sim.adaptive_tolerance),
-            **self._warm_start(solution, contour, base.warm_offset, interval),
+            profiles=profiles,
+            next_interval=(
+                adaptive_interval(step.error, interval, self.config.simulation.adaptive_tolerance)
+                if adaptive
+                else base.next_interval
+            ),
+            stopped_by=stopped_by,
+            updates_since_dynamics=base.updates_since_dynamics + 1,
+            **self._warm_start(step.solution, step.contour, base.warm_offset, interval),
         )
-        # saved profiles inside the jump: the corrector's quadratic in the revolution
-        for target in self._profile_revolutions():
-            if base.revolution < target < new.revolution:
-                tau = target - base.revolution
-                new.profiles[target] = (
-                    base.wear_depth + tau * rate0 + (0.5 * tau * tau / interval) * (rate - rate0)
-                )
-        self._record(new, new.wear_depth, solution)
-        return new
+        return self._record(new, step.solution)
 
     def _warm_start(
         self,
@@ -411,55 +480,104 @@ class Simulation:
             "window": _window_nodes(solution, contour),
         }
 
-    def run(
-        self,
-        progress: Callable[[int, int], None] | None = None,
-        state: SimulationState | None = None,
-        on_step: Callable[[SimulationState], None] | None = None,
-    ) -> WearResult:
-        """Run all revolutions.
+    # ---------------------------------------------------------------- coupling
+    def _use_load_of(self, state: SimulationState) -> None:
+        """Make the load cycle the one ``state`` was running with (resume)."""
+        if state.load_depth is not None and not self._given_cycle:
+            self._set_cycle(self._worn_cycle(state.load_depth))
 
-        Parameters
-        ----------
-        progress : callable, optional
-            Called as ``progress(revolutions_done, revolutions_total)``.
-        state : SimulationState, optional
-            Resume from this state (e.g. a checkpoint).
-        on_step : callable, optional
-            Called with the state after every contour update (checkpointing).
-        """
-        if self.joint is None and len(self.config.joints) > 1:
-            return self._run_joints(progress, state, on_step)
-        start = time.perf_counter()
-        steps = self.load_cycle.steps
-        if steps != self.config.simulation.steps_per_revolution:
-            # a load history brings its own steps: the config says what really ran
-            self.config = self.config.replace({"simulation.steps_per_revolution": steps})
-        total = self.config.simulation.revolutions
-        state = self.initial_state() if state is None else state
-        first_solution = None
-        if not self.config.simulation.update_contour and state.revolution == 0:
-            # without update one revolution is computed and scaled (exactly linear)
-            state, first_solution = self._linear(state)
-        while state.revolution < total:
-            state = self.step(state)
-            if on_step is not None:
-                on_step(state)
-            if progress is not None:
-                progress(state.revolution, total)
-        if progress is not None:
-            progress(total, total)
-        final_solution = (
-            self.contact(self._contour(state.wear_depth))
-            if first_solution is None
-            else first_solution
+    def _set_cycle(self, cycle: mechanism.LoadCycle) -> None:
+        self._cycles = {self.joint or cycle.joint: cycle}
+
+    def _worn_cycle(self, wear_depth: FloatArray) -> mechanism.LoadCycle:
+        """The load cycle of the joint worn by ``wear_depth`` (stage 1 on the worn joint)."""
+        cycles = mechanism.load_cycles(self.config, wear_depth=wear_depth)
+        return cycles[self.joint] if self.joint is not None else next(iter(cycles.values()))
+
+    def _resolve_dynamics(self, state: SimulationState) -> SimulationState:
+        """Solve the dynamics again on the worn joint; the wear rate follows the new load."""
+        if self._given_cycle or not self.schedule.coupled:
+            return replace(state, updates_since_dynamics=0)
+        old = self.load_cycle
+        self._set_cycle(self._worn_cycle(state.wear_depth))
+        change = load_change(old, self.load_cycle)
+        state = replace(
+            state,
+            load_depth=state.wear_depth,
+            updates_since_dynamics=0,
+            dynamics_every=self.schedule.next_every(state.dynamics_every, change),
+            # the rate, warm start and step size belonged to the old load
+            wear_rate=None,
+            warm_offset=None,
+            warm_slope=None,
+            window=None,
+            next_interval=None,
         )
-        initial_solution = first_solution or self.contact(self.initial_contour())
-        runtime = time.perf_counter() - start
-        from jointwear.results import build_dataset
+        return self._record_dynamics(state, change)
 
-        dataset = build_dataset(self, state, initial_solution, final_solution, runtime)
-        return WearResult(config=self.config, dataset=dataset, runtime=runtime)
+    def _record_dynamics(self, state: SimulationState, change: float | None) -> SimulationState:
+        """Add the current load cycle's scalars to the record, and say what they imply."""
+        cycle = self.load_cycle
+        extras = cycle.extras
+        row = {
+            "revolution": float(state.revolution),
+            "load_max": float(cycle.load.max()),
+            "load_mean": cycle.mean_load,
+            "peak_load": float(extras.get("peak_load_n", cycle.load.max())),
+            "impacts": float(extras.get("impacts", 0)),
+            "free_flight_fraction": float(extras.get("free_flight_fraction", 0.0)),
+            "load_change": math.nan if change is None else float(change),
+            "max_clearance": self.config.joint.clearance + float(state.wear_depth.max()),
+        }
+        if row["impacts"] > 0 or row["free_flight_fraction"] > 0:
+            self._warn_once(
+                "separation",
+                f"dynamics: the pin separates from the bushing ({int(row['impacts'])} impacts, "
+                f"{row['free_flight_fraction']:.3g} of the cycle in free flight at revolution "
+                f"{state.revolution}); the wear follows the contact-impact load",
+            )
+        return replace(state, dynamics_updates=state.dynamics_updates.append(row))
+
+    def _warn_once(self, key: str, message: str) -> None:
+        if key not in self._warned:
+            self._warned.add(key)
+            warnings.warn(message, WearFeedbackWarning, stacklevel=3)
+
+    def _check_assumptions(self, state: SimulationState) -> None:
+        """Say once when the continuous-contact assumption of the load is in doubt."""
+        cycle = self.load_cycle
+        if cycle.model != "massless-link":
+            return
+        clearance = self.config.joint.clearance
+        peak = float(state.wear_depth.max())
+        if peak >= clearance:
+            self._warn_once(
+                "clearance",
+                f"simulation: the wear ({peak * 1e3:.3g} mm) has grown past the clearance "
+                f"({clearance * 1e3:.3g} mm) by revolution {state.revolution}, but the massless-"
+                f"link load assumes the pin stays on the wall; set dynamics.model = "
+                f"'contact-impact' and simulation.dynamics_update = 'adaptive' to let the "
+                f"worn joint's dynamics feed back",
+            )
+        if cycle.load.min() < 1e-3 * cycle.load.max():
+            self._warn_once(
+                "load",
+                f"dynamics: the joint load falls to {cycle.load.min():.3g} N "
+                f"(peak {cycle.load.max():.3g} N), where the pin may leave the wall; "
+                f"dynamics.model = 'contact-impact' models the separation",
+            )
+
+    # ---------------------------------------------------------------- helpers
+    def _unworn_solution(self, state: SimulationState) -> ContactSolution:
+        """Contact on the unworn bushing under the load of the unworn joint."""
+        if state.load_depth is None or self._given_cycle:
+            return self.contact(self.initial_contour())
+        current = self.load_cycle
+        self._set_cycle(self._worn_cycle(np.zeros_like(state.wear_depth)))
+        try:
+            return self.contact(self.initial_contour())
+        finally:
+            self._set_cycle(current)
 
     def _run_joints(self, progress, state, on_step) -> WearResult:
         """Each clearance joint on its own contour from its own load cycle."""
@@ -483,23 +601,28 @@ class Simulation:
         dataset = combine_joints([r.dataset for r in results])
         return WearResult(config=self.config, dataset=dataset, runtime=runtime)
 
-    # ---------------------------------------------------------------- helpers
     def _linear(self, state: SimulationState) -> tuple[SimulationState, ContactSolution]:
+        """Without contour update: one revolution's wear, scaled (exactly linear)."""
         total = self.config.simulation.revolutions
         contour = self._contour(state.wear_depth)
         solution = self.contact(contour)
         rate = self.wear_per_revolution(solution)
-        for revolution in self._profile_revolutions():
-            worn = update_contour(contour, rate * revolution, self.config.joint.bushing_thickness)
+        stop = self.life.first_reached(lambda n: rate * n, total)
+        end, stopped_by = (total, None) if stop is None else stop
+        for revolution in [t for t in self._profile_targets if t < end] + [end]:
+            if revolution in (t for t, _ in state.profiles):
+                continue
+            depth = contour.worn(rate * revolution).wear_depth
             state = replace(
-                state,
-                revolution=revolution,
-                wear_rate=rate,
-                interval=revolution,
-                wear_depth=worn.wear_depth,
+                state, revolution=revolution, wear_rate=rate, interval=revolution,
+                wear_depth=depth,
             )
-            self._record(state, state.wear_depth, solution)
-        state.revolution = total
+            if revolution == end and not (stopped_by or revolution in self._profile_targets):
+                break
+            state = self._record(state, solution)
+        state = replace(state, revolution=end if stopped_by else total, stopped_by=stopped_by)
+        if stopped_by and state.history.last["revolution"] != end:
+            state = self._record(state, solution)
         return state, solution
 
     def _contour(self, wear_depth: FloatArray) -> BushingContour:
@@ -517,35 +640,19 @@ class Simulation:
         )
         return tuple(sorted({max(1, round(float(m))) for m in marks}))
 
-    def _profile_revolutions(self) -> tuple[int, ...]:
-        return self._profile_targets
-
-    def _interval(self, state: SimulationState, rate: FloatArray, remaining: int) -> int:
-        sim = self.config.simulation
-        if sim.update_every != "adaptive":
-            return min(int(sim.update_every), remaining)
-        return min(state.next_interval or 1, remaining)
-
-    def _record(self, state: SimulationState, depth: FloatArray, solution: ContactSolution) -> None:
-        joint = self.config.joint
-        area = metrics.worn_area(joint.bushing_radius, depth)
+    def _record(self, state: SimulationState, solution: ContactSolution) -> SimulationState:
         row = {
             "revolution": state.revolution,
-            "peak_wear_depth": metrics.wear_peak(depth),
-            "wear_width": metrics.wear_width(depth, self.config.simulation.width_threshold),
-            "wear_area": area,
-            "wear_volume": metrics.wear_volume(area, joint.axial_length),
-            "wear_mass": metrics.wear_mass(
-                area, joint.axial_length, self.config.materials.bushing.density
-            ),
-            "min_wall_thickness": joint.bushing_thickness - float(depth.max()),
+            **evaluate_metrics(state.wear_depth, self.life.joint),
             "contact_iterations": float(solution.iterations.sum()),
         }
-        for name, value in row.items():
-            state.history[name].append(value)
-        last_saved = max(state.profiles) if state.profiles else 0
-        if any(last_saved < t <= state.revolution for t in self._profile_targets):
-            state.profiles[state.revolution] = depth.copy()
+        profiles = state.profiles
+        if state.stopped_by is not None or any(
+            state.last_saved < t <= state.revolution for t in self._profile_targets
+        ):
+            profiles = profiles.append((state.revolution, state.wear_depth))
+        self._check_assumptions(state)
+        return replace(state, history=state.history.append(row), profiles=profiles)
 
 
 #: step-size control of adaptive updating: safety factor, largest growth and shrink

@@ -66,6 +66,7 @@ from jointwear.config import (
 from jointwear.errors import ConfigError, DataError, JointwearError
 from jointwear.io import atomic_write, write_json
 from jointwear.registry import suggest
+from jointwear.tribology.metrics import WEAR_METRICS
 from jointwear.units import DIMENSIONS, to_si
 
 __all__ = [
@@ -94,17 +95,23 @@ DISTRIBUTIONS: dict[str, tuple[str, ...]] = {
 #: parameters of a distribution that are plain numbers (not quantities of the key)
 _SHAPE_PARAMETERS = {"sigma"}
 #: per-case metrics (the ``jointwear run --json`` keys) in ``cases.csv`` and ``sweep.nc``
-METRICS = (
-    "peak_wear_depth_m",
-    "wear_width_deg",
-    "wear_mass_kg",
-    "wear_volume_m3",
-    "min_wall_thickness_m",
-    "revolutions",
-    "contour_updates",
-    "contact_model",
-    "runtime_s",
-)
+#: name -> (units, long_name) of each per-case result in ``sweep.nc``
+CASE_RESULTS: dict[str, tuple[str, str]] = {
+    **{
+        m.key: ("degree" if m.key.endswith("_deg") else m.units, m.long_name)
+        for m in WEAR_METRICS
+        if m.key is not None
+    },
+    "revolutions": ("1", "revolutions"),
+    "contour_updates": ("1", "contour updates"),
+    "life_revolutions": ("1", "revolutions to the first life limit"),
+    "life_hours": ("h", "hours to the first life limit"),
+    "dynamics_updates": ("1", "solves of the dynamics on the worn joint"),
+    "runtime_s": ("s", "run time of the case"),
+}
+#: per-case text results
+CASE_LABELS = ("contact_model", "stopped_by")
+METRICS = (*CASE_RESULTS, *CASE_LABELS)
 #: the sweep's own files inside its output directory
 PLAN_FILE = "sweep-plan.json"
 CASES_DIR = "cases"
@@ -1007,27 +1014,19 @@ def write_sweep_dataset(
     def var(values, units, long_name, dims=("case",)):
         return xr.Variable(dims, values, attrs={"units": units, "long_name": long_name})
 
-    units = {
-        "peak_wear_depth_m": ("m", "largest wear depth"),
-        "wear_width_deg": ("degree", "angular width of the worn zone"),
-        "wear_mass_kg": ("kg", "worn mass"),
-        "wear_volume_m3": ("m3", "worn volume"),
-        "min_wall_thickness_m": ("m", "smallest remaining wall thickness"),
-        "revolutions": ("1", "revolutions"),
-        "contour_updates": ("1", "contour updates"),
-        "runtime_s": ("s", "run time of the case"),
-    }
     data_vars: dict[str, Any] = {}
-    for name, (unit, long_name) in units.items():
+    for name, (unit, long_name) in CASE_RESULTS.items():
         column = [(r.get("metrics") or {}).get(name) for r in records]
         data_vars[name] = var(
             np.array([np.nan if v is None else float(v) for v in column]), unit, long_name
         )
-    data_vars["contact_model"] = var(
-        np.array([(r.get("metrics") or {}).get("contact_model") or "" for r in records], dtype=str),
-        "",
-        "contact model",
-    )
+    for name, long_name in (("contact_model", "contact model"),
+                            ("stopped_by", "life limit that ended the case")):
+        data_vars[name] = var(
+            np.array([(r.get("metrics") or {}).get(name) or "" for r in records], dtype=str),
+            "",
+            long_name,
+        )
     data_vars["status"] = var(np.array([r["status"] for r in records], dtype=str), "", "status")
     data_vars["error"] = var(
         np.array([r.get("error", "") for r in records], dtype=str), "", "error message"

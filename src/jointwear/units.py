@@ -35,6 +35,7 @@ ureg.define("rpm = revolution / minute")
 DIMENSIONS: dict[str, str] = {
     "length": "m",
     "area": "m**2",
+    "volume": "m**3",
     "mass": "kg",
     "force": "N",
     "stiffness": "N/m",

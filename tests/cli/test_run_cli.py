@@ -101,9 +101,9 @@ def test_bad_config_fails_cleanly_and_writes_nothing(paper_config_path, tmp_path
     assert not out.exists()
 
 
-def test_wear_through_fails_cleanly_and_writes_nothing(paper_config_path, tmp_path, capsys) -> None:
+def test_wear_through_ends_the_run_with_its_results(paper_config_path, tmp_path, capsys) -> None:
     out = tmp_path / "run"
-    code, _, stderr = run_cli(
+    captured = ok_cli(
         [
             "run",
             str(paper_config_path),
@@ -111,18 +111,25 @@ def test_wear_through_fails_cleanly_and_writes_nothing(paper_config_path, tmp_pa
             "--out",
             str(out),
             "--set",
-            "materials.bushing.wear_coefficient=1e-6",
+            "materials.bushing.wear_coefficient=1e-8",
             "--set",
-            "simulation.revolutions=100",
+            "simulation.revolutions=10000",
             "--set",
             "simulation.update_contour=true",
+            "--set",
+            "simulation.update_every=7",
+            "--json",
         ],
         capsys,
     )
-    assert code == 2
-    assert "bushing_thickness" in stderr
-    assert "wall" in stderr
-    assert not out.exists() or not any(out.iterdir())
+    data = json.loads(captured.out)
+    assert data["stopped_by"] == "wall_thickness"
+    assert 0 < data["life_revolutions"] == data["revolutions"] < 10000
+    assert data["min_wall_thickness_m"] <= 0
+    assert data["life_hours"] == pytest.approx(data["revolutions"] * 0.5 / 3600)
+    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    assert summary["life_revolutions"] == data["life_revolutions"]
+    assert (out / "result.nc").exists()
 
 
 def test_plot_of_a_broken_file(tmp_path, capsys) -> None:

@@ -481,9 +481,18 @@ class _Measured:
 
 
 def _simulate(config: Config) -> FloatArray:
+    from jointwear.errors import WearThroughError
     from jointwear.simulation import Simulation
 
-    return np.asarray(Simulation(config).run().wear_depth, dtype=float)
+    result = Simulation(config).run()
+    summary = result.summary()
+    if summary["stopped_by"] is not None:
+        # a profile cut short by a limit is not the measured run's: these values fail
+        raise WearThroughError(
+            f"life.{summary['stopped_by']}: reached at revolution {summary['revolutions']} "
+            f"of {config.simulation.revolutions}"
+        )
+    return np.asarray(result.wear_depth, dtype=float)
 
 
 def _case_config(base: Config, case: MeasuredCase) -> Config:

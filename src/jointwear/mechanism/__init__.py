@@ -23,6 +23,9 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
+import numpy as np
+from numpy.typing import NDArray
+
 from jointwear.config import MECHANISM_TYPES, Config
 from jointwear.errors import ConfigError
 from jointwear.mechanism import force_laws
@@ -98,8 +101,10 @@ __all__ = [
     "wrap_angle",
 ]
 
-#: a dynamics model: config -> one load cycle per clearance joint
-CycleModel = Callable[[Config], Mapping[str, LoadCycle]]
+FloatArray = NDArray[np.float64]
+
+#: a dynamics model: (config, wear depth of the bushing or None) -> one load cycle per joint
+CycleModel = Callable[[Config, FloatArray | None], Mapping[str, LoadCycle]]
 
 
 @dataclass(frozen=True)
@@ -120,19 +125,33 @@ class Mechanism:
     models: Mapping[str, CycleModel]
 
 
-def _single(function: Callable[[Config], LoadCycle]) -> CycleModel:
-    def cycles(config: Config) -> dict[str, LoadCycle]:
-        cycle = function(config)
-        return {cycle.joint: cycle}
+def _massless_link(config: Config, wear_depth: FloatArray | None) -> dict[str, LoadCycle]:
+    # the worn joint's massless link: the pin rests in the scar, so the link is the
+    # clearance plus the deepest wear
+    if wear_depth is not None and np.any(wear_depth):
+        config = config.replace({"joint.clearance": config.joint.clearance + float(wear_depth.max())})
+    cycle = massless_link_load(config)
+    return {cycle.joint: cycle}
+
+
+def _contact_impact(config: Config, wear_depth: FloatArray | None) -> dict[str, LoadCycle]:
+    cycle = contact_impact_load(config, wear_depth)
+    return {cycle.joint: cycle}
+
+
+def _four_bar(model: str) -> CycleModel:
+    def cycles(config: Config, wear_depth: FloatArray | None) -> dict[str, LoadCycle]:
+        from jointwear.mechanism import four_bar
+
+        return four_bar.four_bar_cycles(config, model)
 
     return cycles
 
 
-def _four_bar(model: str) -> CycleModel:
-    def cycles(config: Config) -> dict[str, LoadCycle]:
-        from jointwear.mechanism import four_bar
-
-        return four_bar.four_bar_cycles(config, model)
+def _prescribed(function: Callable[[Config], Mapping[str, LoadCycle]]) -> CycleModel:
+    # a prescribed load does not depend on the wear
+    def cycles(config: Config, wear_depth: FloatArray | None) -> dict[str, LoadCycle]:
+        return dict(function(config))
 
     return cycles
 
@@ -151,8 +170,8 @@ MECHANISMS.add(
     Mechanism(
         "the paper's slider-crank, clearance between connecting rod and slider",
         {
-            "massless-link": _single(massless_link_load),
-            "contact-impact": _single(contact_impact_load),
+            "massless-link": _massless_link,
+            "contact-impact": _contact_impact,
         },
     ),
 )
@@ -170,14 +189,14 @@ MECHANISMS.add(
     "oscillating",
     Mechanism(
         "oscillating-bearing test: pin swinging +-amplitude under a radial load",
-        {"prescribed": oscillating_cycle},
+        {"prescribed": _prescribed(oscillating_cycle)},
     ),
 )
 MECHANISMS.add(
     "load-history",
     Mechanism(
         "one period of joint load from a file (CSV or netCDF), e.g. another multibody code",
-        {"prescribed": _history},
+        {"prescribed": _prescribed(_history)},
     ),
 )
 if set(MECHANISMS) != set(MECHANISM_TYPES):  # pragma: no cover - a programming error
@@ -196,13 +215,17 @@ DYNAMICS_MODEL_DESCRIPTIONS = {
 }
 
 
-def load_cycles(config: Config) -> dict[str, LoadCycle]:
+def load_cycles(config: Config, wear_depth: FloatArray | None = None) -> dict[str, LoadCycle]:
     """Load cycle of every clearance joint of the configured mechanism.
 
     Parameters
     ----------
     config : jointwear.config.Config
         Validated configuration (SI values).
+    wear_depth : ndarray, shape (N,), optional
+        Wear depth of the bushing on the ``contact.nodes`` grid, bushing frame [m]:
+        the dynamics of the worn joint (the massless link grows by the deepest wear,
+        contact-impact meets the worn contour). ``None``: the unworn joint.
 
     Returns
     -------
@@ -217,10 +240,10 @@ def load_cycles(config: Config) -> dict[str, LoadCycle]:
     mechanism = MECHANISMS.get(config.mechanism.type)
     models = mechanism.models
     if "prescribed" in models:
-        return dict(models["prescribed"](config))
+        return dict(models["prescribed"](config, wear_depth))
     if config.dynamics.model not in models:
         DYNAMICS_MODELS.get(config.dynamics.model)
-    return dict(models[config.dynamics.model](config))
+    return dict(models[config.dynamics.model](config, wear_depth))
 
 
 def load_cycle(config: Config, joint: str | None = None) -> LoadCycle:

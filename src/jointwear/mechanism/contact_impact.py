@@ -291,6 +291,12 @@ class JointContact:
         self.friction_arm = float(friction_arm)
         self.impact_velocity_floor = float(impact_velocity_floor)
         self.distributed = force_law in force_laws.DISTRIBUTED_LAWS
+        # a worn bushing under a point law: the clearance grows by the wear depth in
+        # the direction of the pin (periodic linear interpolation of the profile)
+        self._wear: FloatArray | None = None
+        if not self.distributed and contour is not None and np.any(contour.wear_depth):
+            self._wear = np.append(np.asarray(contour.wear_depth, dtype=float),
+                                   float(contour.wear_depth[0]))
         if self.distributed:
             if contour is None or pin is None or spring_law is None:
                 raise ConfigError(
@@ -373,6 +379,8 @@ class JointContact:
                 "pin": Pin(params.pin_radius),
                 "spring_law": contact_law(settings.force_law, params),
             }
+        elif contour is not None:
+            extra = {"contour": contour}
         return cls(
             force_law=settings.force_law,
             clearance=params.bushing_radius - params.pin_radius,
@@ -388,11 +396,23 @@ class JointContact:
         )
 
     # -------------------------------------------------------------- geometry
+    def clearance_at(self, ex: float, ey: float) -> float:
+        """Radial clearance in the direction of ``e`` [m] (point laws; the wear adds to it)."""
+        if self._wear is None:
+            return self.clearance
+        nodes = self._wear.size - 1
+        position = (math.atan2(ey, ex) % (2.0 * math.pi)) * nodes / (2.0 * math.pi)
+        index = min(int(position), nodes - 1)
+        fraction = position - index
+        return self.clearance + (1.0 - fraction) * self._wear[index] + fraction * self._wear[
+            index + 1
+        ]
+
     def gap(self, ex: float, ey: float) -> float:
         """Signed penetration: ``> 0`` in contact (largest penetration), ``< 0`` free [m]."""
         if self.distributed:
             return self._springs(ex, ey)[2]
-        return math.hypot(ex, ey) - self.clearance
+        return math.hypot(ex, ey) - self.clearance_at(ex, ey)
 
     def gap_rate(self, ex: float, ey: float, vx: float, vy: float) -> float:
         """Rate of the gap along ``e / |e|``, ``delta' = e . e' / |e|`` [m/s]."""
@@ -408,7 +428,7 @@ class JointContact:
                 self.contour, self.pin, np.array([ex, ey]), self.spring_law
             )
             return float(energy)
-        delta = math.hypot(ex, ey) - self.clearance
+        delta = math.hypot(ex, ey) - self.clearance_at(ex, ey)
         if delta <= 0.0:
             return 0.0
         return self.stiffness * delta ** (self.exponent + 1.0) / (self.exponent + 1.0)
@@ -424,9 +444,10 @@ class JointContact:
             Direction of ``e`` (and of the load) [rad].
         """
         if load <= 0.0:
-            return self.clearance if not self.distributed else self._touch(direction)
+            return self._touch(direction)
         if not self.distributed:
-            return self.clearance + (load / self.stiffness) ** (1.0 / self.exponent)
+            touch = self._touch(direction)
+            return touch + (load / self.stiffness) ** (1.0 / self.exponent)
         unit = np.array([math.cos(direction), math.sin(direction)])
         lower = self._touch(direction)
 
@@ -450,7 +471,7 @@ class JointContact:
     def _touch(self, direction: float) -> float:
         """Offset ``|e|`` along ``direction`` at which the pin first touches the contour [m]."""
         if not self.distributed:
-            return self.clearance
+            return self.clearance_at(math.cos(direction), math.sin(direction))
         unit = np.array([math.cos(direction), math.sin(direction)])
         upper = 2.0 * (float(self.contour.radius.max()) - self.pin.radius)
 
@@ -496,7 +517,7 @@ class JointContact:
                 nx, ny = fx / elastic, fy / elastic
                 rate = nx * vx + ny * vy
         else:
-            delta = r - self.clearance
+            delta = r - self.clearance_at(ex, ey)
             elastic = self.stiffness * delta**self.exponent if delta > 0.0 else 0.0
         slip = -ny * vx + nx * vy + self.friction_arm * spin
         if elastic <= 0.0:
@@ -1251,7 +1272,7 @@ def solve_contact_impact(
     )
 
 
-def contact_impact_load(config: Config) -> LoadCycle:
+def contact_impact_load(config: Config, wear_depth: FloatArray | None = None) -> LoadCycle:
     """Joint load over one settled revolution from the contact–impact model.
 
     Registered as ``dynamics.model = "contact-impact"`` of the slider-crank.
@@ -1260,6 +1281,9 @@ def contact_impact_load(config: Config) -> LoadCycle:
     ----------
     config : jointwear.config.Config
         Validated configuration.
+    wear_depth : ndarray, shape (N,), optional
+        Wear depth of the bushing on the ``contact.nodes`` grid [m]: the pin meets
+        the worn contour. ``None``: the unworn bushing.
 
     Returns
     -------
@@ -1271,7 +1295,18 @@ def contact_impact_load(config: Config) -> LoadCycle:
     """
     from dataclasses import replace
 
-    solution = solve_contact_impact(config)
+    contour = None
+    if wear_depth is not None and np.any(wear_depth):
+        if config.mechanism.bushing_body != "slider":
+            raise ConfigError(
+                "simulation.dynamics_update: contact-impact on a worn bushing needs the bushing "
+                "on a body that does not turn (mechanism.bushing_body = 'slider')"
+            )
+        joint = config.joint
+        contour = BushingContour.from_wear_profile(
+            joint.bushing_radius, wear_depth, joint.axial_length
+        )
+    solution = solve_contact_impact(config, contour)
     return replace(solution.load, extras={**solution.load.extras, **solution.summary()})
 
 

@@ -1,15 +1,141 @@
-"""Wear metrics as the paper reports them (SPEC §4): peak, width, area, mass.
+"""Wear metrics as the paper reports them: peak, width, area, volume, mass.
 
 All functions take a wear-depth profile on the equally spaced node grid
 ``theta_j = 2 pi j / N`` (radial growth of the bushing radius, [m]).
+
+:data:`WEAR_METRICS` is the one metric schema: the per-update record of a run,
+the result dataset, ``WearResult.summary()`` (``run --json``), the metrics CSV,
+sweeps and the life limits all take their names, units and descriptions from it,
+and :func:`evaluate_metrics` computes every metric of a profile.
 """
 
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
+
 import numpy as np
 from numpy.typing import ArrayLike
 
-__all__ = ["removed_area", "wear_mass", "wear_peak", "wear_volume", "wear_width", "worn_area"]
+__all__ = [
+    "WEAR_METRICS",
+    "JointGeometry",
+    "Metric",
+    "evaluate_metrics",
+    "removed_area",
+    "wear_mass",
+    "wear_peak",
+    "wear_volume",
+    "wear_width",
+    "worn_area",
+]
+
+
+@dataclass(frozen=True)
+class Metric:
+    """One scalar wear metric of a profile.
+
+    Attributes
+    ----------
+    name : str
+        Variable name in the result dataset and the per-update record.
+    units : str
+        SI unit of the dataset variable (UDUNITS spelling).
+    long_name : str
+        What it is.
+    key : str or None
+        Key in ``WearResult.summary()`` / ``run --json`` / sweeps (unit in the name),
+        ``None`` if not reported there.
+    display_units : str
+        Unit in the metrics CSV header.
+    scale : float
+        Factor from ``units`` to the ``key`` / CSV value.
+    """
+
+    name: str
+    units: str
+    long_name: str
+    key: str | None
+    display_units: str
+    scale: float = 1.0
+
+    @property
+    def header(self) -> str:
+        """Column header of the metrics CSV, unit in brackets."""
+        return f"{self.name} [{self.display_units}]"
+
+
+#: the wear metrics, in report order
+WEAR_METRICS: tuple[Metric, ...] = (
+    Metric("peak_wear_depth", "m", "largest wear depth of the bushing", "peak_wear_depth_m", "m"),
+    Metric(
+        "wear_width", "rad", "angular width of the worn zone", "wear_width_deg", "deg",
+        180.0 / math.pi,
+    ),
+    Metric("wear_area", "m2", "cross-section area removed by wear", None, "m^2"),
+    Metric("wear_volume", "m3", "worn volume", "wear_volume_m3", "m^3"),
+    Metric("wear_mass", "kg", "worn mass", "wear_mass_kg", "kg"),
+    Metric(
+        "min_wall_thickness", "m", "smallest remaining bushing wall thickness",
+        "min_wall_thickness_m", "m",
+    ),
+    Metric(
+        "max_clearance", "m", "largest radial play of the pin (clearance plus wear)",
+        "max_clearance_m", "m",
+    ),
+)
+
+
+@dataclass(frozen=True)
+class JointGeometry:
+    """What the metrics need of the joint besides the profile.
+
+    Attributes
+    ----------
+    bushing_radius : float
+        Unworn inner radius of the bushing [m].
+    clearance : float
+        Radial clearance of the unworn joint [m].
+    axial_length : float
+        Axial length of the joint ``b`` [m].
+    bushing_thickness : float
+        Wall thickness of the unworn bushing ``L`` [m].
+    density : float
+        Density of the bushing material [kg/m^3].
+    width_threshold : float
+        Fraction of the peak that counts as worn [-].
+    """
+
+    bushing_radius: float
+    clearance: float
+    axial_length: float
+    bushing_thickness: float
+    density: float
+    width_threshold: float = 0.01
+
+
+def evaluate_metrics(wear_depth: ArrayLike, joint: JointGeometry) -> dict[str, float]:
+    """Every metric of :data:`WEAR_METRICS` for one wear-depth profile (SI units).
+
+    Parameters
+    ----------
+    wear_depth : array_like, shape (N,)
+        Radial wear depth at the nodes [m].
+    joint : JointGeometry
+        Radius, clearance, axial length, wall thickness, density, width threshold.
+    """
+    depth = np.asarray(wear_depth, dtype=float)
+    area = worn_area(joint.bushing_radius, depth)
+    peak = wear_peak(depth)
+    return {
+        "peak_wear_depth": peak,
+        "wear_width": wear_width(depth, joint.width_threshold),
+        "wear_area": area,
+        "wear_volume": wear_volume(area, joint.axial_length),
+        "wear_mass": wear_mass(area, joint.axial_length, joint.density),
+        "min_wall_thickness": joint.bushing_thickness - peak,
+        "max_clearance": joint.clearance + peak,
+    }
 
 
 def wear_peak(wear_depth: ArrayLike) -> float:

@@ -1,0 +1,176 @@
+"""What the revolution loop carries from one contour update to the next.
+
+:class:`SimulationState` is immutable: a step returns a new state and never
+changes the one it was given, so a state kept by a caller (a checkpoint, a test,
+an adaptive step that is retried) always shows what it showed when it was made.
+Its records (per-update metrics, saved profiles, dynamics updates) are
+:class:`Log` objects: persistent append-only sequences, so appending a row to a new
+state shares the earlier rows without copying them and without the earlier
+state seeing the new row.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass, field, fields
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["Log", "SimulationState"]
+
+FloatArray = NDArray[np.float64]
+
+
+class Log(Sequence[Any]):
+    """A persistent append-only sequence: ``log.append(x)`` returns a new, longer log.
+
+    Appending costs O(1) and leaves ``log`` unchanged; the new log shares the
+    earlier items. Reading the items walks back to the start (O(n)), which the
+    simulation does once per run or checkpoint.
+    """
+
+    __slots__ = ("_item", "_length", "_parent")
+
+    def __init__(self) -> None:
+        self._item: Any = None
+        self._parent: Log | None = None
+        self._length = 0
+
+    @classmethod
+    def of(cls, items: Iterable[Any]) -> Log:
+        """A log holding ``items`` in order."""
+        log = cls()
+        for item in items:
+            log = log.append(item)
+        return log
+
+    def append(self, item: Any) -> Log:
+        """A new log with ``item`` at the end."""
+        new = Log.__new__(Log)
+        new._item, new._parent, new._length = item, self, self._length + 1
+        return new
+
+    def __len__(self) -> int:
+        return self._length
+
+    def __iter__(self) -> Iterator[Any]:
+        return iter(self.items())
+
+    def __getitem__(self, index: Any) -> Any:
+        return self.items()[index]
+
+    def items(self) -> list[Any]:
+        """All items, oldest first."""
+        out: list[Any] = []
+        node: Log | None = self
+        while node is not None and node._length:
+            out.append(node._item)
+            node = node._parent
+        out.reverse()
+        return out
+
+    @property
+    def last(self) -> Any:
+        """The newest item (``None`` for an empty log)."""
+        return self._item if self._length else None
+
+    def columns(self) -> dict[str, list[Any]]:
+        """Rows that are mappings, as one list per key (keys of the first row)."""
+        rows = self.items()
+        if not rows:
+            return {}
+        return {key: [row[key] for row in rows] for key in rows[0]}
+
+    def __repr__(self) -> str:
+        return f"Log({self._length} items)"
+
+
+def _frozen(value: Any) -> Any:
+    if isinstance(value, np.ndarray) and value.flags.writeable:
+        value = value.copy()
+        value.flags.writeable = False
+    return value
+
+
+@dataclass(frozen=True, eq=False)
+class SimulationState:
+    """The state of a run between two contour updates (immutable; SI units).
+
+    Attributes
+    ----------
+    revolution : int
+        Revolutions (cycles) completed.
+    wear_depth : ndarray, shape (N,)
+        Accumulated radial wear depth [m] (kept as depth, not radius, so small
+        depths carry full precision).
+    wear_rate : ndarray, shape (N,) or None
+        Wear depth per revolution on the current contour [m].
+    interval : int
+        Revolutions covered by the last update.
+    history : Log of dict
+        One row per contour update: ``revolution``, the wear metrics
+        (:data:`~jointwear.tribology.metrics.WEAR_METRICS`) and ``contact_iterations``.
+    profiles : Log of (int, ndarray)
+        Saved wear-depth profiles ``(revolution, depth [m])``, by increasing revolution.
+    warm_offset : ndarray or None
+        Pin displacement along each load line at the last solve [m] (warm start).
+    window : int or None
+        Node window of the last contact solve.
+    warm_slope : ndarray or None
+        Change of ``warm_offset`` per revolution between the last two solves [m].
+    next_interval : int or None
+        Adaptive updating: the interval the step-size controller proposes next.
+    stopped_by : str or None
+        The life limit that ended the run (``None`` while running or if it ran to the
+        end).
+    load_depth : ndarray or None
+        Wear depth on which the current load cycle was solved [m] (``None``: the
+        unworn joint).
+    dynamics_updates : Log of dict
+        One row per solve of the dynamics: ``revolution`` and the load-cycle scalars.
+    updates_since_dynamics : int
+        Contour updates since the dynamics were last solved.
+    dynamics_every : int
+        Contour updates between dynamics solves (adaptive coupling adjusts it).
+    """
+
+    revolution: int
+    wear_depth: FloatArray
+    wear_rate: FloatArray | None = None
+    interval: int = 1
+    history: Log = field(default_factory=Log)
+    profiles: Log = field(default_factory=Log)
+    warm_offset: FloatArray | None = None
+    window: int | None = None
+    warm_slope: FloatArray | None = None
+    next_interval: int | None = None
+    stopped_by: str | None = None
+    load_depth: FloatArray | None = None
+    dynamics_updates: Log = field(default_factory=Log)
+    updates_since_dynamics: int = 0
+    dynamics_every: int = 1
+
+    def __post_init__(self) -> None:
+        for spec in fields(self):
+            value = getattr(self, spec.name)
+            frozen = _frozen(value)
+            if frozen is not value:
+                object.__setattr__(self, spec.name, frozen)
+
+    @property
+    def history_columns(self) -> dict[str, list[float]]:
+        """The per-update record as one list per quantity."""
+        return self.history.columns()
+
+    @property
+    def saved_profiles(self) -> dict[int, FloatArray]:
+        """Saved wear-depth profiles by revolution [m]."""
+        return dict(self.profiles.items())
+
+    @property
+    def last_saved(self) -> int:
+        """Revolution of the last saved profile (0 if none)."""
+        last = self.profiles.last
+        return 0 if last is None else int(last[0])
