@@ -8,9 +8,8 @@ profile must stay within ``simulation.adaptive_tolerance`` of per-revolution upd
 
 from __future__ import annotations
 
-from dataclasses import replace
-
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest

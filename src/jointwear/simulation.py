@@ -43,9 +43,9 @@ from jointwear import mechanism
 from jointwear.config import Config
 from jointwear.contact import ContactParameters, ContactSolution, contact_law
 from jointwear.contact import solve as solve_contact
-from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
 from jointwear.errors import WearFeedbackWarning
+from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
 from jointwear.state import SimulationState
 from jointwear.tribology import archard

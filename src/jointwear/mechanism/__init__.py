@@ -129,7 +129,8 @@ def _massless_link(config: Config, wear_depth: FloatArray | None) -> dict[str, L
     # the worn joint's massless link: the pin rests in the scar, so the link is the
     # clearance plus the deepest wear
     if wear_depth is not None and np.any(wear_depth):
-        config = config.replace({"joint.clearance": config.joint.clearance + float(wear_depth.max())})
+        worn = config.joint.clearance + float(wear_depth.max())
+        config = config.replace({"joint.clearance": worn})
     cycle = massless_link_load(config)
     return {cycle.joint: cycle}
 
