@@ -69,6 +69,7 @@ from __future__ import annotations
 import math
 import time as _time
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Protocol
 
@@ -101,11 +102,14 @@ __all__ = [
     "ContactImpactSolution",
     "FreePinSystem",
     "JointContact",
+    "SampledRevolution",
     "Segment",
     "SliderCrankContactSystem",
     "contact_impact_load",
     "free_pin_impact",
     "integrate_contacts",
+    "integrate_revolution",
+    "sampled_solution",
     "solve_contact_impact",
 ]
 
@@ -1084,6 +1088,157 @@ class ContactImpactSolution:
         }
 
 
+@dataclass(frozen=True, eq=False)
+class SampledRevolution:
+    """A contact system integrated through the settling revolutions, one sampled.
+
+    Attributes
+    ----------
+    history : ContactHistory
+        Full integration record.
+    times : ndarray, shape (N + 1,)
+        Sample times of the recorded revolution and its end [s].
+    states : ndarray, shape (N + 1, n_state)
+        States at ``times``.
+    records : list of dict
+        ``system.evaluate`` at the first ``N`` samples.
+    step_lost : ndarray of bool, shape (N,)
+        Steps with free flight inside them.
+    impacts : int
+        Contact starts in the recorded revolution [-].
+    free_flight_fraction : float
+        Share of the recorded revolution without penetration [-].
+    max_penetration : float
+        Largest penetration in the recorded revolution [m].
+    peak_load : float
+        Largest normal contact force, samples and penetration maxima [N].
+    record_start : float
+        Start of the recorded revolution [s].
+    runtime : float
+        Wall-clock time of the integration [s].
+    """
+
+    history: ContactHistory
+    times: FloatArray
+    states: FloatArray
+    records: list[dict[str, Any]]
+    step_lost: NDArray[np.bool_]
+    impacts: int
+    free_flight_fraction: float
+    max_penetration: float
+    peak_load: float
+    record_start: float
+    runtime: float
+
+    def column(self, key: str) -> FloatArray:
+        """One ``evaluate`` output over the ``N`` samples."""
+        return np.array([r[key] for r in self.records])
+
+
+def integrate_revolution(
+    system: Any,
+    y0: ArrayLike,
+    settings: ContactImpactSettings,
+    steps: int,
+    in_contact: bool = True,
+) -> SampledRevolution:
+    """Integrate a crank-driven contact system and sample its last revolution.
+
+    Parameters
+    ----------
+    system : ContactSystem
+        A system with ``omega`` (crank speed [rad/s]) and ``evaluate(t, y,
+        impact_velocity)`` returning ``normal_force`` and ``penetration`` (e.g.
+        :class:`SliderCrankContactSystem`).
+    y0 : array_like
+        State at ``t = 0`` (crank angle 0).
+    settings : ContactImpactSettings
+        Integrator settings and ``revolutions_settle``.
+    steps : int
+        Samples ``N`` per revolution [-].
+    in_contact : bool
+        Whether the pin penetrates the wall at ``t = 0``.
+
+    Returns
+    -------
+    SampledRevolution
+    """
+    omega = system.omega
+    period = 2.0 * math.pi / omega
+    record_start = settings.revolutions_settle * period
+    max_step = settings.max_step if settings.max_step is not None else period / steps
+    started = _time.perf_counter()
+    history = integrate_contacts(
+        system,
+        (0.0, record_start + period),
+        y0,
+        in_contact=in_contact,
+        method=settings.integrator,
+        rtol=settings.rtol,
+        atol=settings.atol,
+        max_step=max_step,
+    )
+    runtime = _time.perf_counter() - started
+
+    # samples of the recorded revolution, plus its end (for the last increment)
+    phi = 2.0 * np.pi * np.arange(steps) / steps
+    times = record_start + np.append(phi, 2.0 * np.pi) / omega
+    states, index = history.state(times)
+    records = [
+        system.evaluate(float(t), y, history.segments[k].impact_velocity)
+        for t, y, k in zip(times[:-1], states[:-1], index[:-1], strict=True)
+    ]
+    record_end = record_start + period
+    free = history.free_time(record_start, record_end)
+    impacts = int(
+        np.sum(
+            (np.array(history.impact_times) >= record_start)
+            & (np.array(history.impact_times) < record_end)
+        )
+    )
+    # free flight inside each sampling step
+    step_lost = np.zeros(steps, dtype=bool)
+    width = period / steps
+    for seg in history.segments:
+        if seg.in_contact or seg.end <= record_start or seg.start >= record_end:
+            continue
+        first = max(math.floor((seg.start - record_start) / width), 0)
+        last = min(math.ceil((seg.end - record_start) / width), steps)
+        step_lost[first:last] = True
+    peak_times = [t for t in history.peak_times if record_start <= t <= record_end]
+    peaks = [
+        p
+        for t, p in zip(history.peak_times, history.peak_penetrations, strict=True)
+        if record_start <= t <= record_end
+    ]
+    sampled = np.array([r["penetration"] for r in records])
+    max_penetration = float(max([*peaks, float(sampled.max())]))
+    # the largest contact force: impacts peak between samples, near the penetration maxima
+    peak_load = float(normal_max := np.max([r["normal_force"] for r in records]))
+    if peak_times:
+        peak_states, peak_index = history.state(peak_times)
+        peak_load = max(
+            normal_max,
+            *(
+                system.evaluate(t, y, history.segments[k].impact_velocity)["normal_force"]
+                for t, y, k in zip(peak_times, peak_states, peak_index, strict=True)
+            ),
+        )
+    return SampledRevolution(
+        history=history,
+        times=times,
+        states=states,
+        records=records,
+        step_lost=step_lost,
+        impacts=impacts,
+        free_flight_fraction=free / period,
+        max_penetration=max_penetration,
+        peak_load=float(peak_load),
+        record_start=record_start,
+        runtime=runtime,
+    )
+
+
 def _initial_state(system: SliderCrankContactSystem, steps: int) -> tuple[FloatArray, float]:
     """State at ``phi_1 = 0``: massless-link motion, pin pressed in by the static load.
 
@@ -1154,76 +1309,12 @@ def solve_contact_impact(
     steps = config.simulation.steps_per_revolution
     contact = JointContact.from_config(config, contour)
     system = SliderCrankContactSystem(mechanism, omega, contact)
-    period = 2.0 * math.pi / omega
     y0, _ = _initial_state(system, max(steps, 64))
-    record_start = settings.revolutions_settle * period
-    max_step = settings.max_step if settings.max_step is not None else period / steps
-    started = _time.perf_counter()
-    history = integrate_contacts(
-        system,
-        (0.0, record_start + period),
-        y0,
-        in_contact=True,
-        method=settings.integrator,
-        rtol=settings.rtol,
-        atol=settings.atol,
-        max_step=max_step,
-    )
-    runtime = _time.perf_counter() - started
-
-    # samples of the recorded revolution, plus its end (for the last increment)
-    phi = 2.0 * np.pi * np.arange(steps) / steps
-    times = record_start + np.append(phi, 2.0 * np.pi) / omega
-    states, index = history.state(times)
-    records = [
-        system.evaluate(float(t), y, history.segments[k].impact_velocity)
-        for t, y, k in zip(times[:-1], states[:-1], index[:-1], strict=True)
-    ]
-    force_x = np.array([r["force_x"] for r in records])
-    force_y = np.array([r["force_y"] for r in records])
-    normal = np.array([r["normal_force"] for r in records])
-    n_x = np.array([r["normal_x"] for r in records])
-    n_y = np.array([r["normal_y"] for r in records])
-    torque = np.array([r["crank_torque"] for r in records])
+    run = integrate_revolution(system, y0, settings, steps)
+    states = run.states
     theta_all = states[:, 0]
     theta = theta_all[:-1]
-    record_end = record_start + period
-    free = history.free_time(record_start, record_end)
-    impacts = int(
-        np.sum(
-            (np.array(history.impact_times) >= record_start)
-            & (np.array(history.impact_times) < record_end)
-        )
-    )
-    # free flight inside each sampling step
-    step_lost = np.zeros(steps, dtype=bool)
-    width = period / steps
-    for seg in history.segments:
-        if seg.in_contact or seg.end <= record_start or seg.start >= record_end:
-            continue
-        first = max(math.floor((seg.start - record_start) / width), 0)
-        last = min(math.ceil((seg.end - record_start) / width), steps)
-        step_lost[first:last] = True
-    peak_times = [t for t in history.peak_times if record_start <= t <= record_end]
-    peaks = [
-        p
-        for t, p in zip(history.peak_times, history.peak_penetrations, strict=True)
-        if record_start <= t <= record_end
-    ]
-    sampled = np.array([r["penetration"] for r in records])
-    max_penetration = float(max([*peaks, float(sampled.max())]))
-    # the largest contact force: impacts peak between samples, near the penetration maxima
-    peak_load = float(normal_max := np.max([r["normal_force"] for r in records]))
-    if peak_times:
-        peak_states, peak_index = history.state(peak_times)
-        peak_load = max(
-            normal_max,
-            *(
-                system.evaluate(t, y, history.segments[k].impact_velocity)["normal_force"]
-                for t, y, k in zip(peak_times, peak_states, peak_index, strict=True)
-            ),
-        )
-
+    force_x, force_y = run.column("force_x"), run.column("force_y")
     load = slider_crank_cycle(
         config,
         force_x,
@@ -1231,21 +1322,49 @@ def solve_contact_impact(
         theta,
         np.diff(theta_all),
         states[:-1, 1],
-        torque,
-        normal_x=n_x,
-        normal_y=n_y,
-        load=normal,
+        run.column("crank_torque"),
+        normal_x=run.column("normal_x"),
+        normal_y=run.column("normal_y"),
+        load=run.column("normal_force"),
         model="contact-impact",
-        lost_steps=step_lost,
+        lost_steps=run.step_lost,
     )
+    return sampled_solution(
+        load, run, system, settings, (lambda: massless_link_load(config)) if compare else None
+    )
+
+
+def sampled_solution(
+    load: LoadCycle,
+    run: SampledRevolution,
+    system: Any,
+    settings: ContactImpactSettings,
+    massless_model: Callable[[], LoadCycle] | None = None,
+) -> ContactImpactSolution:
+    """The solution of a sampled revolution, compared with the massless-link load.
+
+    Parameters
+    ----------
+    load : LoadCycle
+        Contact-impact load of the recorded revolution.
+    run : SampledRevolution
+        The integration and its samples.
+    system : ContactSystem
+        The integrated system.
+    settings : ContactImpactSettings
+        Settings used.
+    massless_model : callable, optional
+        Computes the massless-link load of the same joint; ``None``: no comparison.
+        Contact-loss warnings are silenced and a failure gives ``nan`` differences.
+    """
     massless: LoadCycle | None = None
     massless_lost: bool | None = None
     rms = peak = math.nan
-    if compare:
+    if massless_model is not None:
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", ContactLossWarning)
-                massless = massless_link_load(config)
+                massless = massless_model()
         except JointwearError:
             massless = None
         if massless is not None:
@@ -1256,19 +1375,19 @@ def solve_contact_impact(
             rms, peak = float(np.sqrt(np.mean(diff**2))), float(diff.max())
     return ContactImpactSolution(
         load=load,
-        impacts=impacts,
-        free_flight_fraction=free / period,
-        max_penetration=max_penetration,
-        peak_load=peak_load,
+        impacts=run.impacts,
+        free_flight_fraction=run.free_flight_fraction,
+        max_penetration=run.max_penetration,
+        peak_load=run.peak_load,
         load_difference_rms=rms,
         load_difference_max=peak,
         massless=massless,
         massless_contact_lost=massless_lost,
-        history=history,
+        history=run.history,
         system=system,
         settings=settings,
-        record_start=record_start,
-        runtime=runtime,
+        record_start=run.record_start,
+        runtime=run.runtime,
     )
 
 
