@@ -83,7 +83,7 @@ Acceleration = Annotated[float, _si("acceleration"), Field(ge=0)]
 Density = Annotated[float, _si("density"), Field(gt=0)]
 WearCoefficient = Annotated[float, _si("wear_coefficient"), Field(ge=0)]
 PoissonRatio = Annotated[float, _si("dimensionless"), Field(gt=-1.0, lt=0.5)]
-Inertia = Annotated[float | None, _si("moment_of_inertia"), Field(ge=0)]
+Inertia = Annotated[Annotated[float, Field(ge=0)] | None, _si("moment_of_inertia")]
 
 
 class _Section(BaseModel):
@@ -300,7 +300,7 @@ class LoadHistoryConfig(_Section):
     type: Literal["load-history"] = "load-history"
     file: Annotated[str, Field(min_length=1)]
     frame: Literal["bushing", "global"] = "bushing"
-    period: Annotated[float | None, _si("time"), Field(gt=0)] = None
+    period: Annotated[Annotated[float, Field(gt=0)] | None, _si("time")] = None
     load_scale: Annotated[float, Field(gt=0, le=1e6)] = 1.0
 
     @property
@@ -374,7 +374,7 @@ class ContactConfig(_Section):
     tolerance: Annotated[float, _si("force"), Field(gt=0)] = 1e-12
     max_iterations: Annotated[int, Field(ge=1, le=10_000)] = 100
     foundation_modulus: Literal["youngs", "constrained"] = "youngs"
-    spring_area: Annotated[float | None, _si("area"), Field(gt=0)] = None
+    spring_area: Annotated[Annotated[float, Field(gt=0)] | None, _si("area")] = None
     balance: Literal["paper", "equilibrium"] = "paper"
     nlcp_variant: Literal["paper", "mesh-independent"] = "paper"
     #: NLCP spring stiffness K [N/m^n]; None: eq. (2), 4/3 E* sqrt(R_p)
@@ -428,13 +428,13 @@ class DynamicsConfig(_Section):
     restitution: Annotated[float, Field(gt=0, le=1)] = 0.9
     friction_coefficient: Annotated[float, Field(ge=0, le=10)] = 0.0
     friction_velocity_tolerance: Annotated[float, _si("velocity"), Field(gt=0)] = 1e-4
-    friction_velocity_full: Annotated[float | None, _si("velocity"), Field(gt=0)] = None
+    friction_velocity_full: Annotated[Annotated[float, Field(gt=0)] | None, _si("velocity")] = None
     impact_velocity_floor: Annotated[float, _si("velocity"), Field(gt=0)] = 1e-3
     integrator: Literal["LSODA", "Radau", "BDF", "RK45", "DOP853"] = "LSODA"
     rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
     atol: Annotated[float, Field(gt=0)] = 1e-10
     revolutions_settle: Annotated[int, Field(ge=0, le=10_000)] = 2
-    max_step: Annotated[float | None, _si("time"), Field(gt=0)] = None
+    max_step: Annotated[Annotated[float, Field(gt=0)] | None, _si("time")] = None
 
     @model_validator(mode="after")
     def _friction_ramp(self) -> DynamicsConfig:
@@ -481,10 +481,10 @@ class LifeConfig(_Section):
     wear goes through the wall.
     """
 
-    peak_wear_depth: Annotated[float | None, _si("length"), Field(gt=0)] = None
-    wear_mass: Annotated[float | None, _si("mass"), Field(gt=0)] = None
-    wear_volume: Annotated[float | None, _si("volume"), Field(gt=0)] = None
-    clearance: Annotated[float | None, _si("length"), Field(gt=0)] = None
+    peak_wear_depth: Annotated[Annotated[float, Field(gt=0)] | None, _si("length")] = None
+    wear_mass: Annotated[Annotated[float, Field(gt=0)] | None, _si("mass")] = None
+    wear_volume: Annotated[Annotated[float, Field(gt=0)] | None, _si("volume")] = None
+    clearance: Annotated[Annotated[float, Field(gt=0)] | None, _si("length")] = None
     wall_thickness: NonNegLength = 0.0
 
 

@@ -200,9 +200,9 @@ def combine_joints(datasets: list[xr.Dataset]) -> xr.Dataset:
     combined = xr.concat(
         per_joint,
         dim=xr.Variable(("joint",), names, attrs={"long_name": "clearance joint"}),
-        data_vars="different",
-        coords="minimal",
-        compat="override",
+        data_vars="all",
+        coords="different",
+        compat="equals",
         join="outer",
         combine_attrs="drop_conflicts",
     )

@@ -20,13 +20,23 @@ from jointwear.config import load_config
 from jointwear.measurement.synthetic import synthesize_measurement
 from jointwear.results import config_of, read_result
 
+from ..test_checkpoint import interrupted_run
+
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 #: example config -> mechanism type
 OWN_JOINTS = {
     "oscillating_liner.toml": "oscillating",
+    "four_bar.toml": "four-bar",
 }
 #: small runs: the commands are under test here, not the physics
-QUICK = ["--set", "simulation.revolutions=40", "--set", "simulation.update_every=10"]
+QUICK = [
+    "--set",
+    "simulation.revolutions=40",
+    "--set",
+    "simulation.update_every=10",
+    "--set",
+    "simulation.update_contour=true",
+]
 
 
 def cli_json(capsys: pytest.CaptureFixture[str], *args: str) -> dict:
@@ -53,8 +63,11 @@ def test_run_saves_what_ran_and_resumes(
     capsys: pytest.CaptureFixture[str], example: Path, tmp_path: Path
 ) -> None:
     out = tmp_path / "run"
+    # checkpoints hold one clearance joint
+    single = ["--set", "mechanism.clearance_joint=coupler-rocker"]
+    args = [*QUICK, *(single if example.name == "four_bar.toml" else [])]
     data = cli_json(
-        capsys, "run", str(example), *QUICK, "--out", str(out), "--checkpoint-every", "20"
+        capsys, "run", str(example), *args, "--out", str(out), "--checkpoint-every", "20"
     )
     assert data["peak_wear_depth_m"] > 0
     assert data["mechanism"] == OWN_JOINTS[example.name]
@@ -68,6 +81,12 @@ def test_run_saves_what_ran_and_resumes(
     # the same run, straight through: the saved config reproduces the numbers
     again = Simulation(config).run().summary()
     assert again["peak_wear_depth_m"] == pytest.approx(data["peak_wear_depth_m"], rel=1e-12)
+    # interrupted half-way and resumed from its checkpoint: the same numbers, exactly
+    interrupted = tmp_path / "interrupted"
+    interrupted_run(config.replace({"simulation.checkpoint_every": 10}), interrupted, 20)
+    resumed = cli_json(capsys, "run", "--resume", str(interrupted))
+    assert resumed["peak_wear_depth_m"] == data["peak_wear_depth_m"]
+    assert resumed["wear_mass_kg"] == data["wear_mass_kg"]
 
 
 def test_sweep(capsys: pytest.CaptureFixture[str], example: Path, tmp_path: Path) -> None:
@@ -114,3 +133,32 @@ def test_calibrate_recovers_the_wear_coefficient(
     )
     fitted = data["parameters"]["materials.bushing.wear_coefficient"]["value"]
     assert fitted == pytest.approx(2e-13, rel=0.05)
+
+
+def test_several_joints_wear_as_each_alone(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    joints = ["crank-coupler", "coupler-rocker", "rocker-ground"]
+    listed = "mechanism.clearance_joint=" + json.dumps(joints)
+    out = tmp_path / "run"
+    data = cli_json(
+        capsys, "run", str(EXAMPLES / "four_bar.toml"), *QUICK, "--set", listed, "--out", str(out)
+    )
+    assert set(data["joints"]) == set(joints)
+    peaks = {j: data["joints"][j]["peak_wear_depth_m"] for j in joints}
+    assert data["joint"] == max(peaks, key=peaks.get)  # the top level is the most worn joint
+    dataset = read_result(out / "result.nc")
+    assert [str(j) for j in dataset["joint"].values] == joints
+    assert (out / "plots" / "rocker-ground").is_dir()
+    metrics = (out / "metrics.csv").read_text(encoding="utf-8").splitlines()
+    assert metrics[0].startswith("joint,revolution,")
+    for joint in joints:
+        alone = cli_json(
+            capsys,
+            "run",
+            str(EXAMPLES / "four_bar.toml"),
+            *QUICK,
+            "--set",
+            f"mechanism.clearance_joint={joint}",
+        )
+        assert alone["peak_wear_depth_m"] == pytest.approx(peaks[joint], rel=1e-12)
