@@ -53,13 +53,40 @@ def _exception_types() -> tuple[tuple[type, ...], tuple[type, ...], tuple[type, 
 _EXIT, _ABORT, _USAGE_ERRORS = _exception_types()
 
 
+def _one_line_warnings(debug: bool):
+    """Warnings as one ``warning: ...`` line each on stderr, each message once."""
+    shown: set[str] = set()
+
+    def show(message, category, filename, lineno, file=None, line=None) -> None:
+        text = str(message).replace("\n", " ")
+        if debug:
+            text += f" [{category.__name__} at {filename}:{lineno}]"
+        if text not in shown:
+            shown.add(text)
+            err_console.print(f"warning: {text}", markup=False, highlight=False, soft_wrap=True)
+
+    return show
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``jointwear`` console script."""
+    import warnings
+
     args = list(sys.argv[1:] if argv is None else argv)
     debug = "--debug" in args
+    with warnings.catch_warnings():
+        warnings.showwarning = _one_line_warnings(debug)
+        _main(args, debug)
+
+
+def _main(args: list[str], debug: bool) -> None:
     command = typer.main.get_command(app)
     try:
-        command.main(args=args, prog_name="jointwear", standalone_mode=False)
+        code = command.main(args=args, prog_name="jointwear", standalone_mode=False)
+        if isinstance(code, int) and code:  # e.g. 130 after Ctrl-C inside a command
+            if code == 130:
+                err_console.print("interrupted")
+            sys.exit(code)
     except JointwearError as exc:
         if debug:
             raise

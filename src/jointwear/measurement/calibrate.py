@@ -481,10 +481,16 @@ class _Measured:
 
 
 def _simulate(config: Config) -> FloatArray:
-    from jointwear.errors import WearThroughError
+    import warnings
+
+    from jointwear.errors import WearFeedbackWarning, WearThroughError
     from jointwear.simulation import Simulation
 
-    result = Simulation(config).run()
+    # the trial values of a fit are no run of the user's: what they would warn about
+    # (e.g. a trial K_d wearing past the clearance) says nothing about the result
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", WearFeedbackWarning)
+        result = Simulation(config).run()
     summary = result.summary()
     if summary["stopped_by"] is not None:
         # a profile cut short by a limit is not the measured run's: these values fail
