@@ -364,8 +364,13 @@ def test_dynamics_of_a_load_history_config(
 ) -> None:
     loads = write_csv(tmp_path / "loads.csv", example_columns())
     (tmp_path / "config.toml").write_text(f"[mechanism]\n{HISTORY}", encoding="utf-8")
-    code, out, err = cli(["dynamics", str(tmp_path / "config.toml"), "--json"], capsys)
+    again = tmp_path / "again.csv"
+    code, out, err = cli(
+        ["dynamics", str(tmp_path / "config.toml"), "--json", "--csv", str(again)], capsys
+    )
     assert (code, err) == (0, "")
+    # a load history's own --csv output reads back as the same history
+    assert_same_cycle(read_load_history(again), read_load_history(loads))
     data = json.loads(out)
     assert data["mechanism"] == "load-history"
     assert data["steps"] == 24
@@ -393,3 +398,8 @@ def test_example_load_history_runs(capsys: pytest.CaptureFixture[str]) -> None:
     code, out, err = cli(["run", str(EXAMPLE), "--json"], capsys)
     assert code == 0, err
     assert json.loads(out)["peak_wear_depth_m"] > 0
+    # 181 rows in ms and kN: the last closes the cycle
+    cycle = load_cycle(load_config(EXAMPLE))
+    assert (cycle.steps, cycle.period) == (180, pytest.approx(0.72, rel=1e-15))
+    assert cycle.rotation[-1] == pytest.approx(0.0, abs=1e-12)  # the pin swings back
+    assert 100 < cycle.load.min() < cycle.load.max() < 1000
