@@ -285,15 +285,15 @@ def _first_bad_line(
     return None
 
 
-def _unit_factor(unit: str) -> float | None:
-    """Metres per ``unit``, or None if it is not a length unit."""
+def _unit_factor(unit: str, target: str = "m") -> float | None:
+    """``target`` units per ``unit`` (default metres), or None if the dimensions differ."""
     try:
         parsed = ureg.Unit(unit.strip())
     except Exception:  # pint raises several types for unparsable units
         return None
-    if parsed.dimensionality != ureg.Unit("m").dimensionality:
+    if parsed.dimensionality != ureg.Unit(target).dimensionality:
         return None
-    return float(ureg.Quantity(1.0, parsed).to("m").magnitude)
+    return float(ureg.Quantity(1.0, parsed).to(target).magnitude)
 
 
 def length_unit_factor(unit: str, key: str = "units") -> float:
