@@ -403,3 +403,26 @@ def test_example_load_history_runs(capsys: pytest.CaptureFixture[str]) -> None:
     assert (cycle.steps, cycle.period) == (180, pytest.approx(0.72, rel=1e-15))
     assert cycle.rotation[-1] == pytest.approx(0.0, abs=1e-12)  # the pin swings back
     assert 100 < cycle.load.min() < cycle.load.max() < 1000
+
+
+@pytest.mark.parametrize(
+    "example",
+    ["paper/table3_winkler_120rpm.toml", "four_bar.toml", "oscillating_liner.toml"],
+)
+def test_every_mechanism_writes_what_reads_back(tmp_path: Path, example: str) -> None:
+    """A mechanism's diagnostics must be known to the reader, or its CSV would not read back."""
+    from jointwear.cli.dynamics_cmd import write_csv
+    from jointwear.mechanism import load_cycles
+
+    root = Path(__file__).resolve().parents[2] / "examples"
+    for joint, cycle in load_cycles(load_config(root / example)).items():
+        path = tmp_path / f"{joint}.csv"
+        write_csv(path, cycle)
+        back = read_load_history(path)
+        np.testing.assert_allclose(back.load, cycle.load, rtol=1e-12)
+        np.testing.assert_allclose(
+            back.relative_rotation,
+            cycle.relative_rotation,
+            rtol=0,
+            atol=1e-12 * np.abs(cycle.relative_rotation).max(),
+        )

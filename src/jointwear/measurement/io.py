@@ -23,9 +23,6 @@ that starts with the file name, except a bad ``units`` argument
 
 from __future__ import annotations
 
-import csv
-import re
-import warnings
 from pathlib import Path
 
 import numpy as np
@@ -33,7 +30,15 @@ from numpy.typing import NDArray
 
 from jointwear.errors import ConfigError, DataError
 from jointwear.measurement.fit import _angular_extent, fit_circle_kasa
-from jointwear.units import ureg
+from jointwear.tables import (
+    delimiter_of,
+    is_content,
+    is_numeric_row,
+    load_numbers,
+    parse_header,
+    read_text_lines,
+    unit_factor,
+)
 
 __all__ = [
     "MIN_COVERAGE_DEG",
@@ -52,10 +57,6 @@ MIN_COVERAGE_DEG = 180.0
 #: Largest radial scatter about the algebraic circle, relative to its radius [-];
 #: far more than any wear, far less than a cloud of points that is no ring.
 _MAX_RELATIVE_SCATTER = 0.1
-
-# a column name with an optional unit in brackets: "x", "x [mm]", "X(um)"
-_COLUMN = re.compile(r"^\s*(?P<name>[^\[\]()]*?)\s*(?:[\[(]\s*(?P<unit>[^\[\]()]*?)\s*[\])])?\s*$")
-
 
 def read_points(
     path: str | Path,
@@ -95,25 +96,25 @@ def read_points(
     """
     path = Path(path)
     default_factor = 1.0 if units is None else length_unit_factor(units)
-    lines = _read_lines(path)
-    content = [(i, line) for i, line in enumerate(lines) if _is_content(line)]
+    lines = read_text_lines(path)
+    content = [(i, line) for i, line in enumerate(lines) if is_content(line)]
     if not content:
         raise DataError(f"{path}: no data")
     first_index, first_line = content[0]
-    delimiter = _delimiter(first_line)
+    delimiter = delimiter_of(first_line)
 
-    if _is_numeric_row(first_line, delimiter):
-        data = _load(path, lines, delimiter, None)
+    if is_numeric_row(first_line, delimiter):
+        data = load_numbers(path, lines, delimiter, None)
         if data.shape[1] != 2:
             raise DataError(
                 f"{path}: expected 2 columns (x y) without a header, found {data.shape[1]}"
             )
         x, y = data[:, 0] * default_factor, data[:, 1] * default_factor
     else:
-        columns = _parse_header(path, first_line, delimiter)
+        columns = parse_header(path, first_line, delimiter)
         x_col, x_factor = _column(path, columns, "x", units, default_factor)
         y_col, y_factor = _column(path, columns, "y", units, default_factor)
-        data = _load(
+        data = load_numbers(
             path, lines[first_index + 1:], delimiter, (x_col, y_col), first_index + 2
         )
         x, y = data[:, 0] * x_factor, data[:, 1] * y_factor
@@ -165,51 +166,6 @@ def check_ring(
         )
 
 
-def _read_lines(path: Path) -> list[str]:
-    if not path.exists():
-        raise DataError(f"{path}: file not found")
-    if path.is_dir():
-        raise DataError(f"{path}: is a directory, not a data file")
-    try:
-        # utf-8-sig: spreadsheet programs like to start CSV files with a byte-order mark
-        return path.read_text(encoding="utf-8-sig").splitlines()
-    except UnicodeDecodeError:
-        raise DataError(f"{path}: not a text file (cannot decode as UTF-8)") from None
-    except OSError as exc:
-        raise DataError(f"{path}: cannot read ({exc.strerror or exc})") from None
-
-
-def _is_content(line: str) -> bool:
-    stripped = line.strip()
-    return bool(stripped) and not stripped.startswith("#")
-
-
-def _delimiter(line: str) -> str | None:
-    for candidate in (",", ";", "\t"):
-        if candidate in line:
-            return candidate
-    return None  # any whitespace
-
-
-def _is_numeric_row(line: str, delimiter: str | None) -> bool:
-    try:
-        [float(token) for token in line.split(delimiter) if token.strip()]
-    except ValueError:
-        return False
-    return True
-
-
-def _parse_header(path: Path, line: str, delimiter: str | None) -> list[tuple[str, str | None]]:
-    names = next(csv.reader([line], delimiter=delimiter)) if delimiter else line.split()
-    columns = []
-    for name in names:
-        match = _COLUMN.match(name)
-        if match is None or not match["name"]:
-            raise DataError(f"{path}: cannot read column name {name.strip()!r} in the header")
-        columns.append((match["name"].strip().lower(), match["unit"] or None))
-    return columns
-
-
 def _column(
     path: Path,
     columns: list[tuple[str, str | None]],
@@ -227,7 +183,7 @@ def _column(
     unit = columns[index][1]
     if unit is None:
         return index, default_factor
-    factor = _unit_factor(unit)
+    factor = unit_factor(unit)
     if factor is None:
         raise DataError(f"{path}: column {name!r}: {unit!r} is not a length unit")
     if units is not None and not np.isclose(factor, default_factor, rtol=1e-12, atol=0.0):
@@ -236,64 +192,6 @@ def _column(
             f"drop one of them"
         )
     return index, factor
-
-
-def _load(
-    path: Path,
-    lines: list[str],
-    delimiter: str | None,
-    usecols: tuple[int, int] | None,
-    first_line_number: int = 1,
-) -> FloatArray:
-    with warnings.catch_warnings():
-        # an empty file is reported below as "too few points", not as a warning
-        warnings.simplefilter("ignore", UserWarning)
-        try:
-            data = np.loadtxt(
-                lines, delimiter=delimiter, comments="#", usecols=usecols, ndmin=2, dtype=float
-            )
-        except (ValueError, IndexError) as exc:
-            # numpy's row numbers skip or count comment lines inconsistently: name the line
-            reason = _first_bad_line(lines, delimiter, usecols, first_line_number)
-            if reason is None:
-                reason = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-            raise DataError(f"{path}: cannot read the numbers ({reason})") from None
-    if data.size == 0:
-        return np.zeros((0, 2 if usecols is None else len(usecols)))
-    return data
-
-
-def _first_bad_line(
-    lines: list[str], delimiter: str | None, usecols: tuple[int, int] | None, first: int
-) -> str | None:
-    """Describe the first line ``np.loadtxt`` cannot read (for the error message only)."""
-    expected: int | None = None if usecols is None else max(usecols) + 1
-    for number, line in enumerate(lines, start=first):
-        text = line.split("#", 1)[0]
-        if not text.strip():
-            continue
-        fields = text.split(delimiter)
-        if expected is None:
-            expected = len(fields)
-        if len(fields) < expected or (usecols is None and len(fields) != expected):
-            return f"line {number}: expected {expected} columns, found {len(fields)}"
-        for index in range(len(fields)) if usecols is None else usecols:
-            try:
-                float(fields[index])
-            except ValueError:
-                return f"line {number}: {fields[index].strip()!r} is not a number"
-    return None
-
-
-def _unit_factor(unit: str, target: str = "m") -> float | None:
-    """``target`` units per ``unit`` (default metres), or None if the dimensions differ."""
-    try:
-        parsed = ureg.Unit(unit.strip())
-    except Exception:  # pint raises several types for unparsable units
-        return None
-    if parsed.dimensionality != ureg.Unit(target).dimensionality:
-        return None
-    return float(ureg.Quantity(1.0, parsed).to(target).magnitude)
 
 
 def length_unit_factor(unit: str, key: str = "units") -> float:
@@ -311,7 +209,7 @@ def length_unit_factor(unit: str, key: str = "units") -> float:
     ConfigError
         ``unit`` is not a length unit.
     """
-    factor = _unit_factor(unit)
+    factor = unit_factor(unit)
     if factor is None:
         raise ConfigError(f"{key}: {unit!r} is not a length unit (e.g. m, mm, um)")
     return factor

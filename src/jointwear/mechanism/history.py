@@ -78,17 +78,17 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear.errors import DataError
-from jointwear.measurement.io import (
-    _delimiter,
-    _is_content,
-    _is_numeric_row,
-    _load,
-    _parse_header,
-    _read_lines,
-    _unit_factor,
-)
 from jointwear.mechanism.cycle import LoadCycle, bushing_azimuth
 from jointwear.registry import suggest
+from jointwear.tables import (
+    delimiter_of,
+    is_content,
+    is_numeric_row,
+    load_numbers,
+    parse_header,
+    read_text_lines,
+    unit_factor,
+)
 
 if TYPE_CHECKING:
     from jointwear.config import Config
@@ -243,21 +243,21 @@ def history_cycle(config: Config) -> LoadCycle:
 
 def _read_table(path: Path, frame: str) -> dict[str, FloatArray]:
     """The columns a load history needs, SI, one value per data row."""
-    lines = _read_lines(path)
-    content = [number for number, line in enumerate(lines) if _is_content(line)]
+    lines = read_text_lines(path)
+    content = [number for number, line in enumerate(lines) if is_content(line)]
     if not content:
         raise DataError(f"{path}: no data")
     header_index = content[0]
-    delimiter = _delimiter(lines[header_index])
-    if _is_numeric_row(lines[header_index], delimiter):
+    delimiter = delimiter_of(lines[header_index])
+    if is_numeric_row(lines[header_index], delimiter):
         raise DataError(
             f"{path}: no header row (the first line must name the columns with their units, "
             f"e.g. '{','.join(f'{name} [{unit}]' for name, unit in _COLUMNS.items())}')"
         )
-    columns = _parse_header(path, lines[header_index], delimiter)
+    columns = parse_header(path, lines[header_index], delimiter)
     wanted = {**_COLUMNS, **(_GLOBAL_COLUMNS if frame == "global" else {})}
     found = _check_header(path, columns, wanted)
-    data = _load(path, lines[header_index + 1 :], delimiter, None, header_index + 2)
+    data = load_numbers(path, lines[header_index + 1 :], delimiter, None, header_index + 2)
     # file line numbers of the data rows, for messages
     line_numbers = [number + 1 for number in content[1:]]
     if data.shape[0] < MIN_ROWS:
@@ -309,7 +309,7 @@ def _check_header(
                 f"{path}: column {name!r} has no unit; write it in brackets, "
                 f"e.g. '{name} [{wanted[name]}]'"
             )
-        factor = _unit_factor(unit, wanted[name])
+        factor = unit_factor(unit, wanted[name])
         if factor is None:
             raise DataError(
                 f"{path}: column {name!r}: {unit!r} is not a unit of "
@@ -362,7 +362,7 @@ def _read_result(path: Path, frame: str, period: float | None) -> LoadCycle:
         if name not in dataset or dataset[name].dims != ("step",):
             raise DataError(f"{path}: no variable {name!r} on the dimension 'step'")
         given = str(dataset[name].attrs.get("units", unit))
-        factor = _unit_factor(given, unit)
+        factor = unit_factor(given, unit)
         if factor is None:
             raise DataError(f"{path}: variable {name!r} is in {given!r}, expected {unit}")
         arrays[name] = np.asarray(dataset[name].values, dtype=float) * factor
