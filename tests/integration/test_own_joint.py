@@ -27,6 +27,7 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 OWN_JOINTS = {
     "oscillating_liner.toml": "oscillating",
     "four_bar.toml": "four-bar",
+    "load_history/load_history.toml": "load-history",
 }
 #: small runs: the commands are under test here, not the physics
 QUICK = [
@@ -46,14 +47,14 @@ def cli_json(capsys: pytest.CaptureFixture[str], *args: str) -> dict:
     return json.loads(out[0])
 
 
-@pytest.fixture(params=sorted(OWN_JOINTS), ids=lambda name: name.removesuffix(".toml"))
+@pytest.fixture(params=sorted(OWN_JOINTS), ids=lambda name: Path(name).stem)
 def example(request: pytest.FixtureRequest) -> Path:
     return EXAMPLES / request.param
 
 
 def test_dynamics(capsys: pytest.CaptureFixture[str], example: Path) -> None:
     data = cli_json(capsys, "dynamics", str(example))
-    assert data["mechanism"] == OWN_JOINTS[example.name]
+    assert data["mechanism"] == OWN_JOINTS[example.relative_to(EXAMPLES).as_posix()]
     assert 0 <= data["load_min_n"] <= data["load_mean_n"] <= data["load_max_n"]
     assert data["load_max_n"] > 0
     assert data["total_relative_rotation_rad"] > 0
@@ -70,13 +71,13 @@ def test_run_saves_what_ran_and_resumes(
         capsys, "run", str(example), *args, "--out", str(out), "--checkpoint-every", "20"
     )
     assert data["peak_wear_depth_m"] > 0
-    assert data["mechanism"] == OWN_JOINTS[example.name]
+    assert data["mechanism"] == OWN_JOINTS[example.relative_to(EXAMPLES).as_posix()]
     saved = tomllib.loads((out / "config.toml").read_text(encoding="utf-8"))
-    assert saved["mechanism"]["type"] == OWN_JOINTS[example.name]
+    assert saved["mechanism"]["type"] == OWN_JOINTS[example.relative_to(EXAMPLES).as_posix()]
     dataset = read_result(out / "result.nc")
-    assert dataset.attrs["mechanism"] == OWN_JOINTS[example.name]
+    assert dataset.attrs["mechanism"] == OWN_JOINTS[example.relative_to(EXAMPLES).as_posix()]
     config = config_of(dataset)
-    assert config.mechanism.type == OWN_JOINTS[example.name]
+    assert config.mechanism.type == OWN_JOINTS[example.relative_to(EXAMPLES).as_posix()]
     assert dataset.sizes["step"] == config.simulation.steps_per_revolution
     # the same run, straight through: the saved config reproduces the numbers
     again = Simulation(config).run().summary()
