@@ -49,6 +49,7 @@ __all__ = [
     "OscillatingConfig",
     "SimulationConfig",
     "SliderCrankConfig",
+    "WearConfig",
     "apply_overrides",
     "config_from_dict",
     "is_section",
@@ -474,6 +475,33 @@ class SimulationConfig(_Section):
     dynamics_tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.02
 
 
+class WearConfig(_Section):
+    """The wear law and its coefficients (``archard`` uses the bushing's wear coefficient)."""
+
+    law: str = "archard"
+    energy_coefficient: Annotated[
+        Annotated[float, Field(gt=0)] | None, _si("wear_coefficient")
+    ] = None
+    friction_coefficient: Annotated[float | None, Field(gt=0, le=10)] = None
+
+    @field_validator("law")
+    @classmethod
+    def _known_law(cls, value: str) -> str:
+        from jointwear.tribology.wear_laws import WEAR_LAWS
+
+        if value not in WEAR_LAWS:
+            raise ValueError(f"unknown wear law {value!r}{suggest(value, WEAR_LAWS)}")
+        return value
+
+    @model_validator(mode="after")
+    def _energy_complete(self) -> WearConfig:
+        if self.law == "energy":
+            for key in ("energy_coefficient", "friction_coefficient"):
+                if getattr(self, key) is None:
+                    raise ValueError(f"wear.{key}: missing (needed by wear.law = 'energy')")
+        return self
+
+
 class LifeConfig(_Section):
     """Wear limits: the run stops at the first revolution where one is reached.
 
@@ -499,6 +527,7 @@ class Config(_Section):
     contact: ContactConfig = ContactConfig()
     dynamics: DynamicsConfig = DynamicsConfig()
     simulation: SimulationConfig = SimulationConfig()
+    wear: WearConfig = WearConfig()
     life: LifeConfig = LifeConfig()
 
     @model_validator(mode="after")

@@ -11,11 +11,15 @@ built from the config:
   stops within one revolution of the limit wherever it falls.
 * :class:`DynamicsSchedule` — ``simulation.dynamics_update``: when the dynamics are
   solved again on the worn joint. ``"once"``: never (the load of the unworn joint
-  throughout). ``K``: every ``K`` contour updates. ``"adaptive"``: the interval
-  between solves is chosen so that the load cycle moves by about
-  ``simulation.dynamics_tolerance`` (RMS of the change of the load vector over the
-  cycle, relative to the RMS load) from one solve to the next — longer while the
-  load barely changes, shorter when wear starts to change the dynamics.
+  throughout). ``K``: every ``K`` contour updates. ``"adaptive"``: when the wear
+  since the last solve has grown by a depth chosen so that the load cycle moves by
+  about ``simulation.dynamics_tolerance`` (RMS of the change of the load vector over
+  the cycle, relative to the RMS load) from one solve to the next. The sensitivity of
+  the load to the wear is measured at every solve (change of the load over growth
+  of the deepest wear since the previous solve), so the solves come rarely while the
+  load barely changes and often when wear starts to change the dynamics. The first
+  solve on the worn joint comes after ``dynamics_tolerance`` times the clearance of
+  wear.
 """
 
 from __future__ import annotations
@@ -34,7 +38,14 @@ if TYPE_CHECKING:
     from jointwear.config import Config
     from jointwear.mechanism.cycle import LoadCycle
 
-__all__ = ["LIFE_LIMITS", "DynamicsSchedule", "LifeLimits", "joint_geometry", "load_change"]
+__all__ = [
+    "LIFE_LIMITS",
+    "DynamicsSchedule",
+    "LifeLimits",
+    "joint_geometry",
+    "load_change",
+    "wear_signature",
+]
 
 FloatArray = NDArray[np.float64]
 
@@ -132,21 +143,50 @@ class LifeLimits:
         return high, str(self.reached(depth_at(high)))
 
 
+#: bins of the wear signature of a load cycle over the bushing's circumference
+SIGNATURE_BINS = 72
+
+
+def wear_signature(cycle: LoadCycle, bins: int = SIGNATURE_BINS) -> FloatArray:
+    """Where on the bushing a load cycle does its wear: ``sum F |d phi|`` per azimuth bin [N rad].
+
+    Archard's wear of a cycle is ``K_d sum_k N_k ds_k``, laid down around the load's
+    azimuth; the signature spreads each step's ``F_k |d phi_k|`` linearly onto the
+    two bins next to its azimuth. Unlike the load sampled step by step, it does not
+    jump when an impact moves by a step, so it measures what matters for the wear.
+
+    Parameters
+    ----------
+    cycle : LoadCycle
+        The load cycle.
+    bins : int
+        Bins over the circumference [-].
+    """
+    weight = cycle.load * np.abs(cycle.relative_rotation)
+    position = np.mod(cycle.azimuth, 2.0 * np.pi) * bins / (2.0 * np.pi)
+    lower = np.floor(position).astype(int) % bins
+    fraction = position - np.floor(position)
+    signature = np.bincount(lower, weight * (1.0 - fraction), minlength=bins)
+    signature += np.bincount((lower + 1) % bins, weight * fraction, minlength=bins)
+    return signature
+
+
 def load_change(old: LoadCycle, new: LoadCycle) -> float:
-    """How far a load cycle has moved: RMS of the change of the load vector over RMS load [-].
+    """How far a load cycle has moved, as the wear sees it [-].
+
+    The L2 norm of the change of the :func:`wear_signature` over its norm.
 
     Parameters
     ----------
     old, new : LoadCycle
-        Two load cycles of the same joint with the same steps.
+        Two load cycles of the same joint.
     """
-    if old.steps != new.steps:
-        return math.inf
-    difference = np.hypot(new.force_x - old.force_x, new.force_y - old.force_y)
-    scale = float(np.sqrt(np.mean(old.load**2)))
+    before, after = wear_signature(old), wear_signature(new)
+    scale = float(np.linalg.norm(before))
+    difference = float(np.linalg.norm(after - before))
     if not scale > 0.0:
-        return 0.0 if not np.any(difference) else math.inf
-    return float(np.sqrt(np.mean(difference**2)) / scale)
+        return 0.0 if difference == 0.0 else math.inf
+    return difference / scale
 
 
 #: step-size control of the adaptive coupling: safety factor, largest growth and shrink
@@ -179,35 +219,55 @@ class DynamicsSchedule:
         """Whether the dynamics are ever solved again."""
         return self.setting != "once"
 
-    def due(self, updates_since: int, every: int) -> bool:
-        """Whether the dynamics are due after ``updates_since`` contour updates.
+    def due(self, updates_since: int, growth: float, threshold: float) -> bool:
+        """Whether the dynamics are due.
 
         Parameters
         ----------
         updates_since : int
             Contour updates since the last solve.
-        every : int
-            The current adaptive interval (contour updates).
+        growth : float
+            Growth of the deepest wear since the last solve [m].
+        threshold : float
+            Growth at which the adaptive schedule solves again [m].
         """
         if self.setting == "once":
             return False
-        interval = every if self.setting == "adaptive" else int(self.setting)
-        return updates_since >= interval
+        if self.setting == "adaptive":
+            return growth >= threshold
+        return updates_since >= int(self.setting)
 
-    def next_every(self, every: int, change: float) -> int:
-        """Contour updates until the next solve, from the change the last solve showed.
+    def first_threshold(self, clearance: float) -> float:
+        """Wear growth before the first solve on the worn joint [m].
 
         Parameters
         ----------
-        every : int
-            The interval that led to the last solve.
+        clearance : float
+            Radial clearance of the unworn joint [m].
+        """
+        return self.tolerance * clearance
+
+    def next_threshold(self, growth: float, change: float, clearance: float) -> float:
+        """Wear growth until the next solve, from what the last solve showed [m].
+
+        Never below ``tolerance`` times the current clearance: an impacting joint's
+        load scatters from one solve to the next even without wear, and chasing that
+        scatter with ever shorter intervals would not make the wear more accurate.
+
+        Parameters
+        ----------
+        growth : float
+            Growth of the deepest wear between the last two solves [m].
         change : float
             :func:`load_change` between the last two load cycles [-].
+        clearance : float
+            Largest radial play of the pin now (clearance plus wear) [m].
         """
-        if self.setting != "adaptive":
-            return every
+        floor = self.tolerance * clearance
+        if not growth > 0.0:
+            return floor
         if not change > 0.0:
-            factor = _GROW
-        else:
-            factor = min(_GROW, max(_SHRINK, _SAFETY * self.tolerance / change))
-        return max(1, int(every * factor))
+            return max(floor, _GROW * growth)
+        # the load moves about in proportion to the wear: aim at the tolerance
+        target = _SAFETY * self.tolerance * growth / change
+        return max(floor, min(_GROW * growth, max(_SHRINK * growth, target)))

@@ -48,9 +48,10 @@ from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
 from jointwear.state import SimulationState
-from jointwear.tribology import archard
 from jointwear.tribology.metrics import evaluate_metrics
 from jointwear.tribology.sliding import SLIDING_MODELS
+from jointwear.tribology.wear_laws import WearLaw
+from jointwear.tribology.wear_laws import wear_law as wear_law_of
 
 __all__ = ["Simulation", "SimulationState", "WearResult", "WearStep"]
 
@@ -181,6 +182,10 @@ class Simulation:
         :func:`jointwear.mechanism.load_cycles`; a given cycle is never re-solved).
     joint : str, optional
         The clearance joint to simulate; default all of ``config.joints``.
+    wear_law : str or callable, optional
+        Wear law name (:data:`~jointwear.tribology.wear_laws.WEAR_LAWS`) or
+        ``law(pressure, sliding_distance) -> wear depth`` [Pa, m -> m]; default
+        ``config.wear.law``.
 
     Examples
     --------
@@ -196,8 +201,10 @@ class Simulation:
         contact_model: str | Callable[..., Any] | None = None,
         load_cycle: mechanism.LoadCycle | None = None,
         joint: str | None = None,
+        wear_law: str | WearLaw | None = None,
     ) -> None:
         self.config = config
+        self.wear_law = wear_law_of(config, wear_law)
         self.parameters = ContactParameters.from_config(config)
         self.contact_model = config.contact.model if contact_model is None else contact_model
         self.law = contact_law(self.contact_model, self.parameters)
@@ -287,10 +294,8 @@ class Simulation:
         )
 
     def wear_per_revolution(self, solution: ContactSolution) -> FloatArray:
-        """Stage 3b: Archard wear depth of one revolution at every node [m]."""
-        return archard.wear_depth(
-            solution.pressure, self.sliding_distance, self.config.materials.bushing.wear_coefficient
-        )
+        """Stage 3b: wear depth of one revolution at every node, by the wear law [m]."""
+        return self.wear_law(solution.pressure, self.sliding_distance)
 
     # ---------------------------------------------------------------- loop
     def run(
@@ -354,7 +359,10 @@ class Simulation:
         the wear with error control, see :meth:`_adaptive_step`. A ``[life]`` limit
         reached inside the interval ends it at the first revolution that reaches it.
         """
-        if self.schedule.due(state.updates_since_dynamics, state.dynamics_every):
+        threshold = state.dynamics_threshold or self.schedule.first_threshold(
+            self.config.joint.clearance
+        )
+        if self.schedule.due(state.updates_since_dynamics, state.wear_growth, threshold):
             state = self._resolve_dynamics(state)
         remaining = self.config.simulation.revolutions - state.revolution
         if self.config.simulation.update_every == "adaptive":
@@ -391,13 +399,14 @@ class Simulation:
         sim = self.config.simulation
         thickness = self.config.joint.bushing_thickness
         base = state
-        if base.wear_rate is None:  # the first update: the rate of the current contour
+        if base.wear_rate is None:  # the first update (or a new load): the current rate
             contour = self._contour(base.wear_depth)
             solution = self._solve(contour, base, 0)
             base = replace(
                 base,
                 wear_rate=self.wear_per_revolution(solution),
-                next_interval=1,
+                # a new load keeps the step size; its jumps are error-controlled anyway
+                next_interval=base.next_interval or 1,
                 **self._warm_start(solution, contour),
             )
         rate0 = base.wear_rate
@@ -408,6 +417,15 @@ class Simulation:
         if np.any(wearing):
             room = float(np.min((thickness - base.wear_depth[wearing]) / rate0[wearing]))
             interval = max(1, min(interval, math.floor(room)))
+        if self.schedule.setting == "adaptive" and not self._given_cycle:
+            # a jump ends where the dynamics are due again, so that they see the wear
+            threshold = base.dynamics_threshold or self.schedule.first_threshold(
+                self.config.joint.clearance
+            )
+            peak_rate = float(rate0.max())
+            if peak_rate > 0.0:
+                ahead = math.ceil((threshold - base.wear_growth) / peak_rate)
+                interval = max(1, min(interval, ahead))
         while True:
             contour = self._contour(base.wear_depth + interval * rate0)
             solution = self._solve(contour, base, interval)
@@ -505,13 +523,14 @@ class Simulation:
             state,
             load_depth=state.wear_depth,
             updates_since_dynamics=0,
-            dynamics_every=self.schedule.next_every(state.dynamics_every, change),
-            # the rate, warm start and step size belonged to the old load
+            dynamics_threshold=self.schedule.next_threshold(
+                state.wear_growth, change, self.config.joint.clearance + state.wear_depth.max()
+            ),
+            # the rate and the warm start belonged to the old load
             wear_rate=None,
             warm_offset=None,
             warm_slope=None,
             window=None,
-            next_interval=None,
         )
         return self._record_dynamics(state, change)
 
@@ -592,9 +611,10 @@ class Simulation:
 
         start = time.perf_counter()
         results = [
-            Simulation(self.config, self.contact_model, load_cycle=cycle, joint=joint).run(
-                progress
-            )
+            Simulation(
+                self.config, self.contact_model, load_cycle=cycle, joint=joint,
+                wear_law=self.wear_law,
+            ).run(progress)
             for joint, cycle in self.load_cycles.items()
         ]
         runtime = time.perf_counter() - start
@@ -609,19 +629,16 @@ class Simulation:
         rate = self.wear_per_revolution(solution)
         stop = self.life.first_reached(lambda n: rate * n, total)
         end, stopped_by = (total, None) if stop is None else stop
+        # the saved profiles before the end, and the end (the last mark without a stop)
         for revolution in [t for t in self._profile_targets if t < end] + [end]:
-            if revolution in (t for t, _ in state.profiles):
-                continue
-            depth = contour.worn(rate * revolution).wear_depth
             state = replace(
-                state, revolution=revolution, wear_rate=rate, interval=revolution,
-                wear_depth=depth,
+                state,
+                revolution=revolution,
+                wear_rate=rate,
+                interval=revolution,
+                wear_depth=contour.worn(rate * revolution).wear_depth,
+                stopped_by=stopped_by if revolution == end else None,
             )
-            if revolution == end and not (stopped_by or revolution in self._profile_targets):
-                break
-            state = self._record(state, solution)
-        state = replace(state, revolution=end if stopped_by else total, stopped_by=stopped_by)
-        if stopped_by and state.history.last["revolution"] != end:
             state = self._record(state, solution)
         return state, solution
 

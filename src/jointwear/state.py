@@ -132,8 +132,9 @@ class SimulationState:
         One row per solve of the dynamics: ``revolution`` and the load-cycle scalars.
     updates_since_dynamics : int
         Contour updates since the dynamics were last solved.
-    dynamics_every : int
-        Contour updates between dynamics solves (adaptive coupling adjusts it).
+    dynamics_threshold : float
+        Growth of the deepest wear since the last solve at which the adaptive
+        coupling solves the dynamics again [m] (0: not yet set).
     """
 
     revolution: int
@@ -150,7 +151,7 @@ class SimulationState:
     load_depth: FloatArray | None = None
     dynamics_updates: Log = field(default_factory=Log)
     updates_since_dynamics: int = 0
-    dynamics_every: int = 1
+    dynamics_threshold: float = 0.0
 
     def __post_init__(self) -> None:
         for spec in fields(self):
@@ -158,6 +159,13 @@ class SimulationState:
             frozen = _frozen(value)
             if frozen is not value:
                 object.__setattr__(self, spec.name, frozen)
+
+    @property
+    def wear_growth(self) -> float:
+        """Growth of the deepest wear since the load cycle was solved [m]."""
+        if self.load_depth is None:
+            return float(self.wear_depth.max())
+        return float(self.wear_depth.max() - self.load_depth.max())
 
     @property
     def history_columns(self) -> dict[str, list[float]]:
