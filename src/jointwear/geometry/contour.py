@@ -136,6 +136,13 @@ class BushingContour:
             wear.setflags(write=False)
             object.__setattr__(self, "wear", wear)
 
+    def __repr__(self) -> str:
+        peak = 0.0 if self.wear is None or not self.wear.size else float(self.wear.max())
+        return (
+            f"<BushingContour {self.radius.size} nodes, R0 {self.original_radius * 1e3:.6g} mm, "
+            f"b {self.axial_length * 1e3:.4g} mm, peak wear {peak * 1e6:.4g} µm>"
+        )
+
     # ---------------------------------------------------------------- builders
     @classmethod
     def circle(cls, radius: float, nodes: int, axial_length: float) -> BushingContour:
