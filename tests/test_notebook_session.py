@@ -27,7 +27,7 @@ def test_load_change_run_plot(session, tmp_path) -> None:
     path, settings = session
 
     # [1] what is there
-    assert jw.__version__ and jw.__version__ != "0+unknown"
+    assert jw.__version__ != "0+unknown"
     assert {"Config", "Simulation", "WearResult", "load_config", "plots"} <= set(dir(jw))
 
     # [2] load and change (a config is immutable: replace returns a new one)

@@ -37,7 +37,7 @@ FloatArray = NDArray[np.float64]
 
 
 def node_angles(nodes: int) -> FloatArray:
-    """Equally spaced node angles ``2 pi j / N`` [rad], ``j = 0 .. N-1``."""
+    """Equally spaced node angles ``2 pi j / N`` [rad], ``j = 0, 1, ..., N-1``."""
     return 2.0 * np.pi * np.arange(nodes) / nodes
 
 
