@@ -1,4 +1,4 @@
-"""Shared fixtures: the paper's joint (Table 2 read in SI, see SPEC.md §3)."""
+"""Shared fixtures: the paper's joint (Table 2 read in SI, see docs/reading-the-paper.md)."""
 
 from __future__ import annotations
 

@@ -24,6 +24,11 @@ def test_docs_build_without_warnings(tmp_path) -> None:
     pages = {p.relative_to(out).as_posix() for p in out.rglob("*.html")}
     assert {"index.html", "reading-the-paper.html", "auto_examples/quickstart.html"} <= pages
     assert "api/generated/jointwear.plots.plot_wear_result.html" in pages
+    # every function the equation index names exists (an unresolved name renders without a link)
+    reading = (out / "reading-the-paper.html").read_text(encoding="utf-8")
+    references = reading.count('<code class="xref py')
+    assert references >= 20
+    assert reading.count('"><code class="xref py') == references, "unresolved API name"
     # the gallery shows the examples' figures
     quickstart = (out / "auto_examples" / "quickstart.html").read_text(encoding="utf-8")
     assert "sphx_glr_quickstart_001.png" in quickstart

@@ -7,7 +7,7 @@ Residuals are relative (log-ratios for scalar metrics), so quantities of very
 different size weigh alike.
 
 :func:`calibrate_metrics` fits scalar metrics (the paper's wear peak, width and
-mass: SPEC §4's protocol calibrates the undisclosed parameters on one table
+mass: the reproduction protocol calibrates the undisclosed parameters on one table
 row); :mod:`jointwear.measurement` adds residuals from measured profiles.
 """
 

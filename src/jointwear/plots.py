@@ -41,6 +41,7 @@ __all__ = [
     "save_figure",
 ]
 
+#: the figures of a result, in the order :func:`plot_result` draws them
 FIGURES = ("wear_polar", "wear_profiles", "pressure", "joint_load", "wear_history")
 
 

@@ -135,12 +135,13 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines = ["# jointwear: reproduction of the NLCP paper", ""]
     lines += [
         "Every row below is computed by `jointwear reproduce`. The paper's units are read as "
-        "SPEC §3 says (its tables print g and mm where kg and m reproduce its results; wear "
+        'the documentation\'s "How we read the paper" says (its tables print g and mm where '
+        "kg and m reproduce its results; wear "
         "peaks are converted from mm, masses from g). Deviation = ours / paper − 1.",
         "",
         f"Machine: {report['machine']}. Total run time: {report['total_runtime_s']:.1f} s.",
         "",
-        "## Calibration (SPEC §4 protocol)",
+        "## Calibration (on one row; every other row is a prediction)",
         "",
     ]
     cal = report.get("calibration")

@@ -5,7 +5,7 @@ simulation data". Here both profiles are put on the simulation's node grid
 ``theta_j = 2 pi j / N``, the measured one is rotated onto the simulated one
 (the instrument's frame is not the bushing's), and the difference is reported
 as an RMS error [m] and as differences of the paper's metrics: wear peak,
-wear width (SPEC §4, threshold a fraction of the peak) and wear area / mass.
+wear width (threshold a fraction of the peak, as the reproduction measures it) and wear area / mass.
 
 Two entry points:
 

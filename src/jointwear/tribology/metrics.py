@@ -1,4 +1,4 @@
-"""Wear metrics as the paper reports them (SPEC §4): peak, width, area, mass.
+"""Wear metrics as the paper reports them: peak, width, area, mass.
 
 All functions take a wear-depth profile on the equally spaced node grid
 ``theta_j = 2 pi j / N`` (radial growth of the bushing radius, [m]).
