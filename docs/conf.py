@@ -5,11 +5,15 @@ Build: ``pip install -e ".[docs]"`` then ``python -m sphinx -W -b html docs DIR`
 
 from __future__ import annotations
 
+import shutil
 import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE / "_ext"))
+# the API pages are generated from the code on every build; stale ones (of a renamed
+# or removed name) would otherwise linger and warn
+shutil.rmtree(HERE / "api" / "generated", ignore_errors=True)
 
 from jointwear import __version__  # noqa: E402
 
@@ -57,7 +61,7 @@ sphinx_gallery_conf = {
     "image_scrapers": ("gallery_figures.scraper",),
     "download_all_examples": False,
     "remove_config_comments": True,
-    "within_subsection_order": "FileNameSortKey",
+    "within_subsection_order": "gallery_figures.ExampleOrder",
     "min_reported_time": 10,
     "write_computation_times": False,
 }

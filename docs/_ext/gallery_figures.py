@@ -23,3 +23,19 @@ def scraper(block, block_vars, gallery_conf, **kwargs):
             value.savefig(path, dpi=96, bbox_inches="tight")
             paths.append(path)
     return figure_rst(paths, gallery_conf["src_dir"])
+
+
+class ExampleOrder:
+    """Gallery order: the quick start first, then the others by file name."""
+
+    FIRST = ("quickstart.py", "contact_models.py")
+
+    def __init__(self, src_dir: str) -> None:
+        self.src_dir = src_dir
+
+    def __call__(self, filename: str) -> tuple[int, str]:
+        rank = self.FIRST.index(filename) if filename in self.FIRST else len(self.FIRST)
+        return rank, filename
+
+    def __repr__(self) -> str:  # sphinx-gallery compares configs by repr
+        return f"{type(self).__name__}()"
