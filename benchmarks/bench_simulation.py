@@ -1,4 +1,4 @@
-"""Speed of the wear simulation (issue 6): fast path vs reference, long runs, memory, start-up.
+"""Speed of the wear simulation: fast path vs reference, long runs, memory, start-up.
 
 Run from the repository root::
 

@@ -1,4 +1,4 @@
-"""Shared fixtures: the paper's joint (Table 2 read in SI, see SPEC.md §3)."""
+"""Shared fixtures: the paper's joint (Table 2 read in SI, see docs/reading-the-paper.md)."""
 
 from __future__ import annotations
 
@@ -60,3 +60,17 @@ def circle(params: ContactParameters) -> BushingContour:
 def worn(params: ContactParameters) -> BushingContour:
     """Bushing with a 20 um one-sided wear scar centred 20 deg counter-clockwise of 0 deg."""
     return BushingContour.from_wear_profile(params.bushing_radius, scar(360), params.axial_length)
+
+
+#: fast tests of one stage or one function (no CLI, no files, no long simulations): run them
+#: alone with ``python -m pytest -m "unit and not slow"``
+UNIT_DIRECTORIES = ("contact", "geometry", "mechanism", "references", "tribology")
+UNIT_FILES = ("test_config.py", "test_solvers.py")
+
+
+def pytest_collection_modifyitems(config, items) -> None:
+    tests = Path(__file__).resolve().parent
+    for item in items:
+        path = Path(str(item.fspath)).resolve().relative_to(tests)
+        if path.parts[0] in UNIT_DIRECTORIES or path.as_posix() in UNIT_FILES:
+            item.add_marker(pytest.mark.unit)

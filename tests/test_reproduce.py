@@ -65,7 +65,7 @@ def test_reproduce_single_revolution_rows(tmp_path: Path) -> None:
     assert ours["peak"] == pytest.approx(row.peak, rel=1e-6)
     assert ours["width"] == pytest.approx(row.width, rel=1e-6)
     assert ours["mass"] == pytest.approx(row.mass, rel=1e-6)
-    # calibrated values are physical (SPEC §3: about 20 mm and 2.5 mm fit)
+    # calibrated values are physical (the defaults, 20 mm and 2.5 mm, are of the same order)
     values = report["calibration"]["values"]
     assert 10e-3 < values["joint.axial_length"] < 40e-3
     assert 1e-3 < values["joint.bushing_thickness"] < 6e-3

@@ -8,30 +8,15 @@ Pipeline (paper Fig. 7), one module per stage::
     geometry   -> bushing contour and its update
 
 :class:`Simulation` runs the loop over revolutions.
+
+Every public name is imported on first use, so ``import jointwear`` stays light
+(the orchestrator pulls in xarray, the config pydantic); ``dir(jointwear)`` and
+tab completion list them all the same.
 """
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version
-
-try:
-    __version__ = version("jointwear")
-except PackageNotFoundError:  # running from a source tree
-    __version__ = "0+unknown"
-
-from jointwear.config import Config, load_config
-from jointwear.errors import JointwearError
-from jointwear.geometry import BushingContour, Pin
-
-
-def __getattr__(name: str):
-    # the orchestrator pulls in xarray; import it lazily to keep `import jointwear` light
-    if name in {"Simulation", "WearResult"}:
-        from jointwear import simulation
-
-        return getattr(simulation, name)
-    raise AttributeError(f"module 'jointwear' has no attribute {name!r}")
-
+import typing as _typing
 
 __all__ = [
     "BushingContour",
@@ -43,3 +28,71 @@ __all__ = [
     "__version__",
     "load_config",
 ]
+
+#: public name -> module that defines it
+_LAZY = {
+    "BushingContour": "jointwear.geometry",
+    "Config": "jointwear.config",
+    "JointwearError": "jointwear.errors",
+    "Pin": "jointwear.geometry",
+    "Simulation": "jointwear.simulation",
+    "WearResult": "jointwear.simulation",
+    "load_config": "jointwear.config",
+}
+#: subpackages and modules reachable as attributes (``jointwear.plots``) without an import
+_SUBMODULES = (
+    "calibration",
+    "cli",
+    "config",
+    "contact",
+    "display",
+    "errors",
+    "geometry",
+    "measurement",
+    "mechanism",
+    "parameter_sets",
+    "plots",
+    "references",
+    "reproduce",
+    "results",
+    "simulation",
+    "sweep",
+    "tribology",
+    "units",
+)
+
+
+def _package_version() -> str:
+    from importlib import metadata
+
+    try:
+        return metadata.version("jointwear")
+    except metadata.PackageNotFoundError:  # running from a source tree
+        return "0+unknown"
+
+
+__version__ = _package_version()
+
+if _typing.TYPE_CHECKING:
+    from jointwear.config import Config, load_config
+    from jointwear.errors import JointwearError
+    from jointwear.geometry import BushingContour, Pin
+    from jointwear.simulation import Simulation, WearResult
+
+
+def __getattr__(name: str) -> object:
+    from importlib import import_module
+
+    if name in _LAZY:
+        value = getattr(import_module(_LAZY[name]), name)
+    elif name in _SUBMODULES:
+        value = import_module(f"jointwear.{name}")
+    else:
+        raise AttributeError(f"module 'jointwear' has no attribute {name!r}")
+    globals()[name] = value  # later look-ups skip __getattr__
+    return value
+
+
+def __dir__() -> list[str]:
+    dunders = {name for name in globals() if name.startswith("__")}
+    return sorted(dunders | set(__all__) | set(_SUBMODULES))

@@ -1,5 +1,8 @@
 """``python -m jointwear``."""
 
+from __future__ import annotations
+
 from jointwear.cli import main
 
-main()
+if __name__ == "__main__":
+    main()

@@ -7,7 +7,7 @@ Residuals are relative (log-ratios for scalar metrics), so quantities of very
 different size weigh alike.
 
 :func:`calibrate_metrics` fits scalar metrics (the paper's wear peak, width and
-mass: SPEC §4's protocol calibrates the undisclosed parameters on one table
+mass: the reproduction protocol calibrates the undisclosed parameters on one table
 row); :mod:`jointwear.measurement` adds residuals from measured profiles.
 """
 
@@ -94,8 +94,16 @@ class CalibrationResult:
     message: str = ""
     extra: dict = field(default_factory=dict)
 
+    def __repr__(self) -> str:
+        values = ", ".join(f"{key}={value:.6g}" for key, value in self.values.items())
+        return (
+            f"<CalibrationResult {values}; RMS residual {self.rms_residual:.3g}, "
+            f"{self.evaluations} evaluations>"
+        )
+
     @property
     def rms_residual(self) -> float:
+        """Root mean square of the residuals at the optimum [-]."""
         return float(np.sqrt(np.mean(self.residuals**2)))
 
 

@@ -1,105 +1,177 @@
 """Figures of a wear result, drawn from its Dataset (so saved results redraw).
 
-Every figure is written as PNG and SVG. :func:`plot_result` draws them all:
+Every function returns a :class:`matplotlib.figure.Figure` built without
+pyplot: no backend is selected and no global setting changes, so the figures
+show inline in a notebook and work in scripts and servers alike. Writing files
+is a separate step, :func:`save_figure` (PNG + SVG), and :func:`plot_result`
+draws and writes them all:
 
 * ``wear_polar``: the worn contour over the original bushing circle, wear
   magnified (the paper magnifies x1000 for one revolution; ``"auto"`` picks the
   power of ten that makes the scar visible);
 * ``wear_profiles``: wear depth vs angle for the saved revolutions;
-* ``pressure``: pressure distributions at chosen crank angles;
-* ``joint_load``: load magnitude and azimuth over a revolution;
+* ``pressure``: pressure distributions at chosen phases of the cycle;
+* ``joint_load``: load magnitude and azimuth over a cycle;
 * ``wear_history``: peak, width and mass vs revolutions.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import xarray as xr
+from matplotlib.figure import Figure
 
+from jointwear.errors import JointwearError
 from jointwear.io import atomic_path
 
-__all__ = ["FIGURES", "plot_result", "polar_magnification"]
+__all__ = [
+    "FIGURES",
+    "depth_unit",
+    "new_figure",
+    "phase_coordinate",
+    "plot_dataset",
+    "plot_result",
+    "plot_wear_result",
+    "polar_magnification",
+    "save_figure",
+]
 
+#: the figures of a result, in the order :func:`plot_result` draws them
 FIGURES = ("wear_polar", "wear_profiles", "pressure", "joint_load", "wear_history")
 
 
-def _pyplot():
-    import matplotlib
+def new_figure(figsize: tuple[float, float] = (7.0, 4.0), **kwargs: Any) -> Figure:
+    """A matplotlib figure that belongs to no pyplot state and selects no backend.
 
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
+    Parameters
+    ----------
+    figsize : tuple of float
+        Width and height [inch].
+    **kwargs
+        Passed to :class:`matplotlib.figure.Figure`.
 
-    return plt
+    Returns
+    -------
+    matplotlib.figure.Figure
+        An empty figure; add axes with ``fig.subplots(...)`` or ``fig.add_subplot(...)``.
+    """
+    return Figure(figsize=figsize, **kwargs)
+
+
+def save_figure(fig: Figure, directory: str | Path, name: str, dpi: int = 130) -> list[Path]:
+    """Write a figure as ``NAME.png`` and ``NAME.svg``, each atomically.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure to write.
+    directory : path-like
+        Output folder (created).
+    name : str
+        File stem.
+    dpi : int
+        Resolution of the PNG [dots per inch].
+
+    Returns
+    -------
+    list of Path
+        The files written.
+    """
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for suffix in ("png", "svg"):
+        path = directory / f"{name}.{suffix}"
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, format=suffix, dpi=dpi, bbox_inches="tight")
+        paths.append(path)
+    return paths
 
 
 def polar_magnification(peak: float, radius: float) -> float:
-    """Power of ten that draws a wear peak [m] at 5-50 % of the radius [m]."""
+    """Power of ten that draws a wear peak [m] at 5-50 % of the radius [m].
+
+    Parameters
+    ----------
+    peak : float
+        Largest wear depth [m].
+    radius : float
+        Radius of the circle the wear is drawn on [m].
+
+    Returns
+    -------
+    float
+        The magnification [-]; 1 without wear.
+    """
     if peak <= 0:
         return 1.0
     return 10.0 ** math.floor(math.log10(0.5 * radius / peak))
 
 
 def depth_unit(peak: float) -> tuple[float, str]:
-    """Scale [m per unit] and name of the length unit that shows ``peak`` [m] legibly."""
+    """Scale and name of the length unit that shows a depth legibly.
+
+    Parameters
+    ----------
+    peak : float
+        Largest depth to show [m].
+
+    Returns
+    -------
+    scale : float
+        Metres per unit [m].
+    unit : str
+        ``"nm"``, ``"µm"`` or ``"mm"``.
+    """
     for scale, unit in ((1e-9, "nm"), (1e-6, "µm")):
         if peak < 1000 * scale:
             return scale, unit
     return 1e-3, "mm"
 
 
-def _save(fig, directory: Path, name: str) -> list[Path]:
-    paths = []
-    for suffix in ("png", "svg"):
-        path = directory / f"{name}.{suffix}"
-        with atomic_path(path) as tmp:
-            fig.savefig(tmp, format=suffix, dpi=130, bbox_inches="tight")
-        paths.append(path)
-    return paths
+def phase_coordinate(dataset: xr.Dataset) -> np.ndarray:
+    """Phase of each time step of the cycle [rad].
 
-
-def plot_result(
-    dataset: xr.Dataset,
-    directory: str | Path,
-    magnification: float | str = "auto",
-    label: str | None = None,
-) -> list[Path]:
-    """Draw all figures of a result into ``directory``.
+    Reads ``phase`` and, in results written before that name, ``crank_angle``.
 
     Parameters
     ----------
     dataset : xarray.Dataset
-        A result (:meth:`jointwear.WearResult.dataset` or :func:`jointwear.results.read_result`).
-    directory : path-like
-        Output folder (created).
-    magnification : float or "auto"
-        Wear magnification of the polar plot [-].
-    label : str, optional
-        Title prefix.
-    """
-    plt = _pyplot()
-    directory = Path(directory)
-    directory.mkdir(parents=True, exist_ok=True)
-    label = label or f"{dataset.attrs.get('contact_model', '')}"
-    written: list[Path] = []
-    theta = dataset["theta"].values
-    theta_deg = np.degrees(theta)
-    depth = dataset["wear_depth"].values
-    revolutions = dataset["revolution"].values
-    original = float(np.median(dataset["bushing_radius"].values - depth[-1]))
+        A wear result.
 
-    # -- polar wear profile over the original circle
+    Returns
+    -------
+    numpy.ndarray
+        The per-step phase [rad].
+    """
+    name = "phase" if "phase" in dataset.variables else "crank_angle"
+    return np.asarray(dataset[name].values, dtype=float)
+
+
+def _original_radius(dataset: xr.Dataset) -> float:
+    depth = dataset["wear_depth"].values
+    return float(np.median(dataset["bushing_radius"].values - depth[-1]))
+
+
+def _wear_polar(dataset: xr.Dataset, label: str, magnification: float | str) -> Figure:
+    theta = dataset["theta"].values
+    depth = dataset["wear_depth"].values
+    original = _original_radius(dataset)
     mag = (
         polar_magnification(float(depth[-1].max()), original)
         if magnification == "auto"
         else float(magnification)
     )
-    fig, ax = plt.subplots(subplot_kw={"projection": "polar"}, figsize=(5.5, 5.5))
+    fig = new_figure((5.5, 5.5))
+    ax = fig.add_subplot(projection="polar")
     closed = np.append(theta, theta[0])
     ax.plot(closed, np.full_like(closed, original * 1e3), "k--", lw=1, label="original bushing")
-    for rev, profile in zip(revolutions, depth, strict=True):
+    for rev, profile in zip(dataset["revolution"].values, depth, strict=True):
         ax.plot(
             closed,
             (original + mag * np.append(profile, profile[0])) * 1e3,
@@ -108,13 +180,16 @@ def plot_result(
         )
     ax.set_title(f"{label}: worn contour [mm], wear x{mag:g}", pad=14)
     ax.legend(loc="lower left", fontsize=7, bbox_to_anchor=(-0.1, -0.12), ncol=3)
-    written += _save(fig, directory, "wear_polar")
-    plt.close(fig)
+    return fig
 
-    # -- wear depth vs angle
-    fig, ax = plt.subplots(figsize=(7, 4))
+
+def _wear_profiles(dataset: xr.Dataset, label: str) -> Figure:
+    theta_deg = np.degrees(dataset["theta"].values)
+    depth = dataset["wear_depth"].values
+    fig = new_figure()
+    ax = fig.subplots()
     scale, unit = depth_unit(float(depth.max()))
-    for rev, profile in zip(revolutions, depth, strict=True):
+    for rev, profile in zip(dataset["revolution"].values, depth, strict=True):
         ax.plot(theta_deg, profile / scale, label=f"{rev} r")
     ax.set_xlabel("bushing angle θ [deg]")
     ax.set_ylabel(f"wear depth [{unit}]")
@@ -122,18 +197,20 @@ def plot_result(
     ax.set_title(f"{label}: wear depth")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
-    written += _save(fig, directory, "wear_profiles")
-    plt.close(fig)
+    return fig
 
-    # -- pressure at chosen crank angles
-    fig, ax = plt.subplots(figsize=(7, 4))
+
+def _pressure(dataset: xr.Dataset, label: str) -> Figure:
+    theta_deg = np.degrees(dataset["theta"].values)
+    fig = new_figure()
+    ax = fig.subplots()
     snapshots = dataset["snapshot"].values
     chosen = np.unique(np.linspace(0, snapshots.size, 6, endpoint=False).astype(int))
     for i in chosen:
         ax.plot(
             theta_deg,
             dataset["pressure_initial"].values[i] / 1e6,
-            label=f"crank {np.degrees(snapshots[i]):.0f}°",
+            label=f"phase {np.degrees(snapshots[i]):.0f}°",
         )
         if dataset.sizes.get("update", 0) > 1:
             ax.plot(
@@ -148,27 +225,28 @@ def plot_result(
     ax.set_title(f"{label}: pressure (solid: unworn, dotted: final contour)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    written += _save(fig, directory, "pressure")
-    plt.close(fig)
+    return fig
 
-    # -- joint load and azimuth
-    phase_name = "phase" if "phase" in dataset else "crank_angle"
-    crank = np.degrees(dataset[phase_name].values)
-    fig, (ax1, ax2) = plt.subplots(2, 1, sharex=True, figsize=(7, 5))
-    ax1.plot(crank, dataset["joint_load"].values)
+
+def _joint_load(dataset: xr.Dataset, label: str) -> Figure:
+    phase = np.degrees(phase_coordinate(dataset))
+    fig = new_figure((7, 5))
+    ax1, ax2 = fig.subplots(2, 1, sharex=True)
+    ax1.plot(phase, dataset["joint_load"].values)
     ax1.set_ylabel("joint load [N]")
     ax1.grid(alpha=0.3)
-    ax2.plot(crank, np.degrees(np.unwrap(dataset["load_azimuth"].values)))
+    ax2.plot(phase, np.degrees(np.unwrap(dataset["load_azimuth"].values)))
     ax2.set_ylabel("load azimuth [deg]")
     ax2.set_xlabel("cycle phase [deg]")
     ax2.grid(alpha=0.3)
     ax1.set_title(f"{label}: joint load over a cycle")
-    written += _save(fig, directory, "joint_load")
-    plt.close(fig)
+    return fig
 
-    # -- history
+
+def _wear_history(dataset: xr.Dataset, label: str) -> Figure:
     revs = dataset["update_revolution"].values
-    fig, axes = plt.subplots(3, 1, sharex=True, figsize=(7, 7))
+    fig = new_figure((7, 7))
+    axes = fig.subplots(3, 1, sharex=True)
     for ax, name, scale, unit in zip(
         axes,
         ("peak_wear_depth", "wear_width", "wear_mass"),
@@ -181,6 +259,109 @@ def plot_result(
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("revolutions")
     axes[0].set_title(f"{label}: wear vs revolutions")
-    written += _save(fig, directory, "wear_history")
-    plt.close(fig)
+    return fig
+
+
+_DRAW: dict[str, Callable[[xr.Dataset, str], Figure]] = {
+    "wear_profiles": _wear_profiles,
+    "pressure": _pressure,
+    "joint_load": _joint_load,
+    "wear_history": _wear_history,
+}
+
+
+def plot_dataset(
+    dataset: xr.Dataset,
+    kind: str = "wear_polar",
+    magnification: float | str = "auto",
+    label: str | None = None,
+) -> Figure:
+    """Draw one figure of a result dataset.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A result (``WearResult.dataset`` or :func:`jointwear.results.read_result`).
+    kind : str
+        One of :data:`FIGURES`.
+    magnification : float or "auto"
+        Wear magnification of the ``wear_polar`` figure [-].
+    label : str, optional
+        Title prefix; default the contact model's name.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (not registered with pyplot; nothing is written).
+
+    Raises
+    ------
+    JointwearError
+        For an unknown ``kind``.
+    """
+    if kind not in FIGURES:
+        raise JointwearError(f"unknown figure {kind!r}; choose one of {', '.join(FIGURES)}")
+    label = label or f"{dataset.attrs.get('contact_model', '')}"
+    if kind == "wear_polar":
+        return _wear_polar(dataset, label, magnification)
+    return _DRAW[kind](dataset, label)
+
+
+def plot_wear_result(
+    result: Any,
+    kind: str = "wear_polar",
+    magnification: float | str = "auto",
+    label: str | None = None,
+) -> Figure:
+    """Draw one figure of a wear result (what ``WearResult.plot`` returns).
+
+    Parameters
+    ----------
+    result : WearResult or xarray.Dataset
+        A simulation result, or its dataset.
+    kind : str
+        One of :data:`FIGURES`: ``"wear_polar"`` (default), ``"wear_profiles"``,
+        ``"pressure"``, ``"joint_load"``, ``"wear_history"``.
+    magnification : float or "auto"
+        Wear magnification of the ``wear_polar`` figure [-].
+    label : str, optional
+        Title prefix; default the contact model's name.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure; write it with :func:`save_figure` or ``fig.savefig``.
+    """
+    dataset = result if isinstance(result, xr.Dataset) else result.dataset
+    return plot_dataset(dataset, kind, magnification=magnification, label=label)
+
+
+def plot_result(
+    dataset: xr.Dataset,
+    directory: str | Path,
+    magnification: float | str = "auto",
+    label: str | None = None,
+) -> list[Path]:
+    """Draw all figures of a result into ``directory`` (PNG + SVG each).
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A result (``WearResult.dataset`` or :func:`jointwear.results.read_result`).
+    directory : path-like
+        Output folder (created).
+    magnification : float or "auto"
+        Wear magnification of the polar plot [-].
+    label : str, optional
+        Title prefix.
+
+    Returns
+    -------
+    list of Path
+        The files written.
+    """
+    written: list[Path] = []
+    for kind in FIGURES:
+        fig = plot_dataset(dataset, kind, magnification=magnification, label=label)
+        written += save_figure(fig, directory, kind)
     return written

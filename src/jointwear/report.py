@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from jointwear.io import atomic_write
-from jointwear.plots import _pyplot, _save, depth_unit
+from jointwear.plots import depth_unit, new_figure, save_figure
 
 __all__ = ["figures", "write_report"]
 
@@ -66,11 +66,10 @@ def _polar_and_linear(
 ) -> list[Path]:
     from jointwear.plots import polar_magnification
 
-    plt = _pyplot()
     peak = max(float(depth.max()) for _, depth in curves.values())
     mag = polar_magnification(peak, radius)
     scale, unit = depth_unit(peak)
-    fig = plt.figure(figsize=(11, 4.8))
+    fig = new_figure((11, 4.8))
     ax_p = fig.add_subplot(1, 2, 1, projection="polar")
     ax_l = fig.add_subplot(1, 2, 2)
     first = next(iter(curves.values()))[0]
@@ -92,8 +91,7 @@ def _polar_and_linear(
     ax_l.grid(alpha=0.3)
     ax_l.legend(fontsize=7)
     fig.suptitle(title)
-    paths = _save(fig, directory, name)
-    plt.close(fig)
+    paths = save_figure(fig, directory, name)
     return paths
 
 
@@ -137,12 +135,13 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines = ["# jointwear: reproduction of the NLCP paper", ""]
     lines += [
         "Every row below is computed by `jointwear reproduce`. The paper's units are read as "
-        "SPEC §3 says (its tables print g and mm where kg and m reproduce its results; wear "
+        'the documentation\'s "How we read the paper" says (its tables print g and mm where '
+        "kg and m reproduce its results; wear "
         "peaks are converted from mm, masses from g). Deviation = ours / paper − 1.",
         "",
         f"Machine: {report['machine']}. Total run time: {report['total_runtime_s']:.1f} s.",
         "",
-        "## Calibration (SPEC §4 protocol)",
+        "## Calibration (on one row; every other row is a prediction)",
         "",
     ]
     cal = report.get("calibration")

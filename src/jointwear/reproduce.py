@@ -1,6 +1,6 @@
 """Reproduce the paper: every table row and figure case, calibrated on one row.
 
-Protocol (SPEC §4): the parameters the paper does not give (joint axial length
+Protocol: the parameters the paper does not give (joint axial length
 ``b``, bushing wall thickness ``L``, spring preload) are calibrated on **one**
 row, Table 3, Winkler, 120 rpm, 0.05 mm, one revolution; every other row is
 then a prediction with those values, reported next to the paper with its
@@ -332,9 +332,9 @@ SENSITIVITY: dict[str, dict[str, Any]] = {
     "paper's sliding reading (contact azimuth)": {"simulation.sliding": "contact-azimuth"},
     "constrained Winkler modulus": {"contact.foundation_modulus": "constrained"},
     "spring pushing the slider towards the crank": {"mechanism.spring_mode": "push"},
-    # SPEC §3's hint ("about 20 mm and 2.5 mm fit"): b and L fixed, the preload alone
-    # fitted to the row's mass; the row's peak and width become predictions too
-    "b = 20 mm, L = 2.5 mm (SPEC §3), preload fitted to the mass only": {
+    # the shipped defaults b = 20 mm, L = 2.5 mm fixed, the preload alone fitted to the
+    # row's mass; the row's peak and width become predictions too
+    "b = 20 mm, L = 2.5 mm (the defaults), preload fitted to the mass only": {
         "joint.axial_length": 0.020,
         "joint.bushing_thickness": 0.0025,
     },

@@ -57,12 +57,22 @@ update_contour = false
 """
 
 
-def write_measurement(config: Config, path: Path, seed: int, rotation_deg: float,
-                      overrides: dict[str, object] | None = None) -> None:
+def write_measurement(
+    config: Config,
+    path: Path,
+    seed: int,
+    rotation_deg: float,
+    overrides: dict[str, object] | None = None,
+) -> None:
     truth = config.replace({KD: TRUE_KD, **(overrides or {})})
     depth = Simulation(truth).run().wear_depth
     x, y = synthesize_measurement(
-        depth, truth.bushing_radius, 2000, 0.5e-6, seed, (5e-3, 1e-3),
+        depth,
+        truth.bushing_radius,
+        2000,
+        0.5e-6,
+        seed,
+        (5e-3, 1e-3),
         math.radians(rotation_deg),
     )
     rows = "".join(f"{a * 1e3:.7f},{b * 1e3:.7f}\n" for a, b in zip(x, y, strict=True))
@@ -81,7 +91,9 @@ def files(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     write_measurement(config, folder / "fast.csv", 2, 250.0, {"mechanism.crank_speed": "240 rpm"})
     (folder / "line.csv").write_text("x,y\n" + "".join(f"{i},{2 * i}\n" for i in range(20)))
     return {
-        "config": config_path, "slow": folder / "slow.csv", "fast": folder / "fast.csv",
+        "config": config_path,
+        "slow": folder / "slow.csv",
+        "fast": folder / "fast.csv",
         "line": folder / "line.csv",
     }
 
@@ -114,11 +126,19 @@ def test_json_shape_and_recovered_kd(capsys: pytest.CaptureFixture[str], files: 
 def test_two_cases_with_their_own_speed_and_table(
     capsys: pytest.CaptureFixture[str], files: dict
 ) -> None:
-    main([
-        "calibrate", str(files["config"]), str(files["slow"]),
-        "--case", f"{files['fast']}:mechanism.crank_speed=240 rpm",
-        "--fit", f"{KD}=1e-14..1e-10", "--circle-fit", "robust",
-    ])
+    main(
+        [
+            "calibrate",
+            str(files["config"]),
+            str(files["slow"]),
+            "--case",
+            f"{files['fast']}:mechanism.crank_speed=240 rpm",
+            "--fit",
+            f"{KD}=1e-14..1e-10",
+            "--circle-fit",
+            "robust",
+        ]
+    )
     out = capsys.readouterr().out
     assert "wear_coefficient" in out
     assert "1/Pa" in out
@@ -131,12 +151,19 @@ def test_two_cases_with_their_own_speed_and_table(
 
 def test_paper_row(capsys: pytest.CaptureFixture[str]) -> None:
     data = run_json(
-        capsys, "--paper-row", "table3_winkler_120rpm",
-        "--set", "contact.nodes=90", "--set", "simulation.steps_per_revolution=60",
+        capsys,
+        "--paper-row",
+        "table3_winkler_120rpm",
+        "--set",
+        "contact.nodes=90",
+        "--set",
+        "simulation.steps_per_revolution=60",
     )
     assert data["paper_row"] == "table3_winkler_120rpm"
     assert set(data["parameters"]) == {
-        "joint.axial_length", "joint.bushing_thickness", "mechanism.spring_preload",
+        "joint.axial_length",
+        "joint.bushing_thickness",
+        "mechanism.spring_preload",
     }
     for key in ("peak_wear_depth_m", "wear_width_deg", "wear_mass_kg"):
         assert data["achieved"][key] == pytest.approx(data["targets"][key], rel=1e-4)
@@ -147,22 +174,40 @@ def test_paper_row(capsys: pytest.CaptureFixture[str]) -> None:
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (["{config}", "{slow}", "--fit", "wear_coeficient"],
-         "--fit: unknown parameter 'wear_coeficient'; did you mean 'wear_coefficient'?"),
+        (
+            ["{config}", "{slow}", "--fit", "wear_coeficient"],
+            "--fit: unknown parameter 'wear_coeficient'; did you mean 'wear_coefficient'?",
+        ),
         (["{config}", "{slow}"], "--fit: name at least one parameter"),
         (["{config}", "--fit", "wear_coefficient"], "MEASURED: give at least one"),
         (["{config}", "{line}", "--fit", "wear_coefficient"], "line.csv: not a ring of points"),
-        (["{config}", "{slow}", "--fit", "wear_coefficient", "--units", "um"],
-         "slow.csv: column 'x' is in mm but units 'um'"),
-        (["{config}", "{slow}", "--fit", "wear_coefficient", "--units", "s"],
-         "--units: 's' is not a length unit"),
-        (["{config}", "--case", "{slow}:crank_speed", "--fit", "wear_coefficient"],
-         "file not found"),
+        (
+            ["{config}", "{slow}", "--fit", "wear_coefficient", "--units", "um"],
+            "slow.csv: column 'x' is in mm but units 'um'",
+        ),
+        (
+            ["{config}", "{slow}", "--fit", "wear_coefficient", "--units", "s"],
+            "--units: 's' is not a length unit",
+        ),
+        (
+            ["{config}", "--case", "{slow}:crank_speed", "--fit", "wear_coefficient"],
+            "file not found",
+        ),
         (["{config}", "--case", ":a=1", "--fit", "wear_coefficient"], "--case"),
-        (["{config}", "--case", "{slow}:materials.bushing.wear_coefficient=1e-12",
-          "--fit", "wear_coefficient"], "which is being fitted"),
-        (["{config}", "{slow}", "--fit", "wear_coefficient", "--circle-fit", "lsq"],
-         "--circle-fit: unknown circle fit"),
+        (
+            [
+                "{config}",
+                "--case",
+                "{slow}:materials.bushing.wear_coefficient=1e-12",
+                "--fit",
+                "wear_coefficient",
+            ],
+            "which is being fitted",
+        ),
+        (
+            ["{config}", "{slow}", "--fit", "wear_coefficient", "--circle-fit", "lsq"],
+            "--circle-fit: unknown circle fit",
+        ),
         (["{config}", "{slow}", "--fit", "joint.axial_length=2 kg..3 kg"], "--fit"),
         (["{slow}", "{slow}", "--fit", "wear_coefficient"], "looks like a measurement"),
         (["--paper-row", "table3_winkler"], "did you mean"),
@@ -185,7 +230,7 @@ def test_errors_exit_2_with_one_line(
 
 
 def test_calibrate_contact_laws_to_the_fe_reference(capsys) -> None:
-    """Issue 8: Winkler's stiffness fitted to the FE wall is close to the constrained modulus.
+    """Winkler's stiffness fitted to the FE wall is close to the constrained modulus.
 
     A bonded wall much thinner than the contact arc is a constrained layer: the fitted
     stiffness must sit near E_c / L (not E / L, 1.87 times softer for nu = 0.38).

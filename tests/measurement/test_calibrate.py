@@ -48,13 +48,23 @@ def short_config(paper_config: Config, update: bool, **overrides: object) -> Con
     )
 
 
-def measure(config: Config, seed: int, rotation_deg: float, name: str,
-            overrides: dict[str, object] | None = None) -> MeasuredCase:
+def measure(
+    config: Config,
+    seed: int,
+    rotation_deg: float,
+    name: str,
+    overrides: dict[str, object] | None = None,
+) -> MeasuredCase:
     """Simulate with the true K_d and 'measure' the worn bushing."""
     truth = config.replace({KD: TRUE_KD, **(overrides or {})})
     depth = Simulation(truth).run().wear_depth
     x, y = synthesize_measurement(
-        depth, truth.bushing_radius, 3600, NOISE, seed, (1.0e-3, 4.0e-3),
+        depth,
+        truth.bushing_radius,
+        3600,
+        NOISE,
+        seed,
+        (1.0e-3, 4.0e-3),
         math.radians(rotation_deg),
     )
     return MeasuredCase(name, x, y, dict(overrides or {}))
@@ -100,7 +110,10 @@ def test_two_speeds_calibrate_jointly(paper_config: Config) -> None:
     base = short_config(paper_config, update=True)
     slow = measure(base, 3, 10.0, "120rpm.csv", {"mechanism.crank_speed": "120 rpm"})
     fast = measure(
-        base, 4, 200.0, "240rpm.csv",
+        base,
+        4,
+        200.0,
+        "240rpm.csv",
         {"mechanism.crank_speed": "240 rpm", "simulation.revolutions": 2000},
     )
     start = base.replace({KD: 10 * TRUE_KD})
@@ -137,7 +150,9 @@ def test_parameter_names_units_and_bounds(paper_config: Config) -> None:
     with pytest.raises(ConfigError, match="not a real-valued"):
         resolve_key("contact.nodes", paper_config)
     assert (key_unit(KD), key_unit("joint.axial_length"), key_unit("mechanism.spring_preload")) == (
-        "1/Pa", "m", "N"
+        "1/Pa",
+        "m",
+        "N",
     )
     assert key_unit("contact.exponent") == ""
     kd = resolve_parameter("wear_coefficient", paper_config)
@@ -148,8 +163,11 @@ def test_parameter_names_units_and_bounds(paper_config: Config) -> None:
     bounded = parse_fit("joint.clearance=0.02 mm..0.2 mm", paper_config)
     assert (bounded.lower, bounded.upper) == pytest.approx((0.02e-3, 0.2e-3))
     assert parse_fit("wear_coefficient=1e-14..1e-11", paper_config).upper == 1e-11
-    for bad in ("joint.clearance=0.2 mm", "joint.clearance=1 kg..2 kg",
-                "joint.clearance=2 mm..1 mm"):
+    for bad in (
+        "joint.clearance=0.2 mm",
+        "joint.clearance=1 kg..2 kg",
+        "joint.clearance=2 mm..1 mm",
+    ):
         with pytest.raises(ConfigError):
             parse_fit(bad, paper_config)
     zero = paper_config.replace({"mechanism.spring_preload": 0.0})
@@ -161,7 +179,8 @@ def test_parameter_names_units_and_bounds(paper_config: Config) -> None:
 def test_parse_case() -> None:
     assert parse_case("a.csv") == (Path("a.csv"), {})
     assert parse_case("dir/a.csv:mechanism.crank_speed=240 rpm") == (
-        Path("dir/a.csv"), {"mechanism.crank_speed": "240 rpm"}
+        Path("dir/a.csv"),
+        {"mechanism.crank_speed": "240 rpm"},
     )
     path, overrides = parse_case(
         r"C:\data\b.csv:mechanism.crank_speed=240 rpm,simulation.revolutions=5000"
@@ -212,7 +231,7 @@ def test_replace_lets_derived_defaults_follow(paper_config: Config) -> None:
 def test_paper_row_is_the_reproduction_protocol(
     paper_config: Config, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """Same config, targets and parameters as reproduce.calibrate_on_paper (SPEC §4)."""
+    """Same config, targets and parameters as reproduce.calibrate_on_paper."""
     import jointwear.measurement.calibrate as ours
     import jointwear.reproduce as reproduce
 
@@ -230,7 +249,9 @@ def test_paper_row_is_the_reproduction_protocol(
     assert calls[0] == calls[1]
     assert calls[0][0].contact.nodes == 90
     assert calls[0][1] == {
-        "peak_wear_depth_m": 1.056e-8, "wear_width_deg": 115, "wear_mass_kg": 3.355e-9,
+        "peak_wear_depth_m": 1.056e-8,
+        "wear_width_deg": 115,
+        "wear_mass_kg": 3.355e-9,
     }
     # another row, other parameters, a config of one's own
     own = paper_config.replace({"mechanism.crank_speed": "240 rpm"})

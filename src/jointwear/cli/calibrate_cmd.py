@@ -67,8 +67,8 @@ PaperRowOpt = Annotated[
     typer.Option(
         "--paper-row",
         help="Calibrate on a row of the paper's tables (peak, width, mass), e.g. "
-        "table3_winkler_120rpm (SPEC §4); default parameters axial_length, "
-        "bushing_thickness, spring_preload.",
+        "table3_winkler_120rpm (the reproduction's calibration row); default parameters "
+        "axial_length, bushing_thickness, spring_preload.",
         show_default=False,
     ),
 ]
@@ -111,7 +111,7 @@ def calibrate(
     peak) are minimised over the --fit parameters. Reports the fitted values with
     1-sigma uncertainties. With --paper-row, fits a paper table row's peak, width
     and mass instead (the reproduction's calibration). With --reference fem|persson,
-    fits the contact laws to that exact reference over --loads (issue 8).
+    fits the contact laws to that exact reference over --loads.
     """
     if reference is not None:
         _reference(reference, loads, config, measured, set_, json_)

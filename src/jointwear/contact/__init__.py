@@ -3,14 +3,14 @@
 Every model is selected by name (``CONTACT_MODELS``) or passed as a callable
 ``pressure(penetration)`` (pvlib's pattern), and solved by :func:`solve`:
 
-=====================  =====================================================
-``hertz``              Hertz force law + line-contact profile (eqs. 1-3)
-``winkler``            linear springs, symmetric about the load (eqs. 4-5)
-``asymmetric-winkler`` linear springs on the real contour (eq. 6)
-``nlcp``               power-law springs, cylinder on plane (eq. 7)
-``persson``            reference: exact elastic pin in a hole (circular bushings)
-``fem``                reference: finite elements of the wall in a rigid housing
-=====================  =====================================================
+======================  =====================================================
+``hertz``               Hertz force law + line-contact profile (eqs. 1-3)
+``winkler``             linear springs, symmetric about the load (eqs. 4-5)
+``asymmetric-winkler``  linear springs on the real contour (eq. 6)
+``nlcp``                power-law springs, cylinder on plane (eq. 7)
+``persson``             reference: exact elastic pin in a hole (circular bushings)
+``fem``                 reference: finite elements of the wall in a rigid housing
+======================  =====================================================
 """
 
 from __future__ import annotations
@@ -55,7 +55,7 @@ CONTACT_MODELS.add("hertz", hertz.HertzLaw)
 CONTACT_MODELS.add("winkler", winkler.spring_law)
 CONTACT_MODELS.add("asymmetric-winkler", asymmetric_winkler.spring_law)
 CONTACT_MODELS.add("nlcp", nlcp.spring_law)
-# reference solutions (issue 8): exact elasticity and finite elements
+# reference solutions: exact elasticity and finite elements
 CONTACT_MODELS.add("persson", persson_model)
 CONTACT_MODELS.add("fem", fem_model)
 

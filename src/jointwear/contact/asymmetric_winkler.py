@@ -4,7 +4,7 @@ The Winkler spring law of eq. (4) evaluated on the *real* bushing contour: on
 a worn, non-circular contour the springs in contact are not symmetric about
 the load, and their numbers on each side, ``N = N_L + N_R``, follow from the
 discrete geometry of pin and bushing (penetration along every node's ray).
-This is the model the paper calls "Winkler" in its Tables 3-5.
+This is the model the paper calls "Winkler" in its Tables 3-5, after Li et al. [1]_.
 
 References
 ----------

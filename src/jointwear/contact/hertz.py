@@ -1,6 +1,6 @@
 """Hertz contact of a pin in a hole (paper eqs. 1-3), the non-conformal baseline.
 
-Force law (eq. 1) with the stiffness of eq. (2) for internal contact
+Force law (eq. 1) of Hertz [2]_ with the stiffness of eq. (2) for internal contact
 (radii of opposite curvature, ``R_j > R_i``):
 
 .. math::
@@ -9,7 +9,7 @@ Force law (eq. 1) with the stiffness of eq. (2) for internal contact
         \\left[\\frac{R_i R_j}{R_j - R_i}\\right]^{1/2}, \\qquad
     \\sigma_k = \\frac{1-\\nu_k^2}{\\pi E_k}.
 
-Pressure profile: Hertz line contact of two cylinders (Johnson §4.2) with the
+Pressure profile: Hertz line contact of two cylinders (Johnson [1]_, §4.2) with the
 conformal relative radius ``R* = R_p R_b / (R_b - R_p)`` and load per unit
 length ``F' = F / b``:
 

@@ -2,13 +2,13 @@
 
 The bushing is discretised into springs as in Winkler's model, but each spring
 is a small cylinder-on-plane Hertz contact: the force of a spring grows as a
-power of its penetration,
+power of its penetration [1]_,
 
 .. math:: p_j = \\frac{K \\delta_j^n}{A}, \\qquad
           K = \\frac{4}{3\\pi(\\sigma_p + \\sigma_b)} \\sqrt{R_p}, \\qquad
           \\sigma = \\frac{1-\\nu^2}{\\pi E},
 
-``K`` being eq. (2) with the bushing radius ``R_j -> inf`` (a plane), ``R_p`` the
+``K`` being eq. (2) with the bushing radius ``R_j -> inf`` (a plane, Goldsmith [2]_), ``R_p`` the
 pin radius, ``n = 1.5`` by default and ``A`` the spring area.
 
 Mesh dependence

@@ -50,6 +50,13 @@ class ContactSolution:
     iterations: NDArray[np.int64]
     model: str
 
+    def __repr__(self) -> str:
+        peak = float(self.pressure.max()) if self.pressure.size else 0.0
+        return (
+            f"<ContactSolution {self.model}: {self.pressure.shape[0]} loads x "
+            f"{self.pressure.shape[1]} nodes, peak pressure {peak / 1e6:.4g} MPa>"
+        )
+
     @property
     def loads(self) -> int:
         """Number of loads ``M``."""

@@ -1,6 +1,7 @@
 """Winkler elastic foundation (paper eqs. 4-5).
 
-Each bushing node is an independent linear spring,
+Each bushing node is an independent linear spring (Pödra and Andersson [1]_;
+Johnson [2]_, §5.9),
 
 .. math:: p_j = \\frac{E_w}{L} \\, \\delta_j ,
 

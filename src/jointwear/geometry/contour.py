@@ -37,7 +37,7 @@ FloatArray = NDArray[np.float64]
 
 
 def node_angles(nodes: int) -> FloatArray:
-    """Equally spaced node angles ``2 pi j / N`` [rad], ``j = 0 .. N-1``."""
+    """Equally spaced node angles ``2 pi j / N`` [rad], ``j = 0, 1, ..., N-1``."""
     return 2.0 * np.pi * np.arange(nodes) / nodes
 
 
@@ -135,6 +135,13 @@ class BushingContour:
                 raise GeometryError("bushing contour: wear must have one value per node")
             wear.setflags(write=False)
             object.__setattr__(self, "wear", wear)
+
+    def __repr__(self) -> str:
+        peak = 0.0 if self.wear is None or not self.wear.size else float(self.wear.max())
+        return (
+            f"<BushingContour {self.radius.size} nodes, R0 {self.original_radius * 1e3:.6g} mm, "
+            f"b {self.axial_length * 1e3:.4g} mm, peak wear {peak * 1e6:.4g} µm>"
+        )
 
     # ---------------------------------------------------------------- builders
     @classmethod

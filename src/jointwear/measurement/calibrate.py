@@ -2,7 +2,7 @@
 
 The paper compares its simulation with measured bushings (§3.2); fitting the
 wear coefficient ``K_d`` -- and, if the data allow, the joint's undisclosed
-geometry -- to such measurements is the natural next step (SPEC §5).
+geometry -- to such measurements is the natural next step.
 
 Method
 ------
@@ -44,7 +44,7 @@ times) while it moves by more than a tenth of a node.
 
 Paper protocol: :func:`calibrate_paper_row` fits scalar metrics (peak, width,
 mass) of one of the paper's table rows, the same machinery as
-:func:`jointwear.reproduce.calibrate_on_paper` (SPEC §4).
+:func:`jointwear.reproduce.calibrate_on_paper` (the reproduction protocol).
 """
 
 from __future__ import annotations
@@ -333,7 +333,7 @@ def parse_case(text: str) -> tuple[Path, dict[str, Any]]:
         colon = text.rfind(":", 0, equals)
         if colon <= 0:
             raise ConfigError(f"--case {text!r}: expected FILE:section.key=VALUE[,...]")
-        path, spec = text[:colon], text[colon + 1:]
+        path, spec = text[:colon], text[colon + 1 :]
     if not path.strip():
         raise ConfigError(f"--case {text!r}: no file name")
     overrides: dict[str, Any] = {}
@@ -567,9 +567,7 @@ def calibrate_profiles(
     if str(fit).replace("_", "-") not in CIRCLE_FITS:
         raise ConfigError(f"fit: unknown circle fit {fit!r}{suggest(str(fit), CIRCLE_FITS)}")
     measured = [_Measured(case, fit, profile) for case in cases]
-    start = {
-        p.key: float((initial or {}).get(p.key, _get(config, p.key))) for p in parameters
-    }
+    start = {p.key: float((initial or {}).get(p.key, _get(config, p.key))) for p in parameters}
     start = {p.key: min(max(start[p.key], p.lower), p.upper) for p in parameters}
     # validate every case's config once, with the starting values
     for case in cases:
@@ -593,7 +591,11 @@ def calibrate_profiles(
                         exc, f"{case.name}: the simulation fails at {_describe(values)} ({exc})"
                     ) from None
                 comparison = compare_measurement(
-                    simulated, case.x, case.y, radius, fit=meas.circle(radius),
+                    simulated,
+                    case.x,
+                    case.y,
+                    radius,
+                    fit=meas.circle(radius),
                     profile=meas.profile,
                 )
                 offset = comparison.alignment_offset
@@ -663,9 +665,15 @@ def calibrate_profiles(
         simulations += 1
         comparisons.append(
             compare_measurement(
-                _simulate(cfg), case.x, case.y, radius, fit=meas.circle(radius),
-                profile=meas.profile, align=offset,
-                axial_length=cfg.joint.axial_length, density=cfg.materials.bushing.density,
+                _simulate(cfg),
+                case.x,
+                case.y,
+                radius,
+                fit=meas.circle(radius),
+                profile=meas.profile,
+                align=offset,
+                axial_length=cfg.joint.axial_length,
+                density=cfg.materials.bushing.density,
             )
         )
     return ProfileCalibration(
@@ -690,8 +698,8 @@ def calibrate_paper_row(
     """Calibrate parameters on the peak, width and mass of one of the paper's rows.
 
     With the defaults (``row = "table3_winkler_120rpm"``, the parameters of
-    :data:`jointwear.reproduce.CALIBRATION_PARAMETERS`) this is SPEC §4's
-    protocol, :func:`jointwear.reproduce.calibrate_on_paper`: three metrics,
+    :data:`jointwear.reproduce.CALIBRATION_PARAMETERS`) this is the
+    reproduction's protocol, :func:`jointwear.reproduce.calibrate_on_paper`: three metrics,
     three unknowns, an exact fit (no uncertainty can be estimated).
 
     Parameters
@@ -736,4 +744,3 @@ def calibrate_paper_row(
         "wear_mass_kg": paper.mass,
     }
     return calibrate_metrics(config, targets, list(parameters or CALIBRATION_PARAMETERS))
-

@@ -5,7 +5,7 @@ simulation data". Here both profiles are put on the simulation's node grid
 ``theta_j = 2 pi j / N``, the measured one is rotated onto the simulated one
 (the instrument's frame is not the bushing's), and the difference is reported
 as an RMS error [m] and as differences of the paper's metrics: wear peak,
-wear width (SPEC §4, threshold a fraction of the peak) and wear area / mass.
+wear width (threshold a fraction of the peak, as the reproduction measures it) and wear area / mass.
 
 Two entry points:
 
@@ -122,6 +122,13 @@ class Comparison:
     fit: CircleFit | None = None
     profile_method: str | None = None
     points: int = 0
+
+    def __repr__(self) -> str:
+        return (
+            f"<Comparison {self.nodes} nodes: RMS error {self.rms_error * 1e6:.4g} µm, "
+            f"peak error {100 * self.peak_error_rel:+.3g} %, "
+            f"offset {math.degrees(self.alignment_offset):.4g}°>"
+        )
 
     @property
     def nodes(self) -> int:
@@ -328,7 +335,9 @@ def best_offset(
         return -float(np.dot(seen, ref)) / norm if norm > 0 else 0.0
 
     result = minimize_scalar(
-        negative_correlation, bounds=(coarse - spacing, coarse + spacing), method="bounded",
+        negative_correlation,
+        bounds=(coarse - spacing, coarse + spacing),
+        method="bounded",
         options={"xatol": 1e-7},
     )
     better = negative_correlation(float(result.x)) <= negative_correlation(coarse)
@@ -584,9 +593,8 @@ def plot_comparison(
     list of Path
         The files written.
     """
-    from jointwear.plots import _pyplot, _save, polar_magnification
+    from jointwear.plots import new_figure, polar_magnification, save_figure
 
-    plt = _pyplot()
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     r0 = comparison.original_radius
@@ -598,9 +606,7 @@ def plot_comparison(
         px = np.asarray(x, dtype=float) - comparison.fit.center_x
         py = np.asarray(y, dtype=float) - comparison.fit.center_y
         step = max(1, px.size // 3000)
-        points_angle = np.mod(
-            np.arctan2(py, px)[::step] - comparison.alignment_offset, 2 * np.pi
-        )
+        points_angle = np.mod(np.arctan2(py, px)[::step] - comparison.alignment_offset, 2 * np.pi)
         points_depth = np.hypot(px, py)[::step] - r0
     title = f"{label}: " if label else ""
     written: list[Path] = []
@@ -610,11 +616,18 @@ def plot_comparison(
     def ring(depth: FloatArray) -> FloatArray:
         return (r0 + mag * np.append(depth, depth[0])) * 1e3
 
-    fig, ax = plt.subplots(subplot_kw={"projection": "polar"}, figsize=(5.5, 5.5))
+    fig = new_figure((5.5, 5.5))
+    ax = fig.add_subplot(projection="polar")
     ax.plot(closed, np.full_like(closed, r0 * 1e3), "k--", lw=1, label="original bushing")
     if points_angle is not None and points_depth is not None:
-        ax.plot(points_angle, (r0 + mag * points_depth) * 1e3, ".", ms=1.5, color="0.6",
-                label="measured points")
+        ax.plot(
+            points_angle,
+            (r0 + mag * points_depth) * 1e3,
+            ".",
+            ms=1.5,
+            color="0.6",
+            label="measured points",
+        )
     ax.plot(closed, ring(comparison.simulated), lw=1.6, color="tab:blue", label="simulated")
     ax.plot(closed, ring(comparison.measured), "--", lw=1.2, color="tab:orange", label="measured")
     # a roundness chart: the radial axis starts at 0.8 R0 so that the wear shows
@@ -622,19 +635,22 @@ def plot_comparison(
     ax.set_ylim(0.8 * r0 * 1e3, 1.02 * outer)
     ax.set_title(f"{title}worn contour, wear x{mag:g} [mm]\n(radial axis from 0.8 R0)")
     ax.legend(loc="lower left", fontsize=7, bbox_to_anchor=(-0.1, -0.12), ncol=2)
-    written += _save(fig, directory, "compare_polar")
-    plt.close(fig)
+    written += save_figure(fig, directory, "compare_polar")
 
-    fig, (ax1, ax2) = plt.subplots(
-        2, 1, sharex=True, figsize=(7, 5.5), gridspec_kw={"height_ratios": [3, 1]}
-    )
+    fig = new_figure((7, 5.5))
+    ax1, ax2 = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 1]})
     degrees = np.degrees(theta)
     if points_angle is not None and points_depth is not None:
-        ax1.plot(np.degrees(points_angle), points_depth * 1e6, ".", ms=1.5, color="0.6",
-                 label="measured points")
+        ax1.plot(
+            np.degrees(points_angle),
+            points_depth * 1e6,
+            ".",
+            ms=1.5,
+            color="0.6",
+            label="measured points",
+        )
     ax1.plot(degrees, comparison.simulated * 1e6, lw=1.6, color="tab:blue", label="simulated")
-    ax1.plot(degrees, comparison.measured * 1e6, "--", lw=1.2, color="tab:orange",
-             label="measured")
+    ax1.plot(degrees, comparison.measured * 1e6, "--", lw=1.2, color="tab:orange", label="measured")
     ax1.set_ylabel("wear depth [µm]")
     ax1.grid(alpha=0.3)
     ax1.legend(fontsize=7)
@@ -648,6 +664,5 @@ def plot_comparison(
     ax2.set_xlabel("bushing angle θ [deg]")
     ax2.set_xlim(0, 360)
     ax2.grid(alpha=0.3)
-    written += _save(fig, directory, "compare_profile")
-    plt.close(fig)
+    written += save_figure(fig, directory, "compare_profile")
     return written

@@ -188,7 +188,7 @@ def align_profiles(reference: ArrayLike, measured: ArrayLike) -> tuple[float, Fl
 
 @dataclass(frozen=True)
 class WearMetrics:
-    """Wear metrics of a profile, as the paper reports them (SPEC §4).
+    """Wear metrics of a profile, as the paper reports them.
 
     Parameters
     ----------

@@ -1,4 +1,4 @@
-"""Reference solutions for the contact pressure models (issue 8).
+"""Reference solutions for the contact pressure models (exact elasticity and finite elements).
 
 The paper compares NLCP with Winkler but neither with an exact solution. This
 package provides two references with the contact-model interface

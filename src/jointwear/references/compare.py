@@ -4,8 +4,8 @@ For each load (pin pressing at azimuth 0 on the unworn bushing) every model
 gives its contact half-angle, peak pressure and *approach*: the spring models'
 penetration of the compression centre, and for the references the comparable
 quantity, the pin displacement along the load minus the clearance.
-:func:`plot_pressure` draws ``p(theta)`` of all models side by side, one panel
-per load.
+:func:`pressure_figure` draws ``p(theta)`` of all models side by side, one panel
+per load, and :func:`plot_pressure` writes it.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -22,9 +22,18 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.contact import ContactParameters, ContactSolution, solve
 from jointwear.errors import ConfigError, JointwearError
 from jointwear.geometry.contour import BushingContour, Pin
-from jointwear.io import atomic_path
 
-__all__ = ["DEFAULT_MODELS", "METRICS", "ModelComparison", "compare_models", "plot_pressure"]
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+__all__ = [
+    "DEFAULT_MODELS",
+    "METRICS",
+    "ModelComparison",
+    "compare_models",
+    "plot_pressure",
+    "pressure_figure",
+]
 
 FloatArray = NDArray[np.float64]
 
@@ -186,19 +195,33 @@ def plot_pressure(
     list of Path
         The written files.
     """
-    import matplotlib
+    from jointwear.plots import save_figure
 
-    matplotlib.use("Agg", force=False)
-    import matplotlib.pyplot as plt
+    fig = pressure_figure(comparison)
+    return save_figure(fig, directory, name)
 
-    directory = Path(directory)
+
+def pressure_figure(comparison: ModelComparison) -> Figure:
+    """``p(theta)`` of every model side by side, one panel per load.
+
+    Parameters
+    ----------
+    comparison : ModelComparison
+        Result of :func:`compare_models`.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (built without pyplot; nothing is written).
+    """
+    from jointwear.plots import new_figure
+
     loads = comparison.loads_n
     count = loads.size
     columns = min(count, 4)
     rows = math.ceil(count / columns)
-    fig, axes = plt.subplots(
-        rows, columns, figsize=(3.6 * columns, 3.0 * rows), squeeze=False, sharey=False
-    )
+    fig = new_figure((3.6 * columns, 3.0 * rows))
+    axes = fig.subplots(rows, columns, squeeze=False, sharey=False)
     theta = comparison.contour.theta
     phi = np.degrees(np.angle(np.exp(1j * theta)))
     order = np.argsort(phi)
@@ -226,12 +249,4 @@ def plot_pressure(
     handles, labels = axes[0][0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 6), frameon=False)
     fig.tight_layout(rect=(0, 0.08 if rows == 1 else 0.05, 1, 1))
-    paths = []
-    directory.mkdir(parents=True, exist_ok=True)
-    for suffix in ("png", "svg"):
-        path = directory / f"{name}.{suffix}"
-        with atomic_path(path) as tmp:
-            fig.savefig(tmp, format=suffix, dpi=130, bbox_inches="tight")
-        paths.append(path)
-    plt.close(fig)
-    return paths
+    return fig

@@ -13,7 +13,7 @@ Both bodies are loaded on their circular boundary by the same normal pressure
 ``p(theta) = p_0 + sum_k p_k cos(k theta)`` (symmetric about the load line).
 For a circular boundary, each Fourier mode of pressure produces the same mode
 of radial displacement, ``u_k = U_k p_k``; the mode compliances ``U_k`` follow
-exactly from the Kolosov-Muskhelishvili potentials (``kappa = 3 - 4 nu``,
+exactly from the Kolosov-Muskhelishvili potentials [3]_ (``kappa = 3 - 4 nu``,
 ``mu`` shear modulus):
 
 * pin (disk, radius ``R``): ``U_0 = -(kappa-1) R / (4 mu)``,
@@ -82,7 +82,7 @@ finite Hilbert transform whose bounded solution is elementary:
 (compare Persson [1]_ and Ciavarella & Decuzzi [2]_, whose closed form for
 elastic similarity has this structure); the two moments ``p_0`` and ``p_1`` of
 ``p`` close the system and give ``P = pi R_b p_1`` as a function of ``alpha``.
-For small ``alpha`` both shapes tend to ``sqrt(alpha^2 - theta^2)``, Hertz.
+For small ``alpha`` both shapes tend to ``sqrt(alpha^2 - theta^2)``, Hertz [4]_.
 
 References
 ----------

@@ -1,7 +1,7 @@
 """Sliding distance at the pin-bushing interface per time step (stage 3a).
 
 Archard's law needs the distance the surfaces slide over each other. Two
-readings are offered (SPEC §1):
+readings are offered:
 
 * ``"relative-rotation"`` (default, kinematically correct): the pin turns
   relative to the bushing by ``d(phi_pin - phi_bushing)``, so a point of the

@@ -1,0 +1,99 @@
+"""Short text and HTML views of results, for the REPL and notebooks.
+
+``WearResult.__repr__`` and ``WearResult._repr_html_`` are these functions: a
+result holds a whole dataset and config, and the default dataclass repr would
+print all of it.
+"""
+
+from __future__ import annotations
+
+import html
+from typing import Any
+
+from jointwear.plots import depth_unit
+
+__all__ = ["array_summary", "wear_result_html", "wear_result_repr"]
+
+
+def array_summary(values: Any) -> str:
+    """``shape`` of an array, or ``None``, for compact reprs.
+
+    Parameters
+    ----------
+    values : array_like or None
+        Any array.
+
+    Returns
+    -------
+    str
+        E.g. ``"array(4, 360)"``.
+    """
+    if values is None:
+        return "None"
+    shape = getattr(values, "shape", None)
+    if shape is None:
+        return type(values).__name__
+    return f"array({', '.join(str(n) for n in shape)})" if shape else "array()"
+
+
+def _rows(result: Any) -> list[tuple[str, str]]:
+    summary = result.summary()
+    peak = summary["peak_wear_depth_m"]
+    scale, unit = depth_unit(peak)
+    mass_mg = summary["wear_mass_kg"] * 1e6
+    return [
+        ("contact model", str(summary["contact_model"])),
+        ("revolutions", f"{summary['revolutions']} ({summary['contour_updates']} contour updates)"),
+        ("wear peak", f"{peak / scale:.4g} {unit}"),
+        ("wear width", f"{summary['wear_width_deg']:.4g}°"),
+        ("wear mass", f"{mass_mg:.4g} mg"),
+        ("wear volume", f"{summary['wear_volume_m3'] * 1e9:.4g} mm³"),
+        ("run time", f"{summary['runtime_s']:.3g} s"),
+    ]
+
+
+def wear_result_repr(result: Any) -> str:
+    """One line: model, revolutions and the wear metrics of a result.
+
+    Parameters
+    ----------
+    result : WearResult
+        A simulation result.
+
+    Returns
+    -------
+    str
+        E.g. ``<WearResult nlcp, 1 r: peak 10.85 nm, width 115.9°, mass 0.003346 mg>``.
+    """
+    rows = dict(_rows(result))
+    revolutions = rows["revolutions"].split(" ")[0]
+    return (
+        f"<WearResult {rows['contact model']}, {revolutions} r: peak {rows['wear peak']}, "
+        f"width {rows['wear width']}, mass {rows['wear mass']}>"
+    )
+
+
+def wear_result_html(result: Any) -> str:
+    """An HTML table of a result's metrics, for notebooks.
+
+    Parameters
+    ----------
+    result : WearResult
+        A simulation result.
+
+    Returns
+    -------
+    str
+        A ``<table>`` with one row per metric; the dataset is ``result.dataset``.
+    """
+    body = "".join(
+        f"<tr><th style='text-align:left'>{html.escape(name)}</th>"
+        f"<td style='text-align:left'>{html.escape(value)}</td></tr>"
+        for name, value in _rows(result)
+    )
+    return (
+        "<div><strong>WearResult</strong>"
+        f"<table>{body}</table>"
+        "<small>result.dataset: profiles, loads and pressures (xarray); "
+        "result.plot(kind): figures</small></div>"
+    )
