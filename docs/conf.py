@@ -30,7 +30,6 @@ extensions = [
     "numpydoc",
     "myst_parser",
     "sphinx_gallery.gen_gallery",
-    "docstring_fixes",
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}

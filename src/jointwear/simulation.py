@@ -114,6 +114,31 @@ class WearResult:
         out["runtime_s"] = self.runtime
         return out
 
+    def __repr__(self) -> str:
+        from jointwear.display import wear_result_repr
+
+        return wear_result_repr(self)
+
+    def _repr_html_(self) -> str:
+        from jointwear.display import wear_result_html
+
+        return wear_result_html(self)
+
+    def plot(self, kind: str = "wear_polar", **kwargs: Any) -> Any:
+        """One figure of the result, a matplotlib Figure (:func:`jointwear.plots.plot_wear_result`).
+
+        Parameters
+        ----------
+        kind : str
+            ``"wear_polar"``, ``"wear_profiles"``, ``"pressure"``, ``"joint_load"`` or
+            ``"wear_history"``.
+        **kwargs
+            Passed to :func:`jointwear.plots.plot_wear_result`.
+        """
+        from jointwear.plots import plot_wear_result
+
+        return plot_wear_result(self, kind, **kwargs)
+
     def to_netcdf(self, path) -> None:
         """Write the dataset as netCDF (h5netcdf), atomically."""
         from jointwear.results import write_netcdf

@@ -17,14 +17,9 @@ COMMANDS = [
     "models",
     "plot",
     "reproduce",
-    pytest.param(
-        "run",
-        marks=pytest.mark.xfail(
-            reason="--checkpoint-every's help names simulation.checkpoint_every, one word wider "
-            "than the help column at 80 columns; shortened where the command is defined",
-            strict=False,
-        ),
-    ),
+    "run",
+    "life",
+    "mechanisms",
     "sweep",
 ]
 

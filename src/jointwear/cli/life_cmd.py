@@ -17,9 +17,10 @@ SampleOpt = Annotated[
     list[str] | None,
     typer.Option(
         "--sample",
-        help="An uncertain input: KEY=NAME(param=value, ...), e.g. "
-        "'materials.bushing.wear_coefficient=lognormal(median=5e-13 m^2/N, sigma=0.4)' "
-        "(uniform, loguniform, normal, lognormal, choice). Repeat.",
+        help="An uncertain input KEY=NAME(param=value, ...): uniform(low, high), "
+        "loguniform(low, high), normal(mean, std), lognormal(median, sigma), "
+        "choice(values); e.g. --sample 'joint.clearance=uniform(low=0.04 mm, "
+        "high=0.06 mm)'. Repeat.",
         show_default=False,
     ),
 ]

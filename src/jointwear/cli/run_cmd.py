@@ -142,8 +142,8 @@ CheckpointOpt = Annotated[
     int | None,
     typer.Option(
         "--checkpoint-every",
-        help="Save the state into --out every K revolutions (sets simulation.checkpoint_every; "
-        "0 = off); continue a killed run with --resume OUT.",
+        help="Save the state into --out every K revolutions (0 = off; sets the config's "
+        "checkpoint_every); continue a killed run with --resume OUT.",
         show_default=False,
     ),
 ]

@@ -94,7 +94,7 @@ class Diagnostic:
 class LoadCycle:
     """Load on a clearance joint over one period of its motion.
 
-    Step ``k`` (``k = 0 .. N-1``) starts at ``time[k]`` and ends at ``time[k+1]``
+    Step ``k`` (``k = 0, 1, ..., N-1``) starts at ``time[k]`` and ends at ``time[k+1]``
     (``period`` for the last step). Forces and directions are sampled at the start
     of the step; ``relative_rotation`` is the increment over the step. Steps need
     not be equally long.

@@ -17,11 +17,14 @@ with ``delta_dot^(-)`` the normal approach velocity at the start of the contact
 (recorded at the contact-start event) and ``chi`` the hysteresis factor
 (:func:`hysteresis_factor`):
 
-============================  ===========================  =====================
-``lankarani-nikravesh`` [1]_  ``chi = 3 (1 - c_e^2) / 4``  derived for ``c_e -> 1``
-``hunt-crossley`` [2]_ [3]_   ``chi = 3 (1 - c_e) / 2``    derived for ``c_e -> 1``
-``flores`` [4]_               ``chi = 8 (1 - c_e) / (5 c_e)``  any ``c_e`` (soft materials)
-============================  ===========================  =====================
+=======================  ===============================  ============================
+``lankarani-nikravesh``  ``chi = 3 (1 - c_e^2) / 4``      derived for ``c_e -> 1``
+``hunt-crossley``        ``chi = 3 (1 - c_e) / 2``        derived for ``c_e -> 1``
+``flores``               ``chi = 8 (1 - c_e) / (5 c_e)``  any ``c_e`` (soft materials)
+=======================  ===============================  ============================
+
+(Lankarani and Nikravesh [1]_, Hunt and Crossley [2]_ with Marhefka and Orin [3]_,
+Flores et al. [4]_.)
 
 ``K`` is eq. (2) of the NLCP paper with ``R_i = R_p`` (pin) and ``R_j = R_b``
 (bushing, internal contact, :func:`pin_in_hole_stiffness`), ``n = 1.5``.

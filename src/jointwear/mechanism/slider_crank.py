@@ -45,7 +45,7 @@ carries (see :func:`solve_massless_link` for why this matters).
 **Spring** (:func:`spring_force`): stiffness ``K_s``; its reference positions are
 the dead centres of the ideal mechanism, ``x_max = l1 + l2`` and
 ``x_min = l2 - l1``, so ``spring_preload`` is the smallest spring force over
-the ideal stroke (SPEC section 3).
+the ideal stroke (see docs/reading-the-paper.md).
 """
 
 from __future__ import annotations
@@ -241,7 +241,7 @@ class MasslessLinkSolution(NamedTuple):
 
 
 def crank_angle_grid(steps: int) -> FloatArray:
-    """Crank angles ``2 pi k / N``, ``k = 0 .. N-1``, of one revolution [rad].
+    """Crank angles ``2 pi k / N``, ``k = 0, 1, ..., N-1``, of one revolution [rad].
 
     Parameters
     ----------
@@ -553,7 +553,7 @@ def spectral_derivative(
     Parameters
     ----------
     samples : array_like, shape (..., N)
-        Signal values at ``t_k = k T / N``, ``k = 0 .. N-1``, along the last axis.
+        Signal values at ``t_k = k T / N``, ``k = 0, 1, ..., N-1``, along the last axis.
     angular_frequency : float
         ``2 pi / T`` of the period ``T`` [rad/s].
     order : int
