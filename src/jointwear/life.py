@@ -231,19 +231,15 @@ def run_life(plan: SweepPlan, out: str | Path, **sweep_options: Any) -> LifeResu
         key: [plan.columns()[keys.index(key)].si(v) for v in values]
         for key, values in columns.items()
     }
-    statistics = life_statistics(
-        result.records, inputs_si, plan.base.simulation.revolutions
-    )
+    statistics = life_statistics(result.records, inputs_si, plan.base.simulation.revolutions)
     ok = [i for i, r in enumerate(result.records) if r.get("status") == "ok"]
     lives = np.array(
-        [
-            result.records[i]["metrics"].get("life_revolutions") or math.inf
-            for i in ok
-        ],
+        [result.records[i]["metrics"].get("life_revolutions") or math.inf for i in ok],
         dtype=float,
     )
-    inputs = {key: np.asarray([values[i] for i in ok], dtype=float) for key, values in
-              inputs_si.items()}
+    inputs = {
+        key: np.asarray([values[i] for i in ok], dtype=float) for key, values in inputs_si.items()
+    }
     write_json(Path(out) / "life.json", {**statistics, "runtime_s": result.runtime})
     return LifeResult(result, statistics, lives, inputs)
 

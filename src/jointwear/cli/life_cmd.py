@@ -63,15 +63,21 @@ def life(
     if json_:
         emit_json(summary)
         return
-    table = Table(title=f"life of {config.name}: {summary['cases']} cases, "
-                  f"{summary['censored']} without a limit reached, {summary['failed']} failed")
+    table = Table(
+        title=f"life of {config.name}: {summary['cases']} cases, "
+        f"{summary['censored']} without a limit reached, {summary['failed']} failed"
+    )
     table.add_column("")
     for name in ("p5", "median", "p95"):
         table.add_column(name, justify="right")
     revs, hours = summary["life_revolutions"], summary["life_hours"]
-    table.add_row("revolutions", *(
-        f"{'>' if revs.get(f'{n}_lower_bound') else ''}{revs.get(n, float('nan')):.4g}"
-        for n in ("p5", "median", "p95")))
+    table.add_row(
+        "revolutions",
+        *(
+            f"{'>' if revs.get(f'{n}_lower_bound') else ''}{revs.get(n, float('nan')):.4g}"
+            for n in ("p5", "median", "p95")
+        ),
+    )
     table.add_row("hours", *(f"{hours.get(n, float('nan')):.4g}" for n in ("p5", "median", "p95")))
     console.print(table)
     if summary["sensitivity"]:
