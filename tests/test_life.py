@@ -137,6 +137,9 @@ def test_life_cli(capsys, paper_config_path: Path, tmp_path: Path) -> None:
     ],
 )
 def test_bad_samples(paper_config: Config, text: str, message: str) -> None:
-    with pytest.raises(ConfigError, match=message):
+    def plan(text: str):
         key, table = parse_distribution(text)
-        life_plan(paper_config, {key: table}, 10)
+        return life_plan(paper_config, {key: table}, 10)
+
+    with pytest.raises(ConfigError, match=message):
+        plan(text)
