@@ -239,6 +239,7 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines += _trend_notes(report["trends"], report.get("sensitivity") or [])
 
     lines += _sensitivity_lines(report)
+    lines += _feedback_lines(report.get("feedback"))
 
     others = [n for n in report["cases"] if n not in PAPER_ROWS]
     if others:
@@ -265,6 +266,55 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     lines += ["## Notes", "", _NOTES]
     with atomic_write(path, encoding="utf-8") as handle:
         handle.write("\n".join(lines) + "\n")
+
+
+def _feedback_lines(feedback: dict[str, Any] | None) -> list[str]:
+    """The section on wear feedback: coupled dynamics and clearance with impacts."""
+    if not feedback:
+        return []
+    a, b = feedback["coupling"]["uncoupled"], feedback["coupling"]["coupled"]
+    lines = [
+        "## Wear that feeds back into the dynamics",
+        "",
+        "Table 5's NLCP case run on to 10^5 revolutions, with the load of the unworn joint "
+        "throughout (the paper's procedure) and with the dynamics solved again on the worn "
+        "joint (`simulation.dynamics_update = \"adaptive\"`). The pulling spring keeps the "
+        "pin on the wall, so the worn joint's load hardly moves: "
+        f"peak {_pct(b['peak_wear_depth_m'] / a['peak_wear_depth_m'] - 1)}, "
+        f"mass {_pct(b['wear_mass_kg'] / a['wear_mass_kg'] - 1)} "
+        f"({b['dynamics_updates']} solves of the dynamics).",
+        "",
+        "| run | peak [mm] | width [°] | mass [g] | dynamics solves |",
+        "|---|---|---|---|---|",
+    ]
+    for name, s in (("load of the unworn joint", a), ("coupled (adaptive)", b)):
+        lines.append(
+            f"| {name} | {s['peak_wear_depth_m'] * 1e3:.4g} | {s['wear_width_deg']:.4g} | "
+            f"{s['wear_mass_kg'] * 1e3:.4g} | {s['dynamics_updates']} |"
+        )
+    clearances = None
+    rows = []
+    for spring, data in feedback["clearance"].items():
+        clearances = data["clearance_m"]
+        for model in ("massless-link", "contact-impact"):
+            cells = " | ".join(
+                f"{m * 1e9:.4g} ({int(h)})"
+                for m, h in zip(data[f"{model}_mass_kg"], data[f"{model}_impacts"], strict=True)
+            )
+            rows.append(f"| {spring} | {model} | {cells} |")
+    lines += [
+        "",
+        "The paper's claim that a larger clearance wears more mass (240 rpm, one revolution), "
+        "revisited with the contact-impact dynamics: worn mass in µg, impacts per revolution "
+        "in brackets. Under continuous contact Archard's law gives slightly *less* mass at a "
+        "larger clearance (the contact arc narrows); only impacts can reverse that.",
+        "",
+        "| spring | dynamics | " + " | ".join(f"{c * 1e3:g} mm" for c in clearances or []) + " |",
+        "|---|---|" + "---|" * len(clearances or []),
+        *rows,
+        "",
+    ]
+    return lines
 
 
 def _sensitivity_lines(report: dict[str, Any]) -> list[str]:

@@ -526,9 +526,11 @@ class JointContact:
         slip = -ny * vx + nx * vy + self.friction_arm * spin
         if elastic <= 0.0:
             return 0.0, 0.0, 0.0, 0.0, nx, ny, delta, slip
-        normal = elastic * (
-            1.0 + self.hysteresis * rate / max(impact_velocity, self.impact_velocity_floor)
-        )
+        # a sample that the event search put just outside a contact has no approach
+        # velocity (nan): the floor stands in for it
+        floor = self.impact_velocity_floor
+        approach = impact_velocity if impact_velocity > floor else floor
+        normal = elastic * (1.0 + self.hysteresis * rate / approach)
         normal = max(normal, 0.0)
         tangential = 0.0
         if self.friction_coefficient > 0.0 and normal > 0.0:
