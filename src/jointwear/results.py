@@ -19,7 +19,7 @@ import xarray as xr
 
 from jointwear.errors import DataError
 from jointwear.io import atomic_path, atomic_write
-from jointwear.tribology.metrics import WEAR_METRICS
+from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS
 
 if TYPE_CHECKING:
     from jointwear.config import Config
@@ -42,7 +42,7 @@ __all__ = [
 PRESSURE_SNAPSHOTS = 72
 
 _HISTORY_META = {
-    **{m.name: (m.units, m.long_name) for m in WEAR_METRICS},
+    **{m.name: (m.units, m.long_name) for m in (*WEAR_METRICS, *PIN_METRICS)},
     "contact_iterations": ("1", "contact balance iterations of the revolution"),
 }
 _DYNAMICS_META = {
@@ -134,6 +134,10 @@ def build_dataset(
             "mean contact half-angle on the unworn bushing",
         ),
     }
+    if state.pin_wear_depth is not None:
+        data_vars["pin_wear_depth"] = _var(
+            ("theta",), state.pin_wear_depth, "m", "final wear depth of the pin, pin frame"
+        )
     history = state.history_columns
     for name, values in history.items():
         if name == "revolution":
@@ -258,7 +262,7 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
     """
     out: dict[str, Any] = {
         m.key: float(dataset[m.name].values[-1]) * m.scale
-        for m in WEAR_METRICS
+        for m in (*WEAR_METRICS, *PIN_METRICS)
         if m.key is not None and m.name in dataset
     }
     revolutions = int(dataset["update_revolution"].values[-1])
@@ -337,7 +341,7 @@ def write_metrics_csv(dataset: xr.Dataset, path: str | Path) -> None:
         for index, (joint, single) in enumerate(joints.items()):
             columns = [("revolution", single["update_revolution"].values, 1.0)] + [
                 (m.header, single[m.name].values, m.scale)
-                for m in WEAR_METRICS
+                for m in (*WEAR_METRICS, *PIN_METRICS)
                 if m.name in single
             ]
             if index == 0:

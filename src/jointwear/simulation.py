@@ -48,7 +48,7 @@ from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
 from jointwear.state import SimulationState
-from jointwear.tribology.metrics import evaluate_metrics
+from jointwear.tribology.metrics import evaluate_metrics, pin_metrics
 from jointwear.tribology.sliding import SLIDING_MODELS
 from jointwear.tribology.wear_laws import WearLaw
 from jointwear.tribology.wear_laws import wear_law as wear_law_of
@@ -176,6 +176,13 @@ class WearStep:
     solution: ContactSolution
     contour: BushingContour
     error: float = 0.0
+    pin_rate: FloatArray | None = None
+
+    def pin_depth_at(self, revolutions: int) -> FloatArray | None:
+        """The pin's wear depth ``revolutions`` into the interval [m] (explicit scheme)."""
+        if self.pin_rate is None:
+            return self.base.pin_wear_depth
+        return self.base.pin_wear_depth + self.pin_rate * revolutions
 
     def depth_at(self, revolutions: int) -> FloatArray:
         """Wear depth ``revolutions`` into the interval [m].
@@ -245,6 +252,14 @@ class Simulation:
             self._cycles = {joint or load_cycle.joint: load_cycle}
             joint = joint or load_cycle.joint
         self.joint = joint
+        self.pin_wear_coefficient = config.materials.pin.wear_coefficient
+        if self.pin_wear_coefficient is not None and config.simulation.update_every == "adaptive":
+            from jointwear.errors import ConfigError
+
+            raise ConfigError(
+                "materials.pin.wear_coefficient: a wearing pin is updated with a fixed "
+                "simulation.update_every (adaptive updating integrates the bushing only)"
+            )
         self.life = LifeLimits.from_config(config)
         self.schedule = DynamicsSchedule.from_config(config)
         self._warned: set[str] = set()
@@ -282,7 +297,43 @@ class Simulation:
 
     def initial_state(self) -> SimulationState:
         """State before the first revolution."""
-        return SimulationState(revolution=0, wear_depth=np.zeros(self.config.contact.nodes))
+        nodes = self.config.contact.nodes
+        pin = None if self.pin_wear_coefficient is None else np.zeros(nodes)
+        return SimulationState(revolution=0, wear_depth=np.zeros(nodes), pin_wear_depth=pin)
+
+    @property
+    def pin_rotation(self) -> FloatArray:
+        """Rotation of the pin against the bushing at the start of each step [rad].
+
+        Raises
+        ------
+        ConfigError
+            If the pin wears and turns by other than whole turns per cycle (its scar
+            would then be smeared over the cycles of an update interval).
+        """
+        rotation = self.load_cycle.rotation
+        turns = rotation[-1] / (2.0 * np.pi)
+        if abs(turns - round(turns)) > 1e-9:
+            from jointwear.errors import ConfigError
+
+            raise ConfigError(
+                f"materials.pin.wear_coefficient: the pin turns {turns:.6g} times per cycle; "
+                f"a wearing pin needs whole turns (its scar must come back to the same place)"
+            )
+        return rotation[:-1]
+
+    def pin_wear_per_revolution(self, solution: ContactSolution, contour: BushingContour):
+        """Stage 3b on the pin: its wear depth per revolution in its own frame [m]."""
+        from jointwear.tribology.pin_wear import pin_wear_depth
+
+        return pin_wear_depth(
+            solution.pressure,
+            self.sliding_distance,
+            self.pin_wear_coefficient,
+            contour.radius,
+            self.config.joint.pin_radius,
+            self.pin_rotation,
+        )
 
     def contact(
         self, contour: BushingContour, state: SimulationState | None = None
@@ -305,6 +356,11 @@ class Simulation:
             if state.warm_slope is not None and ahead:
                 guess = guess + ahead * state.warm_slope
             warm = {"initial_offset": guess, "window": state.window}
+        options = {"balance": cfg.balance, "tolerance": cfg.tolerance,
+                   "max_iterations": cfg.max_iterations}
+        pin = None if state is None else state.pin_wear_depth
+        if pin is not None and np.any(pin):
+            return self._solve_worn_pin(contour, pin, options)
         return solve_contact(
             contour,
             self.pin,
@@ -312,11 +368,40 @@ class Simulation:
             self.load_cycle.azimuth,
             self.law,
             self.parameters,
-            balance=cfg.balance,
-            tolerance=cfg.tolerance,
-            max_iterations=cfg.max_iterations,
+            **options,
             **warm,
         )
+
+    def _solve_worn_pin(
+        self, contour: BushingContour, pin_depth: FloatArray, options: dict[str, Any]
+    ) -> ContactSolution:
+        """Each step on its own contour: the bushing plus the pin's wear facing it."""
+        from jointwear.tribology.pin_wear import pin_on_bushing
+
+        cycle = self.load_cycle
+        facing = pin_on_bushing(pin_depth, self.pin_rotation)
+        joint = self.config.joint
+        parts = [
+            solve_contact(
+                BushingContour.from_wear_profile(
+                    joint.bushing_radius, contour.wear_depth + facing[k], joint.axial_length
+                ),
+                self.pin,
+                cycle.load[k : k + 1],
+                cycle.azimuth[k : k + 1],
+                self.law,
+                self.parameters,
+                **options,
+            )
+            for k in range(cycle.steps)
+        ]
+        fields = {
+            name: np.concatenate([getattr(part, name) for part in parts])
+            for name in ("pressure", "eccentricity", "penetration", "normal_force",
+                         "tangential_force", "half_angle_left", "half_angle_right",
+                         "springs_left", "springs_right", "iterations")
+        }
+        return ContactSolution(**fields, model=parts[0].model)
 
     def wear_per_revolution(self, solution: ContactSolution) -> FloatArray:
         """Stage 3b: wear depth of one revolution at every node, by the wear law [m]."""
@@ -401,7 +486,11 @@ class Simulation:
         solution = self.contact(contour, state)
         rate = self.wear_per_revolution(solution)
         interval = min(int(self.config.simulation.update_every), remaining)
-        return WearStep(state, interval, rate, None, solution, contour)
+        pin_rate = (
+            None if state.pin_wear_depth is None
+            else self.pin_wear_per_revolution(solution, contour)
+        )
+        return WearStep(state, interval, rate, None, solution, contour, pin_rate=pin_rate)
 
     def _adaptive_step(self, state: SimulationState, remaining: int) -> WearStep:
         """One adaptive contour update: a jump of many revolutions, error-controlled.
@@ -500,6 +589,8 @@ class Simulation:
             ),
             stopped_by=stopped_by,
             updates_since_dynamics=base.updates_since_dynamics + 1,
+            pin_wear_depth=step.pin_depth_at(interval),
+            pin_wear_rate=step.pin_rate,
             **self._warm_start(step.solution, step.contour, base.warm_offset, interval),
         )
         return self._record(new, step.solution)
@@ -652,6 +743,10 @@ class Simulation:
         contour = self._contour(state.wear_depth)
         solution = self.contact(contour)
         rate = self.wear_per_revolution(solution)
+        pin_rate = (
+            None if state.pin_wear_depth is None
+            else self.pin_wear_per_revolution(solution, contour)
+        )
         stop = self.life.first_reached(lambda n: rate * n, total)
         end, stopped_by = (total, None) if stop is None else stop
         # the saved profiles before the end, and the end (the last mark without a stop)
@@ -663,6 +758,8 @@ class Simulation:
                 interval=revolution,
                 wear_depth=contour.worn(rate * revolution).wear_depth,
                 stopped_by=stopped_by if revolution == end else None,
+                pin_wear_depth=None if pin_rate is None else pin_rate * revolution,
+                pin_wear_rate=pin_rate,
             )
             state = self._record(state, solution)
         return state, solution
@@ -688,6 +785,8 @@ class Simulation:
             **evaluate_metrics(state.wear_depth, self.life.joint),
             "contact_iterations": float(solution.iterations.sum()),
         }
+        if state.pin_wear_depth is not None:
+            row.update(pin_metrics(state.pin_wear_depth, self.config))
         profiles = state.profiles
         if state.stopped_by is not None or any(
             state.last_saved < t <= state.revolution for t in self._profile_targets

@@ -135,6 +135,10 @@ class SimulationState:
     dynamics_threshold : float
         Growth of the deepest wear since the last solve at which the adaptive
         coupling solves the dynamics again [m] (0: not yet set).
+    pin_wear_depth : ndarray, shape (N,) or None
+        Accumulated wear depth of the pin in its own frame [m] (``None``: rigid pin).
+    pin_wear_rate : ndarray, shape (N,) or None
+        The pin's wear per revolution on the current contours [m].
     """
 
     revolution: int
@@ -152,6 +156,8 @@ class SimulationState:
     dynamics_updates: Log = field(default_factory=Log)
     updates_since_dynamics: int = 0
     dynamics_threshold: float = 0.0
+    pin_wear_depth: FloatArray | None = None
+    pin_wear_rate: FloatArray | None = None
 
     def __post_init__(self) -> None:
         for spec in fields(self):

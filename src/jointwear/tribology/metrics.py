@@ -13,15 +13,18 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 __all__ = [
+    "PIN_METRICS",
     "WEAR_METRICS",
     "JointGeometry",
     "Metric",
     "evaluate_metrics",
+    "pin_metrics",
     "removed_area",
     "wear_mass",
     "wear_peak",
@@ -84,6 +87,35 @@ WEAR_METRICS: tuple[Metric, ...] = (
         "max_clearance_m", "m",
     ),
 )
+
+
+#: the pin's metrics, when the pin wears (``materials.pin.wear_coefficient``)
+PIN_METRICS: tuple[Metric, ...] = (
+    Metric("pin_peak_wear_depth", "m", "largest wear depth of the pin", "pin_peak_wear_depth_m",
+           "m"),
+    Metric("pin_wear_volume", "m3", "worn volume of the pin", "pin_wear_volume_m3", "m^3"),
+)
+
+
+def pin_metrics(pin_wear_depth: ArrayLike, config: Any) -> dict[str, float]:
+    """The :data:`PIN_METRICS` of a pin wear profile (pin frame) [SI].
+
+    The removed area of a pin of radius ``R_p`` worn inwards by ``h`` is
+    ``sum h_j (R_p - h_j / 2) dtheta``.
+
+    Parameters
+    ----------
+    pin_wear_depth : array_like, shape (N,)
+        Wear depth of the pin [m].
+    config : jointwear.config.Config
+        Uses ``joint.pin_radius`` and ``joint.axial_length``.
+    """
+    depth = np.asarray(pin_wear_depth, dtype=float)
+    area = float(np.sum(depth * (config.joint.pin_radius - 0.5 * depth)) * 2 * np.pi / depth.size)
+    return {
+        "pin_peak_wear_depth": float(depth.max()),
+        "pin_wear_volume": area * config.joint.axial_length,
+    }
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,99 @@
+"""Wear on both surfaces: the pin wears in its own frame and widens the gap."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from jointwear import Simulation
+from jointwear.config import Config, config_from_dict
+from jointwear.errors import ConfigError
+from jointwear.tribology import archard, metrics
+from jointwear.tribology.pin_wear import pin_on_bushing, pin_wear_depth
+
+K_PIN = 2e-14
+
+
+@pytest.fixture(scope="module")
+def small(paper_config: Config) -> Config:
+    return paper_config.replace(
+        {"contact.nodes": 120, "simulation.steps_per_revolution": 60, "contact.model": "winkler"}
+    )
+
+
+def test_worn_volumes_are_archards_global_form_with_both_coefficients(small: Config) -> None:
+    config = small.replace({"materials.pin.wear_coefficient": K_PIN})
+    simulation = Simulation(config)
+    contour = simulation.initial_contour()
+    solution = simulation.contact(contour)
+    normal = solution.pressure @ contour.spring_area
+    ds = simulation.sliding_distance
+    summary = simulation.run().summary()
+    k_bushing = config.materials.bushing.wear_coefficient
+    assert summary["wear_volume_m3"] == pytest.approx(
+        archard.archard_volume(normal, ds, k_bushing), rel=1e-6
+    )
+    assert summary["pin_wear_volume_m3"] == pytest.approx(
+        archard.archard_volume(normal, ds, K_PIN), rel=1e-6
+    )
+    total = summary["wear_volume_m3"] + summary["pin_wear_volume_m3"]
+    assert total == pytest.approx(archard.archard_volume(normal, ds, k_bushing + K_PIN), rel=1e-6)
+
+
+def test_a_pin_that_does_not_turn_wears_one_spot_and_the_mapping_round_trips() -> None:
+    nodes = 72
+    pressure = np.zeros((3, nodes))
+    pressure[:, 10] = 1e6
+    fixed = pin_wear_depth(pressure, [1e-3] * 3, 1e-12, np.full(nodes, 7.5e-3), 7.5e-3, [0, 0, 0])
+    assert np.flatnonzero(fixed).tolist() == [10]
+    # a pin turned by 3 nodes at every step has worn 3 nodes further back in its frame
+    turn = 3 * 2 * np.pi / nodes
+    turned = pin_wear_depth(pressure, [1e-3] * 3, 1e-12, np.full(nodes, 7.5e-3), 7.5e-3, [turn] * 3)
+    np.testing.assert_allclose(turned, np.roll(fixed, -3), atol=1e-30)
+    # seen from the bushing at that rotation, the scar faces node 10 again
+    np.testing.assert_allclose(pin_on_bushing(turned, [turn])[0], fixed, atol=1e-30)
+    # half a node: the scar splits evenly, and the total is kept
+    half = pin_wear_depth(
+        pressure, [1e-3] * 3, 1e-12, np.full(nodes, 7.5e-3), 7.5e-3, [np.pi / nodes] * 3
+    )
+    assert half.sum() == pytest.approx(fixed.sum(), rel=1e-14)
+    assert half[9] == pytest.approx(half[10])
+
+
+def test_a_swinging_pin_spreads_its_wear_over_the_swing() -> None:
+    """Oscillating bearing, load fixed in the bushing, equal wear coefficients: the same
+    volume comes off both, but the pin's scar is wider by up to the swing, so shallower."""
+    config = config_from_dict(
+        {
+            "mechanism": {
+                "type": "oscillating",
+                "load": "1.5 kN",
+                "amplitude": "25 deg",
+                "frequency": "0.25 Hz",
+                "load_angle": "-90 deg",
+            },
+            "contact": {"model": "winkler", "nodes": 180},
+            "simulation": {
+                "steps_per_revolution": 90,
+                "revolutions": 2000,
+                "update_contour": True,
+                "update_every": 100,
+            },
+            "materials": {"pin": {"wear_coefficient": 5.05e-13}},
+        }
+    )
+    result = Simulation(config).run()
+    s = result.summary()
+    pin_width = np.degrees(metrics.wear_width(result.dataset["pin_wear_depth"].values))
+    assert s["wear_width_deg"] < pin_width < s["wear_width_deg"] + 50.0
+    assert s["pin_peak_wear_depth_m"] < s["peak_wear_depth_m"]
+    # equal coefficients, equal normal force and slip: equal volumes, to second order in h/R
+    assert s["pin_wear_volume_m3"] == pytest.approx(s["wear_volume_m3"], rel=0.015)
+
+
+def test_pin_wear_needs_a_fixed_update_interval(small: Config) -> None:
+    config = small.replace(
+        {"materials.pin.wear_coefficient": K_PIN, "simulation.update_every": "adaptive"}
+    )
+    with pytest.raises(ConfigError, match="materials.pin.wear_coefficient"):
+        Simulation(config)
