@@ -1,4 +1,8 @@
-"""Wear of a joint in a mechanism jointwear does not build in: hand-off from Exudyn.
+"""
+Hand-off from Exudyn: any mechanism
+===================================
+
+Wear of a joint in a mechanism jointwear does not build in, built in Exudyn.
 
 jointwear builds a few mechanisms itself (``mechanism.type``); for any other one,
 build it in a multibody code, here Exudyn, with an ideal joint where the
@@ -263,8 +267,11 @@ def stiffening_foundation(penetration: FloatArray) -> FloatArray:
     return 1.5e11 * penetration * (1 + penetration / 5e-6)
 
 
-def main(figure: str | None = None, csv_path: str | None = None) -> None:
-    """Build, hand off, wear; print a summary, optionally write the figure and CSV."""
+def main(figure: str | None = None, csv_path: str | None = None) -> tuple[LoadCycle, dict]:
+    """Build, hand off, wear; print a summary, optionally write the CSV.
+
+    Returns the load cycle and the wear results by contact model.
+    """
     run = five_bar_in_exudyn()
     cycle = load_cycle_of(run)
     # started from the exact kinematic state, the force after one period is the
@@ -306,11 +313,10 @@ def main(figure: str | None = None, csv_path: str | None = None) -> None:
             f"{wear['wear_width_deg']:5.1f} deg, mass {wear['wear_mass_kg'] * 1e6:.3f} mg "
             f"after {wear['revolutions']} periods"
         )
-    if figure:
-        plot(cycle, results["winkler"].wear_depth, figure)
+    return cycle, results
 
 
-def plot(cycle: LoadCycle, wear_depth: FloatArray, path: str) -> None:
+def plot(cycle: LoadCycle, wear_depth: FloatArray):
     """Load on the bushing (its own frame) over the period, and the wear it causes."""
     from matplotlib.figure import Figure
 
@@ -325,14 +331,17 @@ def plot(cycle: LoadCycle, wear_depth: FloatArray, path: str) -> None:
     right.set_xlabel("angle on the bushing [deg]")
     right.set_ylabel("wear depth [um]")
     right.set_title("wear after 20000 periods (Winkler)")
-    fig.savefig(path, dpi=120)
-    print(f"figure written: {path}")
+    return fig
 
 
 if __name__ == "__main__":
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description="Hand-off from Exudyn")
     parser.add_argument("--figure", help="write the figure to this file")
     parser.add_argument("--csv", help="write the load history to this file")
     # parse_known_args: the test suite runs this module with pytest's own arguments
     arguments, _ = parser.parse_known_args()
-    main(arguments.figure, arguments.csv)
+    cycle, results = main(arguments.figure, arguments.csv)
+    figure = plot(cycle, results["winkler"].wear_depth)
+    if arguments.figure:
+        figure.savefig(arguments.figure, dpi=120)
+        print(f"figure written: {arguments.figure}")

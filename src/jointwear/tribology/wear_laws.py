@@ -6,11 +6,11 @@ of every step [m], shape (M,), returning the wear depth of every node over the
 cycle [m], shape (N,). :data:`WEAR_LAWS` holds the named ones; ``wear.law`` selects
 one, and :class:`~jointwear.simulation.Simulation` also takes any callable.
 
-``archard`` (default; paper eqs. 8-9)
+``archard`` (default; paper eqs. 8-9, Archard [1]_)
     .. math:: h_j = K_d \sum_k p_{jk} \Delta s_k
 
     ``K_d`` = ``materials.bushing.wear_coefficient`` [1/Pa].
-``energy`` (dissipated-energy wear, Fouvry et al.)
+``energy`` (dissipated-energy wear, Fouvry et al. [2]_)
     The worn volume is proportional to the friction energy dissipated, whose
     density over a step is ``mu p Delta s``:
 
