@@ -37,6 +37,8 @@ from jointwear import mechanism
 from jointwear.config import Config
 from jointwear.contact import ContactParameters, ContactSolution, contact_law
 from jointwear.contact import solve as solve_contact
+from jointwear.contact.kernel import revolution_wear
+from jointwear.contact.laws import SpringLaw
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
 from jointwear.tribology import archard, metrics
@@ -234,7 +236,13 @@ class Simulation:
     def _solve(
         self, contour: BushingContour, state: SimulationState | None, ahead: int
     ) -> ContactSolution:
-        """Contact solve warm-started from ``state``'s last solve, ``ahead`` revolutions on."""
+        """Contact solve warm-started from ``state``'s last solve, ``ahead`` revolutions on.
+
+        Inside the revolution loop (``state`` given), paper balance with a spring law:
+        :func:`jointwear.contact.kernel.revolution_wear`, which also accumulates the
+        revolution's wear (the solution carries it; its dense pressure is assembled only
+        when read). Without ``state`` the full NumPy solve.
+        """
         cfg = self.config.contact
         warm = {}
         if state is not None and state.warm_offset is not None:
@@ -242,6 +250,20 @@ class Simulation:
             if state.warm_slope is not None and ahead:
                 guess = guess + ahead * state.warm_slope
             warm = {"initial_offset": guess, "window": state.window}
+        if state is not None and cfg.balance == "paper" and isinstance(self.law, SpringLaw):
+            return revolution_wear(
+                contour,
+                self.pin,
+                self.joint_load.load,
+                self.joint_load.azimuth,
+                self.sliding_distance,
+                self.law,
+                self.config.materials.bushing.wear_coefficient,
+                max_penetration=self.parameters.bushing_thickness,
+                tolerance=cfg.tolerance,
+                max_iterations=cfg.max_iterations,
+                **warm,
+            ).solution()
         return solve_contact(
             contour,
             self.pin,
@@ -257,6 +279,9 @@ class Simulation:
 
     def wear_per_revolution(self, solution: ContactSolution) -> FloatArray:
         """Stage 3b: Archard wear depth of one revolution at every node [m]."""
+        revolution = getattr(solution, "revolution", None)
+        if revolution is not None:  # accumulated by the solve, from each step's window
+            return revolution.wear
         return archard.wear_depth(
             solution.pressure, self.sliding_distance, self.config.materials.bushing.wear_coefficient
         )
@@ -373,7 +398,11 @@ class Simulation:
         ``previous_offset`` is the offset of the solve ``interval`` revolutions before
         (None: no trend to extrapolate).
         """
-        offset = _along_load(solution, self.joint_load.azimuth)
+        revolution = getattr(solution, "revolution", None)
+        if revolution is not None:
+            offset = revolution.offset
+        else:
+            offset = _along_load(solution, self.joint_load.azimuth)
         return {
             "warm_offset": offset,
             "warm_slope": _slope(previous_offset, offset, interval),

@@ -517,6 +517,25 @@ def _curvature(law: SpringLaw) -> float:
     return 0.0
 
 
+def checked_loads(load: ArrayLike, azimuth: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """Loads [N] and azimuths [rad] as flat float arrays of one length, checked.
+
+    Raises :class:`ContactError` for a load or azimuth that is not finite or a negative
+    load (the azimuth gives the direction).
+    """
+    load = np.asarray(load, dtype=float).ravel()
+    azimuth = np.asarray(azimuth, dtype=float).ravel()
+    if azimuth.shape == load.shape:
+        azimuth = azimuth.copy()
+    else:
+        azimuth = np.broadcast_to(azimuth, load.shape).copy()
+    if not (np.isfinite(load).all() and np.isfinite(azimuth).all()):
+        raise ContactError("load: loads and azimuths must be finite")
+    if (load < 0).any():
+        raise ContactError("load: must be >= 0 (the azimuth gives the direction)")
+    return load, azimuth
+
+
 def _law_from(model: SpringLaw | Callable[..., Any]) -> SpringLaw:
     if isinstance(model, SpringLaw):
         return model
@@ -579,16 +598,7 @@ def solve_contact(
     ContactSolution
     """
     law = _law_from(law)
-    load = np.asarray(load, dtype=float).ravel()
-    azimuth = np.asarray(azimuth, dtype=float).ravel()
-    if azimuth.shape == load.shape:
-        azimuth = azimuth.copy()
-    else:
-        azimuth = np.broadcast_to(azimuth, load.shape).copy()
-    if not (np.isfinite(load).all() and np.isfinite(azimuth).all()):
-        raise ContactError("load: loads and azimuths must be finite")
-    if (load < 0).any():
-        raise ContactError("load: must be >= 0 (the azimuth gives the direction)")
+    load, azimuth = checked_loads(load, azimuth)
     if balance not in ("paper", "equilibrium"):
         raise ContactError(
             f"contact.balance: unknown mode {balance!r}; choose 'paper' or 'equilibrium'"
@@ -828,8 +838,9 @@ def _coarse_indices(size: int) -> NDArray[np.intp]:
     return coarse
 
 
-def _coarse_guess(contour, pin, law, load, azimuth, tolerance, max_iterations, max_penetration,
-                  window):
+def _coarse_guess(
+    contour, pin, law, load, azimuth, tolerance, max_iterations, max_penetration, window
+):
     """Pin offsets of every load from a coarse pass, and the widest contact half-angle [rad].
 
     Used for a cold start where the springs do not lie on a circle (a worn contour; see
@@ -852,7 +863,14 @@ def _coarse_guess(contour, pin, law, load, azimuth, tolerance, max_iterations, m
     start = depth0 = None
     if coarse.size >= 64:
         start, widest = _coarse_guess(
-            contour, pin, law, c_load, c_azimuth, tolerance, max_iterations, max_penetration,
+            contour,
+            pin,
+            law,
+            c_load,
+            c_azimuth,
+            tolerance,
+            max_iterations,
+            max_penetration,
             window,
         )
         width = int(np.ceil(1.05 * widest / contour.dtheta) + 3)
@@ -962,14 +980,7 @@ def _solve_window(
     radius_pin = pin.radius
     r_pin2 = radius_pin**2
     lower, upper = _bracket(win, contour, radius_pin, load, max_penetration)
-    # the ray geometry needs |e| < R_p: a radial gap as wide as the pin is out of its reach
-    out_of_reach = (lower >= 0.999 * radius_pin) & (load > 0)
-    if np.any(out_of_reach):
-        i = int(np.flatnonzero(out_of_reach)[0])
-        raise ContactError(
-            f"load: {load[i]:.6g} N at {np.degrees(azimuth[i]):.4g} deg: the bushing is out of "
-            f"the pin's reach (radial gap {lower[i]:.3g} m >= pin radius {radius_pin:.3g} m)"
-        )
+    check_reach(lower, load, azimuth, radius_pin)
     area = win.area
     geometry = win.geometry
 
@@ -1078,6 +1089,21 @@ def _cubic_interpolation(known: NDArray[np.intp], values: FloatArray, size: int)
         _INTERPOLATION_CACHE[key] = cached
     stencil, weights = cached
     return np.einsum("ij,ij->i", weights, values[stencil])
+
+
+def check_reach(lower: FloatArray, load: FloatArray, azimuth: FloatArray, pin_radius: float):
+    """Raise :class:`ContactError` where a loaded pin cannot reach the bushing.
+
+    The ray geometry needs ``|e| < R_p``: a radial gap ``lower`` [m] as wide as the pin
+    (radius ``pin_radius`` [m]) is out of its reach; ``load`` [N], ``azimuth`` [rad].
+    """
+    out_of_reach = (lower >= 0.999 * pin_radius) & (load > 0)
+    if np.any(out_of_reach):
+        i = int(np.flatnonzero(out_of_reach)[0])
+        raise ContactError(
+            f"load: {load[i]:.6g} N at {np.degrees(azimuth[i]):.4g} deg: the bushing is out of "
+            f"the pin's reach (radial gap {lower[i]:.3g} m >= pin radius {pin_radius:.3g} m)"
+        )
 
 
 def _check(converged, offset, upper, load, azimuth, residual) -> None:
@@ -1299,8 +1325,14 @@ def _equilibrium_by_direction(
             total = target[idx[sub]]
             return normal.sum(1) - total, (slope * cs).sum(1), np.abs(normal).sum(1)
 
-        root = bracketed_newton(residual, guess, lower[rows][idx], upper[rows][idx], tolerance,
-                                max_iterations=max_iterations)
+        root = bracketed_newton(
+            residual,
+            guess,
+            lower[rows][idx],
+            upper[rows][idx],
+            tolerance,
+            max_iterations=max_iterations,
+        )
         iterations[idx] += root.iterations
         force, _, _, sn = springs(root.x, chi, idx)
         scale = np.abs(force).sum(1)
