@@ -10,9 +10,11 @@ is the arithmetic: one loop per load over the nodes the pin can reach, no tempor
 and the wear of a load added to the nodes as soon as it is balanced.
 
 The window of load ``k`` is read from arrays padded by a quarter circle each side
-(``ext[c + o + pad]`` is node ``(c + o) mod N``), so the inner loop has no modulo and
-LLVM vectorises it (``fastmath`` only reassociates the sums and contracts to FMA: no
-approximate division or square root). Arguments travel in tuples:
+(``ext[c + o + pad]`` is node ``(c + o) mod N``), so no loop has a modulo; loops run
+over ``range(size)`` of window views, because an index that could be negative is
+wrapped around by numba, which turns the loads into gathers (3x slower). ``fastmath``
+only reassociates the sums and contracts to FMA: no approximate division or square
+root. Arguments travel in tuples:
 
 * ``nodes``: ``(gap_ext, area_ext, cos_o, sin_o)``, the padded node gaps ``r_j - R_p``
   [m] and spring areas [m^2], and ``cos``/``sin`` of the window offsets ``o dtheta``;
@@ -21,7 +23,8 @@ approximate division or square root). Arguments travel in tuples:
   lower, upper)``, the node nearest the load line, the load line's angle from it, a
   gap and area factor per load (the symmetric law's circle), the smallest gap the pin
   can meet, and the bracket of the offset [m];
-* ``line``: one load's ``(base, cos_shift, sin_shift, load_gap, load_area)``.
+* ``line``: one load's ``(base, cos_shift, sin_shift, load_gap, load_area)``;
+* ``work``: the window scratch of one load, rows ``_COS`` .. ``_DEPTH`` by offset.
 """
 
 from __future__ import annotations
@@ -34,88 +37,103 @@ from numba import njit
 #: results per load (``status``)
 CONVERGED, NOT_CONVERGED = 0, 1
 #: below this ``(s / R_p)^2`` the pin-curvature term is taken from its series (exact
-#: to ~1e-20 relative there), which needs neither a square root nor a division
-_SERIES_LIMIT = 1e-3
+#: to ~1e-17 relative there), which needs neither a square root nor a division
+_SERIES_LIMIT = 1e-4
 _EPS = 2.220446049250313e-16
 _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
+#: rows of ``work``; the first five are set once per load by :func:`_prepare`
+_COS, _SIN2, _WEIGHT, _GAP, _SIDE, _PRESS, _DEPTH = range(7)
 
 
 @njit(**_FLAGS)
-def _evaluate(s, nodes, grid, line, width, higher, press, depth):
+def _prepare(nodes, grid, line, width, work):
+    """One load's window geometry into ``work`` (rows ``_COS`` .. ``_SIDE``).
+
+    ``cos(phi_j)``, ``sin^2(phi_j)`` (angle addition from the tables), ``k A_j
+    cos(phi_j)``, the gap ``g_j`` [m] and ``k A_j sin(phi_j)``: what every evaluation of
+    the load reads, computed once instead of once per evaluation.
+    """
+    gap_ext, area_ext, cos_o, sin_o = nodes
+    quarter, coefficient = grid[1], grid[5]
+    base, cs, ss, load_gap, load_area = line
+    start, first, size = base - width, quarter - width, 2 * width + 1
+    gap, area = gap_ext[start : start + size], area_ext[start : start + size]
+    co, so = cos_o[first : first + size], sin_o[first : first + size]
+    rows = work[:, first : first + size]
+    factor = coefficient * load_area
+    for j in range(size):
+        c = co[j] * cs - so[j] * ss
+        sn = so[j] * cs + co[j] * ss
+        rows[_COS, j] = c
+        rows[_SIN2, j] = sn * sn
+        rows[_WEIGHT, j] = factor * area[j] * c
+        rows[_GAP, j] = gap[j] + load_gap
+        rows[_SIDE, j] = factor * area[j] * sn
+
+
+@njit(**_FLAGS)
+def _evaluate(s, rp, exponent, width, higher, work):
     """Springs of one load at offset ``s`` [m]: (force, slope, second, third derivative).
 
-    ``press`` receives ``p / coefficient`` and ``depth`` the depth [m] of each window node
-    (index ``o + quarter``); ``higher`` asks for the second and third derivatives of a
-    power law 1.5 (linear springs always give the second; NaN where not computed). Each
-    combination of exponent (1 or 1.5) and curvature form is a loop of its own whose
-    constants LLVM folds: a branch (or an untaken ``pow``) inside the loop keeps it from
-    being vectorised (up to 10x slower).
+    Reads the window prepared in ``work``, writes ``p / k`` and the depth [m] of each
+    node to its rows ``_PRESS`` and ``_DEPTH``. ``higher`` asks for the second and third
+    derivatives of a power law 1.5 (linear springs always give the second; NaN where
+    not computed). Each combination of exponent (1 or 1.5) and curvature form is a loop
+    of its own whose constants LLVM folds: a branch (or an untaken ``pow``) inside the
+    loop keeps it from being vectorised (up to 10x slower).
     """
-    rp, exponent = grid[3], grid[4]
     series = s * s <= _SERIES_LIMIT * rp * rp
     if exponent == 1.5:
         if series:
-            total, slope, second = _springs(s, nodes, grid, line, width, press, depth, True, True)
+            total, slope, second = _springs(s, rp, width, work, True, True)
         else:
-            total, slope, second = _springs(s, nodes, grid, line, width, press, depth, True, False)
+            total, slope, second = _springs(s, rp, width, work, True, False)
         if higher:
-            second, third = _curvatures(s, nodes, grid, line, width, depth)
+            second, third = _curvatures(s, rp, width, work)
             return total, slope, second, third
     elif series:
-        total, slope, second = _springs(s, nodes, grid, line, width, press, depth, False, True)
+        total, slope, second = _springs(s, rp, width, work, False, True)
     else:
-        total, slope, second = _springs(s, nodes, grid, line, width, press, depth, False, False)
+        total, slope, second = _springs(s, rp, width, work, False, False)
     return total, slope, second, np.nan
-
-
-@njit(inline="always", **_FLAGS)
-def _angle(cos_offset, sin_offset, cos_shift, sin_shift):
-    """``cos(phi)`` and ``sin^2(phi)`` of ``phi = o dtheta + shift`` by angle addition."""
-    sin_phi = sin_offset * cos_shift + cos_offset * sin_shift
-    return cos_offset * cos_shift - sin_offset * sin_shift, sin_phi * sin_phi
 
 
 @njit(inline="always", **_FLAGS)
 def _pin_curvature(x, rp, inv_rp, series):
     """``R_p - sqrt(R_p^2 - x)`` and ``1 / sqrt(R_p^2 - x)`` for ``x = s^2 sin^2(phi)``.
 
-    With ``series`` (``x / R_p^2 <= 1e-3``) from their Taylor series in ``y = x / R_p^2``,
-    exact to ~1e-20 relative there, without a square root or a division (``inv_rp`` is
+    With ``series`` (``y = x / R_p^2 <= 1e-4``) from their Taylor series to ``y^4``,
+    exact to ~1e-17 relative there, without a square root or a division (``inv_rp`` is
     ``1 / R_p``: a division in the loop would not be turned into a product).
     """
     if series:
         y = x * inv_rp * inv_rp
-        poly = 0.0390625 + y * (0.02734375 + y * 0.0205078125)
-        curv = rp * y * (0.5 + y * (0.125 + y * (0.0625 + y * poly)))
-        poly = 0.3125 + y * (0.2734375 + y * 0.24609375)
-        return curv, (1.0 + y * (0.5 + y * (0.375 + y * poly))) * inv_rp
+        curv = rp * y * (0.5 + y * (0.125 + y * (0.0625 + y * 0.0390625)))
+        return curv, (1.0 + y * (0.5 + y * (0.375 + y * 0.3125))) * inv_rp
     root = math.sqrt(rp * rp - x)
     return x / (root + rp), 1.0 / root
 
 
 @njit(inline="always", **_FLAGS)
-def _springs(s, nodes, grid, line, width, press, depth, power15, series):
+def _springs(s, rp, width, work, power15, series):
     """``sum_j p_j A_j cos(phi_j)``, its slope in ``s`` and (linear springs) its curvature.
 
     Linear springs: between two nodes coming into contact the force is linear in ``s``
     but for the pin's curvature, ``f'' = sum_j k A_j cos(phi_j) delta_j''`` over the nodes
     in contact, a few flops more; with it the step is Chebyshev's (power law 1.5: NaN).
     """
-    gap_ext, area_ext, cos_o, sin_o = nodes
-    quarter, rp, coefficient = grid[1], grid[3], grid[5]
-    base, cs, ss, load_gap, load_area = line
+    first, size = work.shape[1] // 2 - width, 2 * width + 1
+    rows = work[:, first : first + size]
     total = 0.0
     slope = 0.0
     second = 0.0
     s2 = s * s
     inv_rp = 1.0 / rp
-    for o in range(-width, width + 1):
-        i = o + quarter
-        c, sin2 = _angle(cos_o[i], sin_o[i], cs, ss)
+    for j in range(size):
+        c, sin2, weight = rows[_COS, j], rows[_SIN2, j], rows[_WEIGHT, j]
         curv, inv_root = _pin_curvature(s2 * sin2, rp, inv_rp, series)
-        d = s * c - (gap_ext[base + o] + load_gap) - curv
+        d = s * c - rows[_GAP, j] - curv
         pen = max(d, 0.0)
-        weight = coefficient * (area_ext[base + o] * load_area) * c
         along = c - s * sin2 * inv_root  # d depth / ds
         if power15:
             r = math.sqrt(pen)
@@ -127,36 +145,33 @@ def _springs(s, nodes, grid, line, width, press, depth, power15, series):
             slope += weight * along * touching
             second -= weight * touching * sin2 * inv_root * (1.0 + s2 * sin2 * inv_root * inv_root)
         total += weight * p
-        press[i] = p
-        depth[i] = d
+        rows[_PRESS, j] = p
+        rows[_DEPTH, j] = d
     if power15:
         second = np.nan
     return total, slope, second
 
 
 @njit(**_FLAGS)
-def _curvatures(s, nodes, grid, line, width, depth):
+def _curvatures(s, rp, width, work):
     """Second and (leading term of the) third derivative of the force, ``p = k delta^1.5``.
 
     ``f'' = sum_j w_j (p''(delta_j) delta_j'^2 + p'(delta_j) delta_j'')`` and
     ``f''' ~ sum_j w_j p'''(delta_j) delta_j'^3`` (``p''' ~ delta^-1.5`` dominates where a
     node barely touches), ``w_j = A_j cos(phi_j)``, from the depths of the evaluation.
     """
-    _, area_ext, cos_o, sin_o = nodes
-    quarter, rp, coefficient = grid[1], grid[3], grid[5]
-    base, cs, ss, _, load_area = line
+    first, size = work.shape[1] // 2 - width, 2 * width + 1
+    rows = work[:, first : first + size]
     second = 0.0
     third = 0.0
     s2 = s * s
     series = s2 <= _SERIES_LIMIT * rp * rp
     inv_rp = 1.0 / rp
-    for o in range(-width, width + 1):
-        i = o + quarter
-        c, sin2 = _angle(cos_o[i], sin_o[i], cs, ss)
+    for j in range(size):
+        c, sin2, weight = rows[_COS, j], rows[_SIN2, j], rows[_WEIGHT, j]
         x = s2 * sin2
         _, inv_root = _pin_curvature(x, rp, inv_rp, series)
-        pen = max(depth[i], 0.0)
-        weight = coefficient * (area_ext[base + o] * load_area) * c
+        pen = max(rows[_DEPTH, j], 0.0)
         along = c - s * sin2 * inv_root
         bend = -sin2 * inv_root * (1.0 + x * inv_root * inv_root)  # d2 depth / ds2
         r = math.sqrt(pen)
@@ -199,26 +214,32 @@ def _step(s, f, slope, total, second, third, curvature):
 
 
 @njit(**_FLAGS)
-def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, higher, press, depth):
+def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, higher, work):
     """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
 
     Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
     floor); or, twice in a row, a residual that ``ulps`` units in the last place of ``s``
     explain (where one ulp of ``s`` moves the sum by more than its own round-off there
     is nothing left to bisect); or a bracket collapsed to round-off around a residual
-    its slope explains. The state returned is the last one evaluated.
+    its slope explains. The state returned is the last one evaluated (``work``).
     """
     atol, ulps, max_iterations, curvature = solver
-    dtheta, quarter = grid[2], grid[1]
+    quarter, dtheta, rp, exponent = grid[1], grid[2], grid[3], grid[4]
     lo, hi = lower, upper
     s = min(max(s, lo), hi)
+    # a little wider than the start's reach: the steps rarely need more
+    prepared = min(quarter, _reach(s, gap_min, dtheta, quarter) + 2)
+    _prepare(nodes, grid, line, prepared, work)
     hits = 0
     width = 1
     total = 0.0
     slope = 0.0
     for it in range(1, max_iterations + 1):
         width = _reach(s, gap_min, dtheta, quarter)
-        total, slope, second, third = _evaluate(s, nodes, grid, line, width, higher, press, depth)
+        if width > prepared:
+            prepared = width
+            _prepare(nodes, grid, line, prepared, work)
+        total, slope, second, third = _evaluate(s, rp, exponent, width, higher, work)
         f = total - load
         error = abs(f)
         # far off (a cold start's first steps): keep taking fourth-order steps
@@ -245,21 +266,9 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, higher, 
 
 
 @njit(**_FLAGS)
-def revolution(
-    load,
-    sliding,
-    guess,
-    have_guess,
-    conformal,
-    nodes,
-    grid,
-    lines,
-    solver,
-    floats,
-    counts,
-    wear_ext,
-):
-    """Balance every load of a revolution and add its wear ``p ds / coefficient`` per node.
+def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
+               floats, counts, wear_ext):  # fmt: skip
+    """Balance every load of a revolution and add its wear ``p ds / k`` per node.
 
     Loads are solved in order. With ``have_guess`` each starts from ``guess`` [m];
     otherwise from its predecessor's balance moved by the change of load (a Chebyshev
@@ -272,8 +281,7 @@ def revolution(
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper = lines
     gap_ext = nodes[0]
     pad, quarter, dtheta, coefficient = grid[0], grid[1], grid[2], grid[5]
-    press = np.empty(2 * quarter + 1)
-    depth = np.empty(2 * quarter + 1)
+    work = np.zeros((7, 2 * quarter + 1))
     previous_s = np.nan
     previous_total = 0.0
     previous_slope = 0.0
@@ -303,7 +311,7 @@ def revolution(
             s = conformal[k]
         s, total, slope, width, its, ok = _balance(
             load[k], s, lower[k], upper[k], gap_min[k], nodes, grid, line, solver,
-            not have_guess, press, depth,
+            not have_guess, work,
         )  # fmt: skip
         floats[0, k] = s
         floats[1, k] = total
@@ -312,75 +320,81 @@ def revolution(
         previous_s, previous_total, previous_slope = s, total, slope
         drift = s - predicted if predicted == predicted else 0.0
         # the balanced state is the last evaluation: its wear, resultants and extent
-        floats[2, k], floats[5, k] = _settle(sliding[k], nodes, grid, line, width, press, wear_ext)
+        first, size = quarter - width, 2 * width + 1
+        rows = work[:, first : first + size]
+        start = base - width
+        floats[2, k] = _settle(sliding[k], rows, wear_ext[start : start + size])
+        floats[5, k] = coefficient * _peak(rows[_PRESS])
         shift = math.atan2(sin_shift[k], cos_shift[k])
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
-            depth, quarter, width, dtheta, shift
+            rows[_DEPTH], width, dtheta, shift
         )
-    floats[2] *= coefficient
-    floats[5] *= coefficient
 
 
 @njit(**_FLAGS)
-def _settle(ds, nodes, grid, line, width, press, wear_ext):
-    """Add ``p ds / coefficient`` of one load to the nodes; its tangential force and peak.
+def _settle(ds, rows, wear):
+    """Add ``p ds / k`` of one load to its nodes (``wear``); return its tangential force.
 
     Every node of the window is added (``p`` is 0 out of contact): no branch, one
-    vectorised loop. Both results are still to be multiplied by the coefficient.
+    vectorised loop.
     """
-    _, area_ext, cos_o, sin_o = nodes
-    quarter = grid[1]
-    base, cs, ss, _, load_area = line
     sideways = 0.0
+    for j in range(wear.size):
+        p = rows[_PRESS, j]
+        wear[j] += ds * p
+        sideways += rows[_SIDE, j] * p
+    return sideways
+
+
+@njit(cache=True, fastmath=True)
+def _peak(press):
+    """Largest of ``press`` (>= 0, never NaN: ``fastmath`` lets the max vectorise)."""
     top = 0.0
-    for o in range(-width, width + 1):
-        i = o + quarter
-        p = press[i]
-        wear_ext[base + o] += ds * p
-        sideways += area_ext[base + o] * (sin_o[i] * cs + cos_o[i] * ss) * p
-        top = max(top, p)
-    return load_area * sideways, top
+    for j in range(press.size):
+        top = max(top, press[j])
+    return top
 
 
 @njit(**_FLAGS)
-def _extent(depth, quarter, width, dtheta, shift):
+def _extent(depth, width, dtheta, shift):
     """Contact half-angles left and right of the load line [rad], and springs in contact.
 
-    The outermost node in contact each side is found by scanning in from the window's
-    edges (a few nodes: the window is the pin's reach); the edge lies between it and
-    the next node out, interpolated linearly in depth.
+    ``depth`` is the window (offsets ``-width .. width``). The outermost node in contact
+    each side is found by scanning in from the window's edges (a few nodes: the window
+    is the pin's reach); the edge lies between it and the next node out, interpolated
+    linearly in depth.
     """
-    last = width
-    while last >= -width and not depth[last + quarter] > 0.0:
+    last = depth.size - 1
+    while last >= 0 and not depth[last] > 0.0:
         last -= 1
-    if last < -width:
+    if last < 0:
         return 0.0, 0.0, 0, 0
-    first = -width
-    while not depth[first + quarter] > 0.0:
+    first = 0
+    while not depth[first] > 0.0:
         first += 1
     n_left = 0
     n_right = 0
-    for o in range(first, last + 1):
-        touching = depth[o + quarter] > 0.0
-        n_left += touching and o > 0
-        n_right += touching and o < 0
-    if depth[quarter] > 0.0:
+    for j in range(first, last + 1):
+        touching = depth[j] > 0.0
+        n_left += touching and j > width
+        n_right += touching and j < width
+    if depth[width] > 0.0:
         n_left += shift > 0.0
         n_right += shift < 0.0
-    left = _edge(last, min(last + 1, width), depth, quarter, dtheta, shift)
-    right = -_edge(first, max(first - 1, -width), depth, quarter, dtheta, shift)
+    left = _edge(last, min(last + 1, depth.size - 1), depth, width, dtheta, shift)
+    right = -_edge(first, max(first - 1, 0), depth, width, dtheta, shift)
     return max(left, 0.0), max(right, 0.0), n_left, n_right
 
 
 @njit(**_FLAGS)
-def _edge(inside, outside, depth, quarter, dtheta, shift):
+def _edge(inside, outside, depth, width, dtheta, shift):
     """Angle of a contact edge [rad], between the last node in and the next one out."""
-    d_in = depth[inside + quarter]
-    d_out = depth[outside + quarter]
+    d_in = depth[inside]
+    d_out = depth[outside]
     drop = d_in - d_out
     frac = d_in / drop if drop > 0.0 else 0.0
-    phi_in = inside * dtheta + shift
-    phi_out = outside * dtheta + shift
+    phi_in = (inside - width) * dtheta + shift
+    phi_out = (outside - width) * dtheta + shift
     return phi_in + frac * (phi_out - phi_in)
 
 
@@ -391,16 +405,16 @@ def dense_pressure(offset, load, nodes, grid, lines, out):
     The same evaluation as the balance's last one, so the same numbers bit for bit.
     """
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min = lines[:6]
-    pad, quarter, dtheta, coefficient = grid[0], grid[1], grid[2], grid[5]
+    pad, quarter, dtheta, rp, exponent, coefficient = grid
     nodes_count = out.shape[1]
-    press = np.empty(2 * quarter + 1)
-    depth = np.empty(2 * quarter + 1)
+    work = np.zeros((7, 2 * quarter + 1))
     for k in range(offset.size):
         if load[k] <= 0.0:
             continue
         line = (centre[k] + pad, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
         width = _reach(offset[k], gap_min[k], dtheta, quarter)
-        _evaluate(offset[k], nodes, grid, line, width, False, press, depth)
+        _prepare(nodes, grid, line, width, work)
+        _evaluate(offset[k], rp, exponent, width, False, work)
         for o in range(-width, width + 1):
-            if depth[o + quarter] > 0.0:
-                out[k, (centre[k] + o) % nodes_count] = coefficient * press[o + quarter]
+            if work[_DEPTH, o + quarter] > 0.0:
+                out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS, o + quarter]
