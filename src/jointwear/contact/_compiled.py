@@ -218,10 +218,11 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, higher, 
     """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
 
     Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
-    floor); or, twice in a row, a residual that ``ulps`` units in the last place of ``s``
-    explain (where one ulp of ``s`` moves the sum by more than its own round-off there
-    is nothing left to bisect); or a bracket collapsed to round-off around a residual
-    its slope explains. The state returned is the last one evaluated (``work``).
+    floor); or a residual that ``ulps`` units in the last place of ``s`` explain, where
+    Newton's step is below one ulp or for the second time in a row (where one ulp of
+    ``s`` moves the sum by more than its own round-off there is nothing left to
+    bisect); or a bracket collapsed to round-off around a residual its slope explains.
+    The state returned is the last one evaluated (``work``).
     """
     atol, ulps, max_iterations, curvature = solver
     quarter, dtheta, rp, exponent = grid[1], grid[2], grid[3], grid[4]
@@ -247,8 +248,11 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, higher, 
         if error <= max(atol, 8.0 * _EPS * total):
             return s, total, slope, width, it, True
         if slope > 0.0 and error <= ulps * _EPS * abs(s) * slope:
+            # a residual a few ulp of s explain: accept it if Newton's step is below one
+            # ulp (it would round to s, and a step rejected by the bracket would bisect
+            # a wide one), else after one more step
             hits += 1
-            if hits >= 2:
+            if hits >= 2 or error <= _EPS * abs(s) * slope:
                 return s, total, slope, width, it, True
         if f < 0.0:
             lo = s
