@@ -36,9 +36,10 @@ from numba import njit
 
 #: results per load (``status``)
 CONVERGED, NOT_CONVERGED = 0, 1
-#: below this ``(s / R_p)^2`` the pin-curvature term is taken from its series (exact
-#: to ~1e-17 relative there), which needs neither a square root nor a division
-_SERIES_LIMIT = 1e-4
+#: up to these ``(s / R_p)^2`` the pin-curvature term is taken from its series to ``y^4``
+#: and to ``y^8`` (exact to ~1e-17 relative there), which need neither a square root
+#: nor a division; beyond, the closed form
+_SHORT_SERIES, _LONG_SERIES = 1e-4, 1e-2
 _EPS = 2.220446049250313e-16
 _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
 #: rows of ``work``; the first five are set once per load by :func:`_prepare`
@@ -82,40 +83,60 @@ def _evaluate(s, rp, exponent, width, higher, work):
     of its own whose constants LLVM folds: a branch (or an untaken ``pow``) inside the
     loop keeps it from being vectorised (up to 10x slower).
     """
-    series = s * s <= _SERIES_LIMIT * rp * rp
+    terms = _series_terms(s, rp)
     if exponent == 1.5:
-        if series:
-            total, slope, second = _springs(s, rp, width, work, True, True)
+        if terms == 4:
+            total, slope, second = _springs(s, rp, width, work, True, 4)
+        elif terms == 8:
+            total, slope, second = _springs(s, rp, width, work, True, 8)
         else:
-            total, slope, second = _springs(s, rp, width, work, True, False)
+            total, slope, second = _springs(s, rp, width, work, True, 0)
         if higher:
             second, third = _curvatures(s, rp, width, work)
             return total, slope, second, third
-    elif series:
-        total, slope, second = _springs(s, rp, width, work, False, True)
+    elif terms == 4:
+        total, slope, second = _springs(s, rp, width, work, False, 4)
+    elif terms == 8:
+        total, slope, second = _springs(s, rp, width, work, False, 8)
     else:
-        total, slope, second = _springs(s, rp, width, work, False, False)
+        total, slope, second = _springs(s, rp, width, work, False, 0)
     return total, slope, second, np.nan
 
 
 @njit(inline="always", **_FLAGS)
-def _pin_curvature(x, rp, inv_rp, series):
+def _series_terms(s, rp):
+    """Terms of the pin-curvature series that are exact at offset ``s`` (0: closed form)."""
+    ratio = s * s / (rp * rp)
+    if ratio <= _SHORT_SERIES:
+        return 4
+    return 8 if ratio <= _LONG_SERIES else 0
+
+
+@njit(inline="always", **_FLAGS)
+def _pin_curvature(x, rp, inv_rp, terms):
     """``R_p - sqrt(R_p^2 - x)`` and ``1 / sqrt(R_p^2 - x)`` for ``x = s^2 sin^2(phi)``.
 
-    With ``series`` (``y = x / R_p^2 <= 1e-4``) from their Taylor series to ``y^4``,
-    exact to ~1e-17 relative there, without a square root or a division (``inv_rp`` is
-    ``1 / R_p``: a division in the loop would not be turned into a product).
+    With ``terms`` 4 or 8 (``y = x / R_p^2`` up to 1e-4 or 1e-2) from their Taylor series
+    in ``y``, exact to ~1e-17 relative there, without a square root or a division
+    (``inv_rp`` is ``1 / R_p``: a division in the loop would not become a product).
     """
-    if series:
-        y = x * inv_rp * inv_rp
+    y = x * inv_rp * inv_rp
+    if terms == 4:
         curv = rp * y * (0.5 + y * (0.125 + y * (0.0625 + y * 0.0390625)))
         return curv, (1.0 + y * (0.5 + y * (0.375 + y * 0.3125))) * inv_rp
+    if terms == 8:
+        tail = 0.02734375 + y * (0.0205078125 + y * (0.01611328125 + y * 0.013092041015625))
+        curv = rp * y * (0.5 + y * (0.125 + y * (0.0625 + y * (0.0390625 + y * tail))))
+        tail = 0.24609375 + y * (0.2255859375 + y * (0.20947265625 + y * 0.196380615234375))
+        return curv, (
+            1.0 + y * (0.5 + y * (0.375 + y * (0.3125 + y * (0.2734375 + y * tail))))
+        ) * inv_rp
     root = math.sqrt(rp * rp - x)
     return x / (root + rp), 1.0 / root
 
 
 @njit(inline="always", **_FLAGS)
-def _springs(s, rp, width, work, power15, series):
+def _springs(s, rp, width, work, power15, terms):
     """``sum_j p_j A_j cos(phi_j)``, its slope in ``s`` and (linear springs) its curvature.
 
     Linear springs: between two nodes coming into contact the force is linear in ``s``
@@ -131,7 +152,7 @@ def _springs(s, rp, width, work, power15, series):
     inv_rp = 1.0 / rp
     for j in range(size):
         c, sin2, weight = rows[_COS, j], rows[_SIN2, j], rows[_WEIGHT, j]
-        curv, inv_root = _pin_curvature(s2 * sin2, rp, inv_rp, series)
+        curv, inv_root = _pin_curvature(s2 * sin2, rp, inv_rp, terms)
         d = s * c - rows[_GAP, j] - curv
         pen = max(d, 0.0)
         along = c - s * sin2 * inv_root  # d depth / ds
@@ -165,12 +186,12 @@ def _curvatures(s, rp, width, work):
     second = 0.0
     third = 0.0
     s2 = s * s
-    series = s2 <= _SERIES_LIMIT * rp * rp
+    terms = _series_terms(s, rp)
     inv_rp = 1.0 / rp
     for j in range(size):
         c, sin2, weight = rows[_COS, j], rows[_SIN2, j], rows[_WEIGHT, j]
         x = s2 * sin2
-        _, inv_root = _pin_curvature(x, rp, inv_rp, series)
+        _, inv_root = _pin_curvature(x, rp, inv_rp, terms)
         pen = max(rows[_DEPTH, j], 0.0)
         along = c - s * sin2 * inv_root
         bend = -sin2 * inv_root * (1.0 + x * inv_root * inv_root)  # d2 depth / ds2
