@@ -16,6 +16,7 @@ import pytest
 from jointwear import Simulation
 from jointwear.config import load_config
 from jointwear.contact import kernel
+from jointwear.contact.balance.paper import paper_balance
 from jointwear.contact.kernel import revolution_wear
 from jointwear.geometry import BushingContour
 
@@ -82,6 +83,19 @@ def test_compiled_equals_numpy(config, model, shape):
         dense, reference = fast.solution().pressure, numpy_path.solution().pressure
         assert relative(dense, reference) <= 1e-12
         np.testing.assert_allclose(fast.peak_pressure, reference.max(axis=1), rtol=1e-12)
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_fast_solvers_solve_the_stated_balance(config, model):
+    """The plain statement of eqs. (5)/(7) on every node (balance.paper) gives the offsets
+    of the compiled kernel and of the NumPy window solver."""
+    args, options = revolution_inputs(config, model, "worn")
+    contour, pin, load, azimuth, _, law, _ = args
+    rows = slice(0, None, 12)
+    stated = paper_balance(contour, pin, load[rows], azimuth[rows], law)
+    for compiled in (True, False):
+        result = revolution_wear(*args, compiled=compiled, **options)
+        assert relative(result.offset[rows], stated) <= 1e-12
 
 
 def test_dense_pressure_is_the_balanced_state(config):

@@ -23,14 +23,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from jointwear.contact.balance import (
-    _check,
-    _conformal_depth,
-    _curvature,
-    check_reach,
-    checked_loads,
-    solve_contact,
-)
+from jointwear.contact.balance.guesses import _conformal_depth, _curvature
+from jointwear.contact.balance.solve import _check, check_reach, checked_loads, solve_contact
 from jointwear.contact.laws import PowerLaw, SpringLaw
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ContactError
