@@ -20,9 +20,9 @@ root. Arguments travel in tuples:
   [m] and spring areas [m^2], and ``cos``/``sin`` of the window offsets ``o dtheta``;
 * ``grid``: ``(pad, quarter, dtheta, rp, exponent, coefficient)``;
 * ``lines``: per load ``(centre, cos_shift, sin_shift, load_gap, load_area, gap_min,
-  lower, upper)``, the node nearest the load line, the load line's angle from it, a
-  gap and area factor per load (the symmetric law's circle), the smallest gap the pin
-  can meet, and the bracket of the offset [m];
+  lower, upper, shift)``, the node nearest the load line, the load line's angle from
+  it, a gap and area factor per load (the symmetric law's circle), the smallest gap
+  the pin can meet, the bracket of the offset [m] and the angle [rad];
 * ``line``: one load's ``(base, cos_shift, sin_shift, load_gap, load_area)``;
 * ``work``: the window scratch of one load, rows ``_COS`` .. ``_DEPTH`` by offset.
 """
@@ -42,6 +42,8 @@ CONVERGED, NOT_CONVERGED = 0, 1
 _SHORT_SERIES, _LONG_SERIES = 1e-4, 1e-2
 _EPS = 2.220446049250313e-16
 _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
+#: spring laws of :func:`_springs`: ``p = k delta`` and ``p = k delta^1.5``
+_LINEAR, _HERTZIAN = 1, 2
 #: rows of ``work``; the first five are set once per load by :func:`_prepare`
 _COS, _SIN2, _WEIGHT, _GAP, _SIDE, _PRESS, _DEPTH = range(7)
 
@@ -73,34 +75,28 @@ def _prepare(nodes, grid, line, width, work):
 
 
 @njit(**_FLAGS)
-def _evaluate(s, rp, exponent, width, higher, work):
-    """Springs of one load at offset ``s`` [m]: (force, slope, second, third derivative).
+def _evaluate(s, rp, exponent, width, work):
+    """Springs of one load at offset ``s`` [m]: (force [N], slope [N/m], curvature [N/m^2]).
 
     Reads the window prepared in ``work``, writes ``p / k`` and the depth [m] of each
-    node to its rows ``_PRESS`` and ``_DEPTH``. ``higher`` asks for the second and third
-    derivatives of a power law 1.5 (linear springs always give the second; NaN where
-    not computed). Each combination of exponent (1 or 1.5) and curvature form is a loop
-    of its own whose constants LLVM folds: a branch (or an untaken ``pow``) inside the
-    loop keeps it from being vectorised (up to 10x slower).
+    node to its rows ``_PRESS`` and ``_DEPTH``; the curvature only for linear springs
+    (NaN otherwise). Each combination of exponent (1 or 1.5) and curvature form is a
+    loop of its own whose constants LLVM folds: a branch (or an untaken ``pow``) inside
+    the loop keeps it from being vectorised (up to 10x slower).
     """
     terms = _series_terms(s, rp)
-    if exponent == 1.5:
+    # (literal arguments: each call below is a loop of its own)
+    if exponent == 1.0:
         if terms == 4:
-            total, slope, second = _springs(s, rp, width, work, True, 4)
-        elif terms == 8:
-            total, slope, second = _springs(s, rp, width, work, True, 8)
-        else:
-            total, slope, second = _springs(s, rp, width, work, True, 0)
-        if higher:
-            second, third = _curvatures(s, rp, width, work)
-            return total, slope, second, third
-    elif terms == 4:
-        total, slope, second = _springs(s, rp, width, work, False, 4)
-    elif terms == 8:
-        total, slope, second = _springs(s, rp, width, work, False, 8)
-    else:
-        total, slope, second = _springs(s, rp, width, work, False, 0)
-    return total, slope, second, np.nan
+            return _springs(s, rp, width, work, _LINEAR, 4)
+        if terms == 8:
+            return _springs(s, rp, width, work, _LINEAR, 8)
+        return _springs(s, rp, width, work, _LINEAR, 0)
+    if terms == 4:
+        return _springs(s, rp, width, work, _HERTZIAN, 4)
+    if terms == 8:
+        return _springs(s, rp, width, work, _HERTZIAN, 8)
+    return _springs(s, rp, width, work, _HERTZIAN, 0)
 
 
 @njit(inline="always", **_FLAGS)
@@ -136,12 +132,15 @@ def _pin_curvature(x, rp, inv_rp, terms):
 
 
 @njit(inline="always", **_FLAGS)
-def _springs(s, rp, width, work, power15, terms):
+def _springs(s, rp, width, work, law, terms):
     """``sum_j p_j A_j cos(phi_j)``, its slope in ``s`` and (linear springs) its curvature.
 
+    ``law`` is ``_LINEAR`` (``p = k delta``) or ``_HERTZIAN`` (``p = k delta^1.5``).
     Linear springs: between two nodes coming into contact the force is linear in ``s``
     but for the pin's curvature, ``f'' = sum_j k A_j cos(phi_j) delta_j''`` over the nodes
-    in contact, a few flops more; with it the step is Chebyshev's (power law 1.5: NaN).
+    in contact, a few flops more; with it the step is Chebyshev's. For ``delta^1.5`` the
+    curvature would cost a division per node (``p'' ~ delta^-1/2``), more than the third
+    evaluation it saves a cold start: NaN (the step uses ``kappa``).
     """
     first, size = work.shape[1] // 2 - width, 2 * width + 1
     rows = work[:, first : first + size]
@@ -152,54 +151,27 @@ def _springs(s, rp, width, work, power15, terms):
     inv_rp = 1.0 / rp
     for j in range(size):
         c, sin2, weight = rows[_COS, j], rows[_SIN2, j], rows[_WEIGHT, j]
-        curv, inv_root = _pin_curvature(s2 * sin2, rp, inv_rp, terms)
+        x = s2 * sin2
+        curv, inv_root = _pin_curvature(x, rp, inv_rp, terms)
         d = s * c - rows[_GAP, j] - curv
         pen = max(d, 0.0)
         along = c - s * sin2 * inv_root  # d depth / ds
-        if power15:
-            r = math.sqrt(pen)
-            p = pen * r
-            slope += weight * 1.5 * r * along
-        else:
+        if law == _LINEAR:
             p = pen
             touching = 1.0 if pen > 0.0 else 0.0
             slope += weight * along * touching
-            second -= weight * touching * sin2 * inv_root * (1.0 + s2 * sin2 * inv_root * inv_root)
+            # d2 depth / ds2
+            second -= weight * touching * sin2 * inv_root * (1.0 + x * inv_root * inv_root)
+        else:
+            r = math.sqrt(pen)
+            p = pen * r
+            slope += weight * 1.5 * r * along
         total += weight * p
         rows[_PRESS, j] = p
         rows[_DEPTH, j] = d
-    if power15:
+    if law == _HERTZIAN:
         second = np.nan
     return total, slope, second
-
-
-@njit(**_FLAGS)
-def _curvatures(s, rp, width, work):
-    """Second and (leading term of the) third derivative of the force, ``p = k delta^1.5``.
-
-    ``f'' = sum_j w_j (p''(delta_j) delta_j'^2 + p'(delta_j) delta_j'')`` and
-    ``f''' ~ sum_j w_j p'''(delta_j) delta_j'^3`` (``p''' ~ delta^-1.5`` dominates where a
-    node barely touches), ``w_j = A_j cos(phi_j)``, from the depths of the evaluation.
-    """
-    first, size = work.shape[1] // 2 - width, 2 * width + 1
-    rows = work[:, first : first + size]
-    second = 0.0
-    third = 0.0
-    s2 = s * s
-    terms = _series_terms(s, rp)
-    inv_rp = 1.0 / rp
-    for j in range(size):
-        c, sin2, weight = rows[_COS, j], rows[_SIN2, j], rows[_WEIGHT, j]
-        x = s2 * sin2
-        _, inv_root = _pin_curvature(x, rp, inv_rp, terms)
-        pen = max(rows[_DEPTH, j], 0.0)
-        along = c - s * sin2 * inv_root
-        bend = -sin2 * inv_root * (1.0 + x * inv_root * inv_root)  # d2 depth / ds2
-        r = math.sqrt(pen)
-        inv_r = r / (pen + 1e-300)  # 1 / sqrt(depth) in contact, 0 elsewhere
-        second += weight * (0.75 * inv_r * along * along + 1.5 * r * bend)
-        third -= weight * 0.375 * inv_r * inv_r * inv_r * along * along * along
-    return second, third
 
 
 @njit(**_FLAGS)
@@ -216,26 +188,20 @@ def _reach(s, gap_min, dtheta, quarter):
 
 
 @njit(**_FLAGS)
-def _step(s, f, slope, total, second, third, curvature):
-    """Newton's step, Chebyshev's where a curvature is known, plus a cubic refinement.
+def _step(s, f, slope, total, second, curvature):
+    """Chebyshev's step: with the curvature ``second`` where known, else from ``kappa``.
 
-    Without ``second`` the Chebyshev term comes from ``kappa`` (``curvature``) of a
-    force ``~ u^m`` (:func:`jointwear.contact.balance._curvature`).
+    ``kappa`` (``curvature``) is that of a force ``~ u^m``
+    (:func:`jointwear.contact.balance.guesses._curvature`).
     """
     newton = -f / slope
     if not math.isnan(second):
-        change = newton * (1.0 + 0.5 * second / (slope * slope) * f)
-        if not math.isnan(third):
-            value = f + change * (slope + change * (0.5 * second + change * third / 6.0))
-            correction = value / (slope + change * (second + 0.5 * change * third))
-            if abs(correction) <= 0.5 * abs(change):
-                change -= correction
-        return s + change
+        return s + newton * (1.0 + 0.5 * second / (slope * slope) * f)
     return s + newton * (1.0 + 0.5 * curvature * f / total)
 
 
 @njit(**_FLAGS)
-def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, higher, work):
+def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work):
     """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
 
     Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
@@ -261,11 +227,9 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, higher, 
         if width > prepared:
             prepared = width
             _prepare(nodes, grid, line, prepared, work)
-        total, slope, second, third = _evaluate(s, rp, exponent, width, higher, work)
+        total, slope, second = _evaluate(s, rp, exponent, width, work)
         f = total - load
         error = abs(f)
-        # far off (a cold start's first steps): keep taking fourth-order steps
-        higher = higher and error > 1e-6 * load
         if error <= max(atol, 8.0 * _EPS * total):
             return s, total, slope, width, it, True
         if slope > 0.0 and error <= ulps * _EPS * abs(s) * slope:
@@ -279,7 +243,7 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, higher, 
             lo = s
         else:
             hi = s
-        new = _step(s, f, slope, total, second, third, curvature)
+        new = _step(s, f, slope, total, second, curvature)
         if not (lo < new < hi):
             new = 0.5 * (lo + hi)
         bracket = hi - lo
@@ -299,11 +263,11 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     otherwise from its predecessor's balance moved by the change of load (a Chebyshev
     step) plus the predecessor's own miss (on a worn contour the force curve moves with
     the azimuth, smoothly from load to load), the first one from the conformal estimate
-    ``conformal`` [m], and takes fourth-order steps while far off. Out: ``floats`` rows
+    ``conformal`` [m] (three evaluations a load, against two warm). Out: ``floats`` rows
     offset [m], force [N], tangential force [N], left and right half-angle [rad], peak
     pressure [Pa]; ``counts`` rows iterations, springs left and right, status.
     """
-    centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper = lines
+    centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
     pad, quarter, dtheta, coefficient = grid[0], grid[1], grid[2], grid[5]
     work = np.zeros((7, 2 * quarter + 1))
@@ -336,7 +300,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
             s = conformal[k]
         s, total, slope, width, its, ok = _balance(
             load[k], s, lower[k], upper[k], gap_min[k], nodes, grid, line, solver,
-            not have_guess, work,
+            work,
         )  # fmt: skip
         floats[0, k] = s
         floats[1, k] = total
@@ -348,42 +312,44 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         first, size = quarter - width, 2 * width + 1
         rows = work[:, first : first + size]
         start = base - width
-        floats[2, k] = _settle(sliding[k], rows, wear_ext[start : start + size])
-        floats[5, k] = coefficient * _peak(rows[_PRESS])
-        shift = math.atan2(sin_shift[k], cos_shift[k])
+        floats[2, k], top, right, left = _settle(
+            sliding[k], rows, wear_ext[start : start + size], width
+        )
+        floats[5, k] = coefficient * top
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
-            rows[_DEPTH], width, dtheta, shift
+            rows[_DEPTH], width, dtheta, shifts[k], left, right
         )
 
 
-@njit(**_FLAGS)
-def _settle(ds, rows, wear):
-    """Add ``p ds / k`` of one load to its nodes (``wear``); return its tangential force.
+@njit(cache=True, error_model="numpy", fastmath=True)
+def _settle(ds, rows, wear, width):
+    """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, peak, springs).
 
-    Every node of the window is added (``p`` is 0 out of contact): no branch, one
-    vectorised loop.
+    Every node of the window is added (``p`` is 0 out of contact): one loop, no branch,
+    vectorised (``fastmath``: ``p`` and the depths are never NaN, so the max vectorises
+    too). The springs in contact are counted right and left of the centre column.
     """
     sideways = 0.0
+    top = 0.0
+    right = 0
+    left = 0
     for j in range(wear.size):
         p = rows[_PRESS, j]
         wear[j] += ds * p
         sideways += rows[_SIDE, j] * p
-    return sideways
-
-
-@njit(cache=True, fastmath=True)
-def _peak(press):
-    """Largest of ``press`` (>= 0, never NaN: ``fastmath`` lets the max vectorise)."""
-    top = 0.0
-    for j in range(press.size):
-        top = max(top, press[j])
-    return top
+        top = max(top, p)
+        touching = rows[_DEPTH, j] > 0.0
+        right += touching and j < width
+        left += touching and j > width
+    return sideways, top, right, left
 
 
 @njit(**_FLAGS)
-def _extent(depth, width, dtheta, shift):
+def _extent(depth, width, dtheta, shift, n_left, n_right):
     """Contact half-angles left and right of the load line [rad], and springs in contact.
 
+    ``n_left``, ``n_right``: springs in contact off the centre column (the centre
+    column's side is the sign of ``shift``).
     ``depth`` is the window (offsets ``-width .. width``). The outermost node in contact
     each side is found by scanning in from the window's edges (a few nodes: the window
     is the pin's reach); the edge lies between it and the next node out, interpolated
@@ -397,12 +363,6 @@ def _extent(depth, width, dtheta, shift):
     first = 0
     while not depth[first] > 0.0:
         first += 1
-    n_left = 0
-    n_right = 0
-    for j in range(first, last + 1):
-        touching = depth[j] > 0.0
-        n_left += touching and j > width
-        n_right += touching and j < width
     if depth[width] > 0.0:
         n_left += shift > 0.0
         n_right += shift < 0.0
@@ -439,7 +399,7 @@ def dense_pressure(offset, load, nodes, grid, lines, out):
         line = (centre[k] + pad, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
         width = _reach(offset[k], gap_min[k], dtheta, quarter)
         _prepare(nodes, grid, line, width, work)
-        _evaluate(offset[k], rp, exponent, width, False, work)
+        _evaluate(offset[k], rp, exponent, width, work)
         for o in range(-width, width + 1):
             if work[_DEPTH, o + quarter] > 0.0:
                 out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS, o + quarter]

@@ -153,8 +153,8 @@ class _Lines:
         dtheta = 2 * np.pi / nodes
         wrapped = np.mod(azimuth, 2 * np.pi)
         self.centre = np.rint(wrapped / dtheta).astype(np.int64)
-        shift = self.centre * dtheta - wrapped
-        self.cos_shift, self.sin_shift = np.cos(shift), np.sin(shift)
+        self.shift = self.centre * dtheta - wrapped
+        self.cos_shift, self.sin_shift = np.cos(self.shift), np.sin(self.shift)
         self.stencil = RadiusStencil.at(nodes, wrapped)
         self.quarter = nodes // 4
         self.pad = self.quarter + 1
@@ -327,7 +327,7 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
     )  # fmt: skip
     per_load = (
         lines.centre, lines.cos_shift, lines.sin_shift, load_gap, load_area, gap_min, lower,
-        upper,
+        upper, lines.shift,
     )  # fmt: skip
     return nodes, grid, per_load, centre_gap, lines.padded
 
