@@ -45,7 +45,7 @@ _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contra
 #: spring laws of :func:`_springs`: ``p = k delta`` and ``p = k delta^1.5``
 _LINEAR, _HERTZIAN = 1, 2
 #: rows of ``work``; the first five are set once per load by :func:`_prepare`
-_COS, _SIN2, _WEIGHT, _GAP, _SIDE, _PRESS, _DEPTH = range(7)
+_COS, _SIN2, _WEIGHT, _GAP, _SIDE, _PRESS, _DEPTH, _ALONG = range(8)
 
 
 @njit(**_FLAGS)
@@ -169,9 +169,36 @@ def _springs(s, rp, width, work, law, terms):
         total += weight * p
         rows[_PRESS, j] = p
         rows[_DEPTH, j] = d
+        rows[_ALONG, j] = along
     if law == _HERTZIAN:
         second = np.nan
     return total, slope, second
+
+
+@njit(**_FLAGS)
+def _springs_moved(s, step, width, work, law):
+    """:func:`_springs` after a small step [m] from the last evaluation, without the pin
+    curvature: ``delta_j += step delta_j'`` (the neglected ``step^2 delta_j'' / 2`` is below
+    ``eps s / 16``, see :func:`_balance`); the slope keeps the last ``delta_j'``."""
+    first, size = work.shape[1] // 2 - width, 2 * width + 1
+    rows = work[:, first : first + size]
+    total = 0.0
+    slope = 0.0
+    for j in range(size):
+        weight, along = rows[_WEIGHT, j], rows[_ALONG, j]
+        d = rows[_DEPTH, j] + step * along
+        pen = max(d, 0.0)
+        if law == _LINEAR:
+            p = pen
+            slope += weight * along * (1.0 if pen > 0.0 else 0.0)
+        else:
+            r = math.sqrt(pen)
+            p = pen * r
+            slope += weight * 1.5 * r * along
+        total += weight * p
+        rows[_PRESS, j] = p
+        rows[_DEPTH, j] = d
+    return total, slope
 
 
 @njit(**_FLAGS)
@@ -222,12 +249,23 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work):
     width = 1
     total = 0.0
     slope = 0.0
+    # a step below this [m] moves every depth by step * delta' to within eps s / 16:
+    # |delta''| <= 2 / R_p while s <= R_p / 2
+    small = math.sqrt(_EPS * abs(s) * rp / 32.0) if s <= 0.5 * rp else 0.0
+    law = _LINEAR if exponent == 1.0 else _HERTZIAN
+    previous = np.nan
     for it in range(1, max_iterations + 1):
-        width = _reach(s, gap_min, dtheta, quarter)
-        if width > prepared:
-            prepared = width
-            _prepare(nodes, grid, line, prepared, work)
-        total, slope, second = _evaluate(s, rp, exponent, width, work)
+        reach = _reach(s, gap_min, dtheta, quarter)
+        if abs(s - previous) <= small and reach <= width:
+            total, slope = _springs_moved(s, s - previous, width, work, law)
+            second = np.nan
+        else:
+            width = reach
+            if width > prepared:
+                prepared = width
+                _prepare(nodes, grid, line, prepared, work)
+            total, slope, second = _evaluate(s, rp, exponent, width, work)
+        previous = s
         f = total - load
         error = abs(f)
         if error <= max(atol, 8.0 * _EPS * total):
@@ -270,7 +308,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
     pad, quarter, dtheta, coefficient = grid[0], grid[1], grid[2], grid[5]
-    work = np.zeros((7, 2 * quarter + 1))
+    work = np.zeros((8, 2 * quarter + 1))
     previous_s = np.nan
     previous_total = 0.0
     previous_slope = 0.0
@@ -392,7 +430,7 @@ def dense_pressure(offset, load, nodes, grid, lines, out):
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min = lines[:6]
     pad, quarter, dtheta, rp, exponent, coefficient = grid
     nodes_count = out.shape[1]
-    work = np.zeros((7, 2 * quarter + 1))
+    work = np.zeros((8, 2 * quarter + 1))
     for k in range(offset.size):
         if load[k] <= 0.0:
             continue
