@@ -132,6 +132,16 @@ def _pin_curvature(x, rp, inv_rp, terms):
 
 
 @njit(inline="always", **_FLAGS)
+def _spring(depth, law):
+    """``p / k`` and ``p' / k`` of one spring at ``depth`` [m] (0 out of contact)."""
+    pen = max(depth, 0.0)
+    if law == _LINEAR:
+        return pen, 1.0 if pen > 0.0 else 0.0
+    root = math.sqrt(pen)
+    return pen * root, 1.5 * root
+
+
+@njit(inline="always", **_FLAGS)
 def _springs(s, rp, width, work, law, terms):
     """``sum_j p_j A_j cos(phi_j)``, its slope in ``s`` and (linear springs) its curvature.
 
@@ -154,19 +164,12 @@ def _springs(s, rp, width, work, law, terms):
         x = s2 * sin2
         curv, inv_root = _pin_curvature(x, rp, inv_rp, terms)
         d = s * c - rows[_GAP, j] - curv
-        pen = max(d, 0.0)
         along = c - s * sin2 * inv_root  # d depth / ds
-        if law == _LINEAR:
-            p = pen
-            touching = 1.0 if pen > 0.0 else 0.0
-            slope += weight * along * touching
-            # d2 depth / ds2
-            second -= weight * touching * sin2 * inv_root * (1.0 + x * inv_root * inv_root)
-        else:
-            r = math.sqrt(pen)
-            p = pen * r
-            slope += weight * 1.5 * r * along
+        p, stiffness = _spring(d, law)
         total += weight * p
+        slope += weight * stiffness * along
+        if law == _LINEAR:  # d2 depth / ds2 where in contact
+            second -= weight * stiffness * sin2 * inv_root * (1.0 + x * inv_root * inv_root)
         rows[_PRESS, j] = p
         rows[_DEPTH, j] = d
         rows[_ALONG, j] = along
@@ -187,15 +190,9 @@ def _springs_moved(s, step, width, work, law):
     for j in range(size):
         weight, along = rows[_WEIGHT, j], rows[_ALONG, j]
         d = rows[_DEPTH, j] + step * along
-        pen = max(d, 0.0)
-        if law == _LINEAR:
-            p = pen
-            slope += weight * along * (1.0 if pen > 0.0 else 0.0)
-        else:
-            r = math.sqrt(pen)
-            p = pen * r
-            slope += weight * 1.5 * r * along
+        p, stiffness = _spring(d, law)
         total += weight * p
+        slope += weight * stiffness * along
         rows[_PRESS, j] = p
         rows[_DEPTH, j] = d
     return total, slope
