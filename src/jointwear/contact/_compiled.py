@@ -24,7 +24,10 @@ root. Arguments travel in tuples:
   it, a gap and area factor per load (the symmetric law's circle), the smallest gap
   the pin can meet, the bracket of the offset [m] and the angle [rad];
 * ``line``: one load's ``(base, cos_shift, sin_shift, load_gap, load_area)``;
-* ``work``: the window scratch of one load, rows ``_COS`` .. ``_DEPTH`` by offset.
+* ``work``: the window scratch of one load, rows ``_COS`` .. ``_ALONG`` by offset.
+
+Every helper is inlined into :func:`revolution` (``inline="always"``): a call that
+passes arrays costs reference counting of each, which made a revolution twice as slow.
 """
 
 from __future__ import annotations
@@ -48,7 +51,7 @@ _LINEAR, _HERTZIAN = 1, 2
 _COS, _SIN2, _WEIGHT, _GAP, _SIDE, _PRESS, _DEPTH, _ALONG = range(8)
 
 
-@njit(**_FLAGS)
+@njit(inline="always", **_FLAGS)
 def _prepare(nodes, grid, line, width, work):
     """One load's window geometry into ``work`` (rows ``_COS`` .. ``_SIDE``).
 
@@ -74,7 +77,7 @@ def _prepare(nodes, grid, line, width, work):
         rows[_SIDE, j] = factor * area[j] * sn
 
 
-@njit(**_FLAGS)
+@njit(inline="always", **_FLAGS)
 def _evaluate(s, rp, exponent, width, work):
     """Springs of one load at offset ``s`` [m]: (force [N], slope [N/m], curvature [N/m^2]).
 
@@ -178,7 +181,7 @@ def _springs(s, rp, width, work, law, terms):
     return total, slope, second
 
 
-@njit(**_FLAGS)
+@njit(inline="always", **_FLAGS)
 def _springs_moved(s, step, width, work, law):
     """:func:`_springs` after a small step [m] from the last evaluation, without the pin
     curvature: ``delta_j += step delta_j'`` (the neglected ``step^2 delta_j'' / 2`` is below
@@ -198,7 +201,7 @@ def _springs_moved(s, step, width, work, law):
     return total, slope
 
 
-@njit(**_FLAGS)
+@njit(inline="always", **_FLAGS)
 def _reach(s, gap_min, dtheta, quarter):
     """Window half-width [nodes] holding every node that can touch at offset ``s`` [m].
 
@@ -211,7 +214,7 @@ def _reach(s, gap_min, dtheta, quarter):
     return min(max(width, 1), quarter)
 
 
-@njit(**_FLAGS)
+@njit(inline="always", **_FLAGS)
 def _step(s, f, slope, total, second, curvature):
     """Chebyshev's step: with the curvature ``second`` where known, else from ``kappa``.
 
@@ -224,7 +227,7 @@ def _step(s, f, slope, total, second, curvature):
     return s + newton * (1.0 + 0.5 * curvature * f / total)
 
 
-@njit(**_FLAGS)
+@njit(inline="always", **_FLAGS)
 def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work):
     """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
 
@@ -356,13 +359,12 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         )
 
 
-@njit(cache=True, error_model="numpy", fastmath=True)
+@njit(inline="always", **_FLAGS)
 def _settle(ds, rows, wear, width):
     """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, peak, springs).
 
-    Every node of the window is added (``p`` is 0 out of contact): one loop, no branch,
-    vectorised (``fastmath``: ``p`` and the depths are never NaN, so the max vectorises
-    too). The springs in contact are counted right and left of the centre column.
+    Every node of the window is added (``p`` is 0 out of contact): one loop, no branch.
+    The springs in contact are counted right and left of the centre column.
     """
     sideways = 0.0
     top = 0.0
@@ -379,7 +381,7 @@ def _settle(ds, rows, wear, width):
     return sideways, top, right, left
 
 
-@njit(**_FLAGS)
+@njit(inline="always", **_FLAGS)
 def _extent(depth, width, dtheta, shift, n_left, n_right):
     """Contact half-angles left and right of the load line [rad], and springs in contact.
 
@@ -406,7 +408,7 @@ def _extent(depth, width, dtheta, shift, n_left, n_right):
     return max(left, 0.0), max(right, 0.0), n_left, n_right
 
 
-@njit(**_FLAGS)
+@njit(inline="always", **_FLAGS)
 def _edge(inside, outside, depth, width, dtheta, shift):
     """Angle of a contact edge [rad], between the last node in and the next one out."""
     d_in = depth[inside]
