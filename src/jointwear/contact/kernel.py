@@ -102,16 +102,21 @@ class RevolutionWear:
     _context: Any = None
 
     def solution(self) -> ContactSolution:
-        """The revolution as a :class:`ContactSolution`; the (M, N) pressure on first use."""
+        """The revolution as a :class:`ContactSolution`; the (M, N) pressure, the
+        eccentricity and the penetration are assembled when first read."""
         if self._solution is not None:
             return self._solution
         _, _, azimuth, law, centre_gap = self._context
-        unit = np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
+        lazy = {
+            "pressure": self._dense,
+            "eccentricity": lambda: (
+                self.offset[:, None] * np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
+            ),
+            "penetration": lambda: np.maximum(self.offset - centre_gap, 0.0),
+        }
         return _WindowSolution(
-            self._dense,
+            lazy,
             self,
-            eccentricity=self.offset[:, None] * unit,
-            penetration=np.maximum(self.offset - centre_gap, 0.0),
             normal_force=self.normal_force,
             tangential_force=self.tangential_force,
             half_angle_left=self.half_angle_left,
@@ -124,19 +129,24 @@ class RevolutionWear:
 
 
 class _WindowSolution(ContactSolution):
-    """A :class:`ContactSolution` whose dense pressure is assembled when first read."""
+    """A :class:`ContactSolution` whose bulkier fields are assembled when first read.
 
-    def __init__(self, dense, revolution: RevolutionWear, **fields: Any) -> None:
+    Inside a run only the wear (``revolution``), the iterations and the half-angles are
+    read; the dense pressure alone would be an (M, N) array per revolution.
+    """
+
+    def __init__(self, lazy: dict[str, Any], revolution: RevolutionWear, **fields: Any):
         for name, value in fields.items():
             object.__setattr__(self, name, value)
         object.__setattr__(self, "revolution", revolution)
-        object.__setattr__(self, "_dense", dense)
+        object.__setattr__(self, "_lazy", lazy)
 
     def __getattr__(self, name: str) -> Any:
-        # only reached for attributes not set yet: the pressure, on first use
-        if name == "pressure" and "_dense" in self.__dict__:
-            value = self.__dict__["_dense"]()
-            object.__setattr__(self, "pressure", value)
+        # only reached for attributes not set yet: a lazy field, on first use
+        lazy = self.__dict__.get("_lazy", {})
+        if name in lazy:
+            value = lazy[name]()
+            object.__setattr__(self, name, value)
             return value
         raise AttributeError(name)
 
