@@ -55,7 +55,7 @@ CONTACT_MODELS.add("hertz", hertz.HertzLaw)
 CONTACT_MODELS.add("winkler", winkler.spring_law)
 CONTACT_MODELS.add("asymmetric-winkler", asymmetric_winkler.spring_law)
 CONTACT_MODELS.add("nlcp", nlcp.spring_law)
-# reference solutions (issue 8): exact elasticity and finite elements
+# reference solutions: exact elasticity and finite elements
 CONTACT_MODELS.add("persson", persson_model)
 CONTACT_MODELS.add("fem", fem_model)
 
