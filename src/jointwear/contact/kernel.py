@@ -172,6 +172,10 @@ class _Lines:
         self.cos_o, self.sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
         #: node of each position of an array padded by ``pad`` nodes each side
         self.padded = np.arange(-self.pad, nodes + 1 + self.pad) % nodes
+        # constants of the kernel's arguments, never written (not flagged read-only:
+        # numba would compile the kernel again for read-only arrays)
+        self.zeros, self.ones = np.zeros(azimuth.size), np.ones(azimuth.size)
+        self.zeros_padded = np.zeros(self.padded.size)
 
 
 def _lines(nodes: int, azimuth: FloatArray) -> _Lines:
@@ -314,22 +318,27 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
     # r - R_p is exact (Sterbenz); the symmetric law's springs lie on the circle through
     # the compression centre, one gap per load
     if law.symmetric:
-        gap_ext, load_gap, gap_min = np.zeros(lines.padded.size), centre_gap, centre_gap
+        gap_ext, load_gap, gap_min = lines.zeros_padded, centre_gap, centre_gap
+        check_reach(gap_min, load, azimuth, rp)
     else:
-        gap_ext = np.take(radius - rp, lines.padded)
-        load_gap, gap_min = np.zeros(m), np.full(m, float(radius.min()) - rp)
+        padded_radius = radius.take(lines.padded)
+        gap_ext, load_gap = padded_radius - rp, lines.zeros
+        smallest = float(radius.min()) - rp
+        if smallest >= 0.999 * rp:
+            check_reach(np.full(m, smallest), load, azimuth, rp)
+        gap_min = np.full(m, smallest)
     if law.force_area is not None:
-        area_ext, load_area = np.full(lines.padded.size, float(law.force_area)), np.ones(m)
+        area_ext, load_area = np.full(lines.padded.size, float(law.force_area)), lines.ones
     elif law.symmetric:
         area_ext, load_area = np.full(lines.padded.size, spring), centre_radius
     else:
-        area_ext, load_area = np.take(radius, lines.padded) * spring, np.ones(m)
-    lower = gap_min.copy()
+        area_ext, load_area = padded_radius * spring, lines.ones
+    # the bracket: no node touches at the smallest gap; the pin's reach or the wall
+    lower = gap_min
     upper = np.full(m, 0.999 * rp)
     if max_penetration is not None:
-        upper = np.minimum(upper, centre_gap + max_penetration)
-    upper = np.maximum(upper, lower)
-    check_reach(lower, load, azimuth, rp)
+        np.minimum(upper, centre_gap + max_penetration, out=upper)
+    np.maximum(upper, lower, out=upper)
     nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o)
     grid = (
         lines.pad, lines.quarter, contour.dtheta, float(rp), float(law.exponent),
