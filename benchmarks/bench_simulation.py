@@ -1,4 +1,8 @@
+<<<<<<< HEAD
 """Speed of the wear simulation: fast path vs reference, long runs, memory, start-up.
+=======
+"""Speed of the wear simulation: compiled kernel and fast path vs reference, long runs, memory.
+>>>>>>> kernel
 
 Run from the repository root::
 
@@ -80,13 +84,13 @@ def one_revolution(config: Config):
     """The fast path: contact of every step of one revolution + Archard wear, cold."""
     simulation = Simulation(config)
     contour = simulation.initial_contour()
-    _ = simulation.joint_load
+    _ = simulation.load_cycle
 
     def fast():
         return simulation.wear_per_revolution(simulation.contact(contour))
 
     def reference(steps=None):
-        load = simulation.joint_load
+        load = simulation.load_cycle
         index = slice(None) if steps is None else steps
         return reference_revolution(
             contour.radius,
@@ -107,7 +111,7 @@ def bench_revolution(quick: bool) -> None:
     _, fast, reference = one_revolution(config)
     wall, cpu = timed(fast, 7 if quick else 31)
     ref_wall, ref_cpu = timed(reference, 2 if quick else 5)
-    row("1 rev 360x360, fast path, cold (contact + wear)", ms(wall, cpu), "<= 2 ms")
+    row("1 rev 360x360, NumPy path, cold (contact + wear)", ms(wall, cpu), "<= 2 ms")
     row("1 rev 360x360, reference (brentq per step)", ms(ref_wall, ref_cpu))
     row(
         "1 rev 360x360, speed-up cold",
@@ -166,6 +170,214 @@ def bench_big_revolution(quick: bool) -> None:
     )
 
 
+# ---------------------------------------------------------------- the compiled kernel
+
+
+KERNEL_MODELS = ("winkler", "asymmetric-winkler", "nlcp")
+
+
+def kernel_inputs(config: Config, warm_revolutions: int = 0):
+    """A simulation of ``config`` and its contour after ``warm_revolutions`` updates."""
+    simulation = Simulation(config)
+    state = simulation.initial_state()
+    for _ in range(warm_revolutions):
+        state = simulation.step(state)
+    return simulation, state
+
+
+def bench_kernel(quick: bool) -> None:
+    """revolution_wear against the reference, per model: cold, warm, evaluation counts."""
+    from jointwear.contact.kernel import compiled_available
+
+    row("compiled kernel available (numba)", str(compiled_available()))
+    for model in KERNEL_MODELS:
+        _bench_kernel_model(model, quick)
+    config = paper(**{"contact.model": "hertz", "simulation.revolutions": 1})
+    simulation = Simulation(config)
+    contour = simulation.initial_contour()
+    _ = simulation.load_cycle
+    wall, cpu = timed(lambda: simulation.contact(contour), 7 if quick else 31)
+    row("hertz: one revolution 360x360 (contact, dense pressure)", ms(wall, cpu), "<= 3 ms")
+
+
+def _bench_kernel_model(model: str, quick: bool) -> None:
+    """Cold and warm kernel revolutions of one model against the reference."""
+    from jointwear.contact.kernel import revolution_wear
+
+    repeat = 31 if quick else 201
+    config = paper(
+        **{
+            "contact.model": model,
+            "simulation.revolutions": 15000,
+            "simulation.update_every": 1,
+        }
+    )
+    simulation, state = kernel_inputs(config, 20)
+    contour = simulation.initial_contour()
+    load = simulation.load_cycle
+    k_d = config.materials.bushing.wear_coefficient
+    args = (contour, simulation.pin, load.load, load.azimuth, simulation.sliding_distance)
+    options = {"max_penetration": config.joint.bushing_thickness}
+
+    def cold():
+        return revolution_wear(*args, simulation.law, k_d, **options)
+
+    worn = simulation._contour(state.wear_depth)
+
+    def warm():
+        # what a per-revolution update solves: the extrapolated offsets of the last one
+        return simulation.wear_per_revolution(simulation.contact(worn, state))
+
+    def reference():
+        return reference_revolution(
+            contour.radius, contour.axial_length, simulation.pin.radius, load.load,
+            load.azimuth, simulation.law, simulation.sliding_distance, k_d,
+        )  # fmt: skip
+
+    wall, cpu = timed(cold, repeat)
+    warm_wall, warm_cpu = timed(warm, repeat)
+    ref_wall, ref_cpu = timed(reference, 2 if quick else 5)
+    row(f"{model}: reference revolution 360x360 (brentq per step)", ms(ref_wall, ref_cpu))
+    row(
+        f"{model}: kernel, cold revolution (contact + wear)",
+        f"{ms(wall, cpu)}; {ref_wall / wall:.0f}x wall, {ref_cpu / cpu:.0f}x CPU",
+        ">= 500x",
+    )
+    row(
+        f"{model}: kernel, warm revolution in a run (contact + wear)",
+        f"{ms(warm_wall, warm_cpu)}; {ref_wall / warm_wall:.0f}x wall, "
+        f"{ref_cpu / warm_cpu:.0f}x CPU",
+        ">= 800x",
+    )
+    result = cold()
+    fast = simulation.contact(worn, state)
+    _, ref_wear = reference()
+    numpy_path = revolution_wear(*args, simulation.law, k_d, compiled=False, **options)
+    row(
+        f"{model}: evaluations per load, cold / warm (mean, max)",
+        f"{result.iterations.mean():.2f}, {result.iterations.max()} / "
+        f"{fast.iterations.mean():.2f}, {fast.iterations.max()}",
+        "",
+    )
+    row(
+        f"{model}: max |kernel - reference| / peak (wear); kernel vs NumPy path",
+        f"{np.abs(result.wear - ref_wear).max() / ref_wear.max():.1e}; "
+        f"{np.abs(result.wear - numpy_path.wear).max() / numpy_path.wear.max():.1e}",
+        "<= 1e-12 vs NumPy path",
+    )
+
+
+def bench_kernel_linearity(quick: bool) -> None:
+    """Cost of a cold kernel revolution against nodes and steps, up to 5760."""
+    from jointwear.contact.kernel import revolution_wear
+
+    sizes = [360, 720, 1440] if quick else [360, 720, 1440, 2880, 5760]
+    base = None
+    for key, label in (("contact.nodes", "nodes"), ("simulation.steps_per_revolution", "steps")):
+        cells = []
+        for size in sizes:
+            config = paper(
+                **{
+                    "simulation.revolutions": 1,
+                    "contact.nlcp_variant": "mesh-independent",
+                    key: size,
+                }
+            )
+            simulation = Simulation(config)
+            contour = simulation.initial_contour()
+            load = simulation.load_cycle
+            args = (
+                contour, simulation.pin, load.load, load.azimuth, simulation.sliding_distance,
+                simulation.law, config.materials.bushing.wear_coefficient,
+            )  # fmt: skip
+            _, cpu = timed(lambda args=args: revolution_wear(*args), 3 if quick else 9)
+            base = cpu if size == 360 else base
+            cells.append(f"{size}: {cpu * 1e3:.3g} ms ({cpu / base * 360 / size:.2f})")
+        row(
+            f"kernel, cold revolution vs {label} (other at 360): CPU (cost per "
+            f"{label[:-1]} / at 360)",
+            ", ".join(cells),
+            "linear: ratios <= 1",
+        )
+    if quick:
+        return
+    out = subprocess.run(
+        [sys.executable, "-c", _BIG_SCRIPT, str(PAPER), json.dumps(CALIBRATED)],
+        capture_output=True, text=True, check=True, cwd=REPO,
+    )  # fmt: skip
+    big = json.loads(out.stdout.strip().splitlines()[-1])
+    row(
+        "kernel, cold revolution 5760 x 5760 (fresh process; median of 3)",
+        f"{big['seconds'] * 1e3:.0f} ms, peak RSS {big['maxrss_kb'] / 1024:.0f} MB "
+        f"(after imports {big['baseline_kb'] / 1024:.0f} MB)",
+        "<= 400 MB",
+    )
+
+
+_BIG_SCRIPT = """
+import json, sys, time
+from jointwear import Simulation, load_config
+from jointwear.contact.kernel import revolution_wear
+
+def peak_rss_kb():
+    with open("/proc/self/status") as status:
+        for line in status:
+            if line.startswith("VmHWM:"):
+                return int(line.split()[1])
+
+overrides = {**json.loads(sys.argv[2]), "simulation.revolutions": 1, "contact.nodes": 5760,
+             "simulation.steps_per_revolution": 5760, "contact.nlcp_variant": "mesh-independent"}
+config = load_config(sys.argv[1], overrides=overrides)
+simulation = Simulation(config)
+contour = simulation.initial_contour()
+load = simulation.load_cycle
+args = (contour, simulation.pin, load.load, load.azimuth, simulation.sliding_distance,
+        simulation.law, config.materials.bushing.wear_coefficient)
+baseline = peak_rss_kb()
+times = []
+for _ in range(3):
+    t0 = time.perf_counter()
+    revolution_wear(*args)
+    times.append(time.perf_counter() - t0)
+result = {"seconds": sorted(times)[1], "maxrss_kb": peak_rss_kb(), "baseline_kb": baseline}
+print(json.dumps(result))
+"""
+
+
+def bench_kernel_start(quick: bool) -> None:
+    """Import and compile cost of the kernel, in fresh processes."""
+    script = (
+        "import time; t0 = time.perf_counter(); import numba; t1 = time.perf_counter(); "
+        "from jointwear.contact import kernel; kernel._compiled(); import numpy as np; "
+        "from jointwear.geometry import BushingContour, Pin; "
+        "from jointwear.contact.laws import PowerLaw; "
+        "c = BushingContour.circle(7.5e-3, 360, 0.02); "
+        "t2 = time.perf_counter(); "
+        "kernel.revolution_wear(c, Pin(7.45e-3), np.full(8, 200.0), np.linspace(0, 6, 8), "
+        "np.full(8, 1e-4), PowerLaw(1e14, 1.5, force_area=1e-6), 1e-13); "
+        "t3 = time.perf_counter(); print(t1 - t0, t3 - t2)"
+    )
+    env = {**os.environ}
+    with tempfile.TemporaryDirectory() as cache:
+        rows_ = []
+        for _ in range(3):  # the first one fills the empty cache
+            run_env = {**env, "NUMBA_CACHE_DIR": cache}
+            out = subprocess.run(
+                [sys.executable, "-c", script], capture_output=True, text=True, check=True,
+                env=run_env,
+            )  # fmt: skip
+            rows_.append(tuple(map(float, out.stdout.split())))
+    row(
+        "kernel start-up: import numba; first revolution (compile, empty cache)",
+        f"{rows_[0][0]:.2f} s; {rows_[0][1]:.2f} s",
+    )
+    loaded = np.median(rows_[1:], axis=0)
+    row(
+        "kernel start-up: import numba; first revolution (cache loaded)",
+        f"{loaded[0]:.2f} s; {loaded[1]:.2f} s",
+    )
+
+
 # ---------------------------------------------------------------- long runs
 
 
@@ -190,7 +402,7 @@ overrides = json.loads(sys.argv[2])
 trace = sys.argv[3] == "trace"
 config = load_config(sys.argv[1], overrides=overrides)
 simulation = Simulation(config)
-_ = simulation.joint_load
+_ = simulation.load_cycle
 import jointwear.results  # xarray: imported by every run's end, not the simulation's cost
 baseline = peak_rss_kb()
 if trace:
@@ -241,7 +453,7 @@ def bench_long_runs(quick: bool) -> None:
     row(
         f"Table 5, {revolutions} rev, update every revolution (100 profiles saved)",
         f"{per_rev['wall']:.3g} s (CPU {per_rev['cpu']:.3g} s)",
-        "<= 30 s" if revolutions == 15000 else "",
+        "<= 3 s" if revolutions == 15000 else "",
     )
     row(
         "  peak memory of that run (peak RSS, VmHWM; after imports "
@@ -267,6 +479,24 @@ def bench_long_runs(quick: bool) -> None:
         "  adaptive vs per-revolution: peak, mass",
         f"{peak * 100:+.3f} %, {mass * 100:+.3f} %",
         "within 0.5 %",
+    )
+    deep = 100_000 if quick else 1_000_000
+    runs = [
+        run_case(
+            {
+                "simulation.revolutions": deep,
+                "joint.bushing_thickness": "20 mm",
+                "simulation.saved_profiles": 100,
+            }
+        )
+        for _ in range(1 if quick else 3)
+    ]
+    row(
+        f"thick wall (20 mm), {deep} rev, adaptive ({runs[0]['updates']} updates, peak "
+        f"{runs[0]['peak'] * 1e3:.2f} mm)",
+        f"{np.median([r['wall'] for r in runs]):.3g} s "
+        f"(CPU {np.median([r['cpu'] for r in runs]):.3g} s)",
+        "<= 1.5 s" if deep == 1_000_000 else "",
     )
     traced = run_case(
         {"simulation.revolutions": revolutions, "simulation.saved_profiles": 100}, trace=True
@@ -386,10 +616,16 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="smaller sizes, fewer repeats")
     parser.add_argument(
-        "--only", nargs="*", default=None, help="sections: revolution big long linearity cold"
+        "--only",
+        nargs="*",
+        default=None,
+        help="sections: kernel kernel-linearity kernel-start revolution big long linearity cold",
     )
     args = parser.parse_args()
     sections = {
+        "kernel": bench_kernel,
+        "kernel-linearity": bench_kernel_linearity,
+        "kernel-start": bench_kernel_start,
         "revolution": bench_revolution,
         "big": bench_big_revolution,
         "long": bench_long_runs,

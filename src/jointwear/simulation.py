@@ -43,6 +43,8 @@ from jointwear import mechanism
 from jointwear.config import Config
 from jointwear.contact import ContactParameters, ContactSolution, contact_law
 from jointwear.contact import solve as solve_contact
+from jointwear.contact.kernel import revolution_wear
+from jointwear.contact.laws import SpringLaw
 from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
 from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
@@ -237,6 +239,8 @@ class Simulation:
     ) -> None:
         self.config = config
         self.wear_law = wear_law_of(config, wear_law)
+        # the fused kernel accumulates Archard's wear inside the contact solve
+        self._fused = wear_law in (None, "archard") and config.wear.law == "archard"
         self.parameters = ContactParameters.from_config(config)
         self.contact_model = config.contact.model if contact_model is None else contact_model
         self.law = contact_law(self.contact_model, self.parameters)
@@ -348,7 +352,13 @@ class Simulation:
     def _solve(
         self, contour: BushingContour, state: SimulationState | None, ahead: int
     ) -> ContactSolution:
-        """Contact solve warm-started from ``state``'s last solve, ``ahead`` revolutions on."""
+        """Contact solve warm-started from ``state``'s last solve, ``ahead`` revolutions on.
+
+        Inside the revolution loop (``state`` given), paper balance with a spring law:
+        :func:`jointwear.contact.kernel.revolution_wear`, which also accumulates the
+        revolution's wear (the solution carries it; its dense pressure is assembled only
+        when read). Without ``state`` the full NumPy solve.
+        """
         cfg = self.config.contact
         warm = {}
         if state is not None and state.warm_offset is not None:
@@ -361,6 +371,22 @@ class Simulation:
         pin = None if state is None else state.pin_wear_depth
         if pin is not None and np.any(pin):
             return self._solve_worn_pin(contour, pin, options)
+        if state is not None and self._fused and cfg.balance == "paper" and isinstance(
+            self.law, SpringLaw
+        ):
+            return revolution_wear(
+                contour,
+                self.pin,
+                self.load_cycle.load,
+                self.load_cycle.azimuth,
+                self.sliding_distance,
+                self.law,
+                self.config.materials.bushing.wear_coefficient,
+                max_penetration=self.parameters.bushing_thickness,
+                tolerance=cfg.tolerance,
+                max_iterations=cfg.max_iterations,
+                **warm,
+            ).solution()
         return solve_contact(
             contour,
             self.pin,
@@ -405,6 +431,9 @@ class Simulation:
 
     def wear_per_revolution(self, solution: ContactSolution) -> FloatArray:
         """Stage 3b: wear depth of one revolution at every node, by the wear law [m]."""
+        revolution = getattr(solution, "revolution", None)
+        if revolution is not None:  # Archard, accumulated by the fused solve from each window
+            return revolution.wear
         return self.wear_law(solution.pressure, self.sliding_distance)
 
     # ---------------------------------------------------------------- loop
@@ -607,7 +636,11 @@ class Simulation:
         ``previous_offset`` is the offset of the solve ``interval`` revolutions before
         (None: no trend to extrapolate).
         """
-        offset = _along_load(solution, self.load_cycle.azimuth)
+        revolution = getattr(solution, "revolution", None)
+        if revolution is not None:
+            offset = revolution.offset
+        else:
+            offset = _along_load(solution, self.load_cycle.azimuth)
         return {
             "warm_offset": offset,
             "warm_slope": _slope(previous_offset, offset, interval),

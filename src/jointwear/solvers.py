@@ -43,7 +43,8 @@ class RootResult:
         ``|residual| <= tolerance`` reached, or the root located to round-off:
         the bracket collapsed to a few ulps of ``x`` with
         ``|residual| <= 2 |f'(x)| * bracket width`` (a stiff equation where one
-        ulp of ``x`` moves ``f`` by more than the tolerance).
+        ulp of ``x`` moves ``f`` by more than the tolerance), or a residual that a few
+        ulps of ``x`` explain (see ``ulps`` of :func:`bracketed_newton`).
     """
 
     x: FloatArray
@@ -62,6 +63,7 @@ def bracketed_newton(
     max_iterations: int = 100,
     curvature: float = 0.0,
     polish: bool = False,
+    ulps: float = 4.0,
 ) -> RootResult:
     """Solve many increasing scalar equations ``f_i(x_i) = 0`` at once.
 
@@ -102,6 +104,13 @@ def bracketed_newton(
         is reported, but usually far closer to the root: for starting points from a loose
         tolerance, not for roots.
 
+    ulps : float
+        Round-off of the unknown [ulp]: a residual that ``ulps`` units in the last place
+        of ``x`` explain (``|f| <= ulps eps |x| |f'|``) is accepted where Newton's step
+        is below one ulp, or when it is so for the second evaluation in a row. Where
+        one ulp of ``x`` moves ``f`` by more than the tolerance, nothing is left to
+        bisect (which would otherwise go on until the bracket collapses).
+
     Returns
     -------
     RootResult
@@ -114,6 +123,7 @@ def bracketed_newton(
     slope = np.full(size, np.nan)  # last derivative func computed, per problem
     iterations = np.zeros(size, dtype=np.int64)
     converged = np.zeros(size, dtype=bool)
+    explained_before = np.zeros(size, dtype=bool)
     active = np.arange(size)
     eps = float(np.finfo(float).eps)
     half_curvature = 0.5 * curvature
@@ -136,6 +146,18 @@ def bracketed_newton(
             df = np.where(np.isnan(df), slope_old, df)
             size_f = np.abs(f)
             done = size_f <= np.maximum(rtol * scale, atol)
+            # round-off: a residual that ``ulps`` units in the last place of x explain is
+            # accepted where Newton's step is below one ulp (it would round to x, and a
+            # step the bracket rejects would bisect it), or for the second time in a row
+            ulp_x = eps * np.abs(xa)
+            explained = ~done & (size_f <= ulps * ulp_x * np.abs(df))
+            if explained.any():
+                before = explained_before if whole else explained_before[active]
+                done = done | (explained & ((size_f <= ulp_x * np.abs(df)) | before))
+            if whole:
+                explained_before = explained
+            else:
+                explained_before[active] = explained
             # shrink the bracket with the sign of the residual
             below = f < 0
             lo_a = np.where(below, xa, lo_old)

@@ -22,6 +22,7 @@ from numpy.typing import ArrayLike
 
 from jointwear.contact import asymmetric_winkler, hertz, nlcp, winkler
 from jointwear.contact.balance import solve_contact
+from jointwear.contact.kernel import RevolutionWear, revolution_wear
 from jointwear.contact.laws import (
     CallableSpringLaw,
     ContactParameters,
@@ -40,9 +41,11 @@ __all__ = [
     "ContactParameters",
     "ContactSolution",
     "PowerLaw",
+    "RevolutionWear",
     "SpringLaw",
     "contact_law",
     "effective_modulus",
+    "revolution_wear",
     "solve",
     "solve_contact",
 ]

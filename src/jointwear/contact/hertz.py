@@ -62,7 +62,7 @@ def stiffness(
     ----------
     pin_radius : float
         ``R_i`` [m].
-    bushing_radius : float
+    bushing_radius : float or ndarray
         ``R_j`` [m], > ``pin_radius``.
     pin_youngs_modulus, bushing_youngs_modulus : float
         Young's moduli [Pa].
@@ -182,20 +182,14 @@ def solve(
     r_b = contour.radius_at(azimuth)
     r_p = pin.radius
     modulus = parameters.effective_modulus
-    k = np.array(
-        [
-            stiffness(
-                r_p,
-                rb,
-                parameters.pin_youngs_modulus,
-                parameters.pin_poisson_ratio,
-                parameters.bushing_youngs_modulus,
-                parameters.bushing_poisson_ratio,
-            )
-            for rb in np.unique(r_b)
-        ]
+    k = stiffness(
+        r_p,
+        r_b,
+        parameters.pin_youngs_modulus,
+        parameters.pin_poisson_ratio,
+        parameters.bushing_youngs_modulus,
+        parameters.bushing_poisson_ratio,
     )
-    k = np.interp(r_b, np.unique(r_b), k) if k.size > 1 else np.full_like(r_b, k[0])
     penetration = (load / k) ** (1.0 / parameters.exponent)
     if max_penetration is not None and np.any(penetration > max_penetration):
         i = int(np.argmax(penetration > max_penetration))
@@ -207,9 +201,23 @@ def solve(
     a = half_width(load, b, relative, modulus)
     p0 = peak_pressure(load, b, relative, modulus)
 
-    phi = np.angle(np.exp(1j * (contour.theta[None, :] - azimuth[:, None])))
-    x = r_b[:, None] * phi
-    profile = pressure_profile(x, a[:, None], p0[:, None])
+    # the profile is nonzero only within a of the compression centre: evaluate it on a
+    # window of nodes about each load line (angle addition, one cos and sin of the
+    # offsets and of each load's shift) and scatter it into the (M, N) pressure
+    nodes, dtheta = contour.nodes, contour.dtheta
+    wrapped = np.mod(azimuth, 2 * np.pi)
+    centre = np.rint(wrapped / dtheta).astype(np.int64)
+    reach = np.minimum(a / r_b, 0.5 * np.pi)
+    width = int(min(np.ceil(float(reach.max(initial=0.0)) / dtheta) + 2, (nodes - 1) // 2))
+    offsets = np.arange(-width, width + 1)
+    shift = centre * dtheta - wrapped
+    phi = offsets * dtheta + shift[:, None]
+    cos_o, sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
+    cos_s, sin_s = np.cos(shift)[:, None], np.sin(shift)[:, None]
+    cos_phi = cos_o * cos_s - sin_o * sin_s
+    sin_phi = sin_o * cos_s + cos_o * sin_s
+    index = (centre[:, None] + offsets) % nodes
+    profile = pressure_profile(r_b[:, None] * phi, a[:, None], p0[:, None])
     # Hertz knows nothing of the geometry: past a quarter of the circumference its
     # ellipse would wrap onto the back of the bushing, where a smaller pin cannot
     # touch (and where cos(beta) < 0 would make springs pull). Cut it at 90 degrees.
@@ -218,25 +226,30 @@ def solve(
     narrow = (profile > 0).sum(axis=1) == 0
     if np.any(narrow & (load > 0)):
         rows = np.flatnonzero(narrow & (load > 0))
-        pos = np.mod(azimuth[rows], 2 * np.pi) / contour.dtheta
-        lo = np.floor(pos).astype(int) % contour.nodes
+        pos = wrapped[rows] / dtheta
+        lo = np.floor(pos).astype(int) % nodes
         frac = pos - np.floor(pos)
-        profile[rows, lo] = 1.0 - frac
-        profile[rows, (lo + 1) % contour.nodes] = frac
-    area = contour.spring_area[None, :]
-    carried = (profile * area * np.cos(phi)).sum(axis=1)
+        # the window columns of nodes lo and lo + 1
+        column = (lo - centre[rows] + width) % nodes
+        profile[rows, column] = 1.0 - frac
+        profile[rows, column + 1] = frac
+    area = contour.spring_area[index]
+    force_shape = profile * area
+    carried = (force_shape * cos_phi).sum(axis=1)
     scale = np.where(carried > 0, load / np.where(carried > 0, carried, 1.0), 0.0)
-    pressure = profile * scale[:, None]
-    force = pressure * area
+    window_pressure = profile * scale[:, None]
+    force = window_pressure * area
+    pressure = np.zeros((load.size, nodes))
+    np.put_along_axis(pressure, index, window_pressure, axis=1)
     half_angle = np.where(narrow, 0.0, np.minimum(a / r_b, 0.5 * np.pi))
-    contact = pressure > 0
+    contact = window_pressure > 0
     return ContactSolution(
         pressure=pressure,
         eccentricity=np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
         * ((r_b - r_p) + penetration)[:, None],
         penetration=penetration,
-        normal_force=(force * np.cos(phi)).sum(axis=1),
-        tangential_force=(force * np.sin(phi)).sum(axis=1),
+        normal_force=(force * cos_phi).sum(axis=1),
+        tangential_force=(force * sin_phi).sum(axis=1),
         half_angle_left=half_angle,
         half_angle_right=half_angle,
         springs_left=(contact & (phi > 0)).sum(axis=1),

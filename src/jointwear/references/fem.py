@@ -62,7 +62,7 @@ from scipy.sparse.linalg import splu
 from jointwear.contact.laws import ContactParameters
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ConfigError, ContactError, ConvergenceError, GeometryError
-from jointwear.geometry.contour import BushingContour, Pin
+from jointwear.geometry.contour import BushingContour, Pin, pin_penetration
 from jointwear.references._common import (
     ReferenceState,
     assemble_solution,
@@ -493,13 +493,7 @@ def solve_contact_fe(
     def forces(ecc: FloatArray):
         along = cos_t * ecc[0] + sin_t * ecc[1]
         across = cos_t * ecc[1] - sin_t * ecc[0]
-        lateral = np.minimum(across**2, pin_radius**2)
-        # t - r = along + sqrt(R_p^2 - across^2) - r, assembled from small terms
-        gap = (
-            along
-            - (radius - pin_radius)
-            - lateral / (np.sqrt(pin_radius**2 - lateral) + pin_radius)
-        )
+        gap = pin_penetration(along, across, radius - pin_radius, pin_radius)
         if not np.any(gap > 0):
             state["active"] = None
             return np.zeros_like(gap)
@@ -564,11 +558,7 @@ def solve_contact_fe(
     f = resultant(lam)
     along = float(ecc @ w)
     across = float(ecc @ w_perp)
-    approach = (
-        along
-        - clearance_at_load
-        - across**2 / (math.sqrt(max(pin_radius**2 - across**2, 0.0)) + pin_radius)
-    )
+    approach = float(pin_penetration(along, across, clearance_at_load, pin_radius))
     left, right = _half_angles(phi, lam / mesh.weight[rows])
     return FemState(
         theta=mesh.theta,

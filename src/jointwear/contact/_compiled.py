@@ -1,0 +1,442 @@
+"""The fused contact balance + Archard step, compiled by numba.
+
+Imported by :mod:`jointwear.contact.kernel` on first use only (``import numba`` and
+loading the cached machine code cost a few tenths of a second, which a run that never
+solves a revolution should not pay). The physics is that of
+:mod:`jointwear.contact.balance` (paper eqs. (5)/(7): the pin moves along the load
+line by ``s``, node ``j`` penetrates by ``s cos(phi_j) - g_j - (R_p - sqrt(R_p^2 - s^2
+sin^2(phi_j)))`` and the springs' force along the load balances the load); what differs
+is the arithmetic: one loop per load over the nodes the pin can reach, no temporaries,
+and the wear of a load added to the nodes as soon as it is balanced.
+
+The window of load ``k`` is read from arrays padded by a quarter circle each side
+(``ext[c + o + pad]`` is node ``(c + o) mod N``), so no loop has a modulo; loops run
+over ``range(size)`` of window views, because an index that could be negative is
+wrapped around by numba, which turns the loads into gathers (3x slower). ``fastmath``
+only reassociates the sums and contracts to FMA: no approximate division or square
+root. Arguments travel in tuples:
+
+* ``nodes``: ``(gap_ext, area_ext, cos_o, sin_o)``, the padded node gaps ``r_j - R_p``
+  [m] and spring areas [m^2], and ``cos``/``sin`` of the window offsets ``o dtheta``;
+* ``grid``: ``(pad, quarter, dtheta, rp, exponent, coefficient)``;
+* ``lines``: per load ``(centre, cos_shift, sin_shift, load_gap, load_area, gap_min,
+  lower, upper, shift)``, the node nearest the load line, the load line's angle from
+  it, a gap and area factor per load (the symmetric law's circle), the smallest gap
+  the pin can meet, the bracket of the offset [m] and the angle [rad];
+* ``line``: one load's ``(base, cos_shift, sin_shift, load_gap, load_area)``;
+* ``work``: the window scratch of one load, rows ``_COS`` .. ``_ALONG`` by offset.
+
+Every helper is inlined into :func:`revolution` (``inline="always"``): a call that
+passes arrays costs reference counting of each, which made a revolution twice as slow.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+#: results per load (``status``)
+CONVERGED, NOT_CONVERGED = 0, 1
+#: up to these ``(s / R_p)^2`` the pin-curvature term is taken from its series to ``y^4``
+#: and to ``y^8`` (exact to ~1e-17 relative there), which need neither a square root
+#: nor a division; beyond, the closed form
+_SHORT_SERIES, _LONG_SERIES = 1e-4, 1e-2
+_EPS = 2.220446049250313e-16
+_FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
+#: spring laws of :func:`_springs`: ``p = k delta`` and ``p = k delta^1.5``
+_LINEAR, _HERTZIAN = 1, 2
+#: rows of ``work``; the first five are set once per load by :func:`_prepare`
+_COS, _SIN2, _WEIGHT, _GAP, _SIDE, _PRESS, _DEPTH, _ALONG = range(8)
+
+
+@njit(inline="always", **_FLAGS)
+def _prepare(nodes, grid, line, width, work):
+    """One load's window geometry into ``work`` (rows ``_COS`` .. ``_SIDE``).
+
+    ``cos(phi_j)``, ``sin^2(phi_j)`` (angle addition from the tables), ``k A_j
+    cos(phi_j)``, the gap ``g_j`` [m] and ``k A_j sin(phi_j)``: what every evaluation of
+    the load reads, computed once instead of once per evaluation.
+    """
+    gap_ext, area_ext, cos_o, sin_o = nodes
+    quarter, coefficient = grid[1], grid[5]
+    base, cs, ss, load_gap, load_area = line
+    start, first, size = base - width, quarter - width, 2 * width + 1
+    gap, area = gap_ext[start : start + size], area_ext[start : start + size]
+    co, so = cos_o[first : first + size], sin_o[first : first + size]
+    rows = work[:, first : first + size]
+    factor = coefficient * load_area
+    for j in range(size):
+        c = co[j] * cs - so[j] * ss
+        sn = so[j] * cs + co[j] * ss
+        rows[_COS, j] = c
+        rows[_SIN2, j] = sn * sn
+        rows[_WEIGHT, j] = factor * area[j] * c
+        rows[_GAP, j] = gap[j] + load_gap
+        rows[_SIDE, j] = factor * area[j] * sn
+
+
+@njit(inline="always", **_FLAGS)
+def _evaluate(s, rp, exponent, width, work):
+    """Springs of one load at offset ``s`` [m]: (force [N], slope [N/m], curvature [N/m^2]).
+
+    Reads the window prepared in ``work``, writes ``p / k`` and the depth [m] of each
+    node to its rows ``_PRESS`` and ``_DEPTH``; the curvature only for linear springs
+    (NaN otherwise). Each combination of exponent (1 or 1.5) and curvature form is a
+    loop of its own whose constants LLVM folds: a branch (or an untaken ``pow``) inside
+    the loop keeps it from being vectorised (up to 10x slower).
+    """
+    terms = _series_terms(s, rp)
+    # (literal arguments: each call below is a loop of its own)
+    if exponent == 1.0:
+        if terms == 4:
+            return _springs(s, rp, width, work, _LINEAR, 4)
+        if terms == 8:
+            return _springs(s, rp, width, work, _LINEAR, 8)
+        return _springs(s, rp, width, work, _LINEAR, 0)
+    if terms == 4:
+        return _springs(s, rp, width, work, _HERTZIAN, 4)
+    if terms == 8:
+        return _springs(s, rp, width, work, _HERTZIAN, 8)
+    return _springs(s, rp, width, work, _HERTZIAN, 0)
+
+
+@njit(inline="always", **_FLAGS)
+def _series_terms(s, rp):
+    """Terms of the pin-curvature series that are exact at offset ``s`` (0: closed form)."""
+    ratio = s * s / (rp * rp)
+    if ratio <= _SHORT_SERIES:
+        return 4
+    return 8 if ratio <= _LONG_SERIES else 0
+
+
+@njit(inline="always", **_FLAGS)
+def _pin_curvature(x, rp, inv_rp, terms):
+    """``R_p - sqrt(R_p^2 - x)`` and ``1 / sqrt(R_p^2 - x)`` for ``x = s^2 sin^2(phi)``.
+
+    With ``terms`` 4 or 8 (``y = x / R_p^2`` up to 1e-4 or 1e-2) from their Taylor series
+    in ``y``, exact to ~1e-17 relative there, without a square root or a division
+    (``inv_rp`` is ``1 / R_p``: a division in the loop would not become a product).
+    """
+    y = x * inv_rp * inv_rp
+    if terms == 4:
+        curv = rp * y * (0.5 + y * (0.125 + y * (0.0625 + y * 0.0390625)))
+        return curv, (1.0 + y * (0.5 + y * (0.375 + y * 0.3125))) * inv_rp
+    if terms == 8:
+        tail = 0.02734375 + y * (0.0205078125 + y * (0.01611328125 + y * 0.013092041015625))
+        curv = rp * y * (0.5 + y * (0.125 + y * (0.0625 + y * (0.0390625 + y * tail))))
+        tail = 0.24609375 + y * (0.2255859375 + y * (0.20947265625 + y * 0.196380615234375))
+        return curv, (
+            1.0 + y * (0.5 + y * (0.375 + y * (0.3125 + y * (0.2734375 + y * tail))))
+        ) * inv_rp
+    root = math.sqrt(rp * rp - x)
+    return x / (root + rp), 1.0 / root
+
+
+@njit(inline="always", **_FLAGS)
+def _spring(depth, law):
+    """``p / k`` and ``p' / k`` of one spring at ``depth`` [m] (0 out of contact)."""
+    pen = max(depth, 0.0)
+    if law == _LINEAR:
+        return pen, 1.0 if pen > 0.0 else 0.0
+    root = math.sqrt(pen)
+    return pen * root, 1.5 * root
+
+
+@njit(inline="always", **_FLAGS)
+def _springs(s, rp, width, work, law, terms):
+    """``sum_j p_j A_j cos(phi_j)``, its slope in ``s`` and (linear springs) its curvature.
+
+    ``law`` is ``_LINEAR`` (``p = k delta``) or ``_HERTZIAN`` (``p = k delta^1.5``).
+    Linear springs: between two nodes coming into contact the force is linear in ``s``
+    but for the pin's curvature, ``f'' = sum_j k A_j cos(phi_j) delta_j''`` over the nodes
+    in contact, a few flops more; with it the step is Chebyshev's. For ``delta^1.5`` the
+    curvature would cost a division per node (``p'' ~ delta^-1/2``), more than the third
+    evaluation it saves a cold start: NaN (the step uses ``kappa``).
+    """
+    first, size = work.shape[1] // 2 - width, 2 * width + 1
+    rows = work[:, first : first + size]
+    total = 0.0
+    slope = 0.0
+    second = 0.0
+    s2 = s * s
+    inv_rp = 1.0 / rp
+    for j in range(size):
+        c, sin2, weight = rows[_COS, j], rows[_SIN2, j], rows[_WEIGHT, j]
+        x = s2 * sin2
+        curv, inv_root = _pin_curvature(x, rp, inv_rp, terms)
+        d = s * c - rows[_GAP, j] - curv
+        along = c - s * sin2 * inv_root  # d depth / ds
+        p, stiffness = _spring(d, law)
+        total += weight * p
+        slope += weight * stiffness * along
+        if law == _LINEAR:  # d2 depth / ds2 where in contact
+            second -= weight * stiffness * sin2 * inv_root * (1.0 + x * inv_root * inv_root)
+        rows[_PRESS, j] = p
+        rows[_DEPTH, j] = d
+        rows[_ALONG, j] = along
+    if law == _HERTZIAN:
+        second = np.nan
+    return total, slope, second
+
+
+@njit(inline="always", **_FLAGS)
+def _springs_moved(s, step, width, work, law):
+    """:func:`_springs` after a small step [m] from the last evaluation, without the pin
+    curvature: ``delta_j += step delta_j'`` (the neglected ``step^2 delta_j'' / 2`` is below
+    ``eps s / 16``, see :func:`_balance`); the slope keeps the last ``delta_j'``."""
+    first, size = work.shape[1] // 2 - width, 2 * width + 1
+    rows = work[:, first : first + size]
+    total = 0.0
+    slope = 0.0
+    for j in range(size):
+        weight, along = rows[_WEIGHT, j], rows[_ALONG, j]
+        d = rows[_DEPTH, j] + step * along
+        p, stiffness = _spring(d, law)
+        total += weight * p
+        slope += weight * stiffness * along
+        rows[_PRESS, j] = p
+        rows[_DEPTH, j] = d
+    return total, slope
+
+
+@njit(inline="always", **_FLAGS)
+def _reach(s, gap_min, dtheta, quarter):
+    """Window half-width [nodes] holding every node that can touch at offset ``s`` [m].
+
+    A node's depth is at most ``s cos(phi) - g_min``: none beyond ``arccos(g_min / s)``
+    (a window of half-width ``W`` holds the nodes within ``(W - 1/2) dtheta``).
+    """
+    if s <= gap_min:
+        return 1
+    width = math.ceil(math.acos(gap_min / s) / dtheta + 0.5) + 1
+    return min(max(width, 1), quarter)
+
+
+@njit(inline="always", **_FLAGS)
+def _step(s, f, slope, total, second, curvature):
+    """Chebyshev's step: with the curvature ``second`` where known, else from ``kappa``.
+
+    ``kappa`` (``curvature``) is that of a force ``~ u^m``
+    (:func:`jointwear.contact.balance.guesses._curvature`).
+    """
+    newton = -f / slope
+    if not math.isnan(second):
+        return s + newton * (1.0 + 0.5 * second / (slope * slope) * f)
+    return s + newton * (1.0 + 0.5 * curvature * f / total)
+
+
+@njit(inline="always", **_FLAGS)
+def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work):
+    """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
+
+    Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
+    floor); or a residual that ``ulps`` units in the last place of ``s`` explain, where
+    Newton's step is below one ulp or for the second time in a row (where one ulp of
+    ``s`` moves the sum by more than its own round-off there is nothing left to
+    bisect); or a bracket collapsed to round-off around a residual its slope explains.
+    The state returned is the last one evaluated (``work``).
+    """
+    atol, ulps, max_iterations, curvature = solver
+    quarter, dtheta, rp, exponent = grid[1], grid[2], grid[3], grid[4]
+    lo, hi = lower, upper
+    s = min(max(s, lo), hi)
+    # a little wider than the start's reach: the steps rarely need more
+    prepared = min(quarter, _reach(s, gap_min, dtheta, quarter) + 2)
+    _prepare(nodes, grid, line, prepared, work)
+    hits = 0
+    width = 1
+    total = 0.0
+    slope = 0.0
+    # a step below this [m] moves every depth by step * delta' to within eps s / 16:
+    # |delta''| <= 2 / R_p while s <= R_p / 2
+    small = math.sqrt(_EPS * abs(s) * rp / 32.0) if s <= 0.5 * rp else 0.0
+    law = _LINEAR if exponent == 1.0 else _HERTZIAN
+    previous = np.nan
+    for it in range(1, max_iterations + 1):
+        reach = _reach(s, gap_min, dtheta, quarter)
+        if abs(s - previous) <= small and reach <= width:
+            total, slope = _springs_moved(s, s - previous, width, work, law)
+            second = np.nan
+        else:
+            width = reach
+            if width > prepared:
+                prepared = width
+                _prepare(nodes, grid, line, prepared, work)
+            total, slope, second = _evaluate(s, rp, exponent, width, work)
+        previous = s
+        f = total - load
+        error = abs(f)
+        if error <= max(atol, 8.0 * _EPS * total):
+            return s, total, slope, width, it, True
+        if slope > 0.0 and error <= ulps * _EPS * abs(s) * slope:
+            # a residual a few ulp of s explain: accept it if Newton's step is below one
+            # ulp (it would round to s, and a step rejected by the bracket would bisect
+            # a wide one), else after one more step
+            hits += 1
+            if hits >= 2 or error <= _EPS * abs(s) * slope:
+                return s, total, slope, width, it, True
+        if f < 0.0:
+            lo = s
+        else:
+            hi = s
+        new = _step(s, f, slope, total, second, curvature)
+        if not (lo < new < hi):
+            new = 0.5 * (lo + hi)
+        bracket = hi - lo
+        ulp = _EPS * abs(s)
+        if bracket <= 4.0 * max(ulp, 1e-300):
+            return s, total, slope, width, it, error <= 2.0 * slope * max(bracket, ulp)
+        s = new
+    return s, total, slope, width, max_iterations, False
+
+
+@njit(**_FLAGS)
+def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
+               floats, counts, wear_ext):  # fmt: skip
+    """Balance every load of a revolution and add its wear ``p ds / k`` per node.
+
+    Loads are solved in order. With ``have_guess`` each starts from ``guess`` [m];
+    otherwise from its predecessor's balance moved by the change of load (a Chebyshev
+    step) plus the predecessor's own miss (on a worn contour the force curve moves with
+    the azimuth, smoothly from load to load), the first one from the conformal estimate
+    ``conformal`` [m] (three evaluations a load, against two warm). Out: ``floats`` rows
+    offset [m], force [N], tangential force [N], left and right half-angle [rad], peak
+    pressure [Pa]; ``counts`` rows iterations, springs left and right, status.
+    """
+    centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
+    gap_ext = nodes[0]
+    pad, quarter, dtheta, coefficient = grid[0], grid[1], grid[2], grid[5]
+    work = np.zeros((8, 2 * quarter + 1))
+    previous_s = np.nan
+    previous_total = 0.0
+    previous_slope = 0.0
+    drift = 0.0
+    for k in range(load.size):
+        base = centre[k] + pad
+        line = (base, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
+        if load[k] <= 0.0:
+            # no load: the pin just touches the nearest node of the quarter window
+            touch = np.inf
+            for o in range(-quarter, quarter + 1):
+                touch = min(touch, gap_ext[base + o] + load_gap[k])
+            floats[0, k] = touch
+            counts[3, k] = CONVERGED
+            previous_s = np.nan
+            continue
+        predicted = np.nan
+        if have_guess:
+            s = guess[k]
+        elif previous_s == previous_s and previous_slope > 0.0:
+            change = previous_total - load[k]
+            predicted = previous_s - change / previous_slope * (
+                1.0 + 0.5 * solver[3] * change / previous_total
+            )
+            s = predicted + drift
+        else:
+            s = conformal[k]
+        s, total, slope, width, its, ok = _balance(
+            load[k], s, lower[k], upper[k], gap_min[k], nodes, grid, line, solver,
+            work,
+        )  # fmt: skip
+        floats[0, k] = s
+        floats[1, k] = total
+        counts[0, k] = its
+        counts[3, k] = CONVERGED if ok else NOT_CONVERGED
+        previous_s, previous_total, previous_slope = s, total, slope
+        drift = s - predicted if predicted == predicted else 0.0
+        # the balanced state is the last evaluation: its wear, resultants and extent
+        first, size = quarter - width, 2 * width + 1
+        rows = work[:, first : first + size]
+        start = base - width
+        floats[2, k], top, right, left = _settle(
+            sliding[k], rows, wear_ext[start : start + size], width
+        )
+        floats[5, k] = coefficient * top
+        floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
+            rows[_DEPTH], width, dtheta, shifts[k], left, right
+        )
+
+
+@njit(inline="always", **_FLAGS)
+def _settle(ds, rows, wear, width):
+    """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, peak, springs).
+
+    Every node of the window is added (``p`` is 0 out of contact): one loop, no branch.
+    The springs in contact are counted right and left of the centre column.
+    """
+    sideways = 0.0
+    top = 0.0
+    right = 0
+    left = 0
+    for j in range(wear.size):
+        p = rows[_PRESS, j]
+        wear[j] += ds * p
+        sideways += rows[_SIDE, j] * p
+        top = max(top, p)
+        touching = rows[_DEPTH, j] > 0.0
+        right += touching and j < width
+        left += touching and j > width
+    return sideways, top, right, left
+
+
+@njit(inline="always", **_FLAGS)
+def _extent(depth, width, dtheta, shift, n_left, n_right):
+    """Contact half-angles left and right of the load line [rad], and springs in contact.
+
+    ``n_left``, ``n_right``: springs in contact off the centre column (the centre
+    column's side is the sign of ``shift``).
+    ``depth`` is the window (offsets ``-width .. width``). The outermost node in contact
+    each side is found by scanning in from the window's edges (a few nodes: the window
+    is the pin's reach); the edge lies between it and the next node out, interpolated
+    linearly in depth.
+    """
+    last = depth.size - 1
+    while last >= 0 and not depth[last] > 0.0:
+        last -= 1
+    if last < 0:
+        return 0.0, 0.0, 0, 0
+    first = 0
+    while not depth[first] > 0.0:
+        first += 1
+    if depth[width] > 0.0:
+        n_left += shift > 0.0
+        n_right += shift < 0.0
+    left = _edge(last, min(last + 1, depth.size - 1), depth, width, dtheta, shift)
+    right = -_edge(first, max(first - 1, 0), depth, width, dtheta, shift)
+    return max(left, 0.0), max(right, 0.0), n_left, n_right
+
+
+@njit(inline="always", **_FLAGS)
+def _edge(inside, outside, depth, width, dtheta, shift):
+    """Angle of a contact edge [rad], between the last node in and the next one out."""
+    d_in = depth[inside]
+    d_out = depth[outside]
+    drop = d_in - d_out
+    frac = d_in / drop if drop > 0.0 else 0.0
+    phi_in = (inside - width) * dtheta + shift
+    phi_out = (outside - width) * dtheta + shift
+    return phi_in + frac * (phi_out - phi_in)
+
+
+@njit(**_FLAGS)
+def dense_pressure(offset, load, nodes, grid, lines, out):
+    """Pressure of every load at its balanced offset on all nodes [Pa] (rows of ``out``).
+
+    The same evaluation as the balance's last one, so the same numbers bit for bit.
+    """
+    centre, cos_shift, sin_shift, load_gap, load_area, gap_min = lines[:6]
+    pad, quarter, dtheta, rp, exponent, coefficient = grid
+    nodes_count = out.shape[1]
+    work = np.zeros((8, 2 * quarter + 1))
+    for k in range(offset.size):
+        if load[k] <= 0.0:
+            continue
+        line = (centre[k] + pad, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
+        width = _reach(offset[k], gap_min[k], dtheta, quarter)
+        _prepare(nodes, grid, line, width, work)
+        _evaluate(offset[k], rp, exponent, width, work)
+        for o in range(-width, width + 1):
+            if work[_DEPTH, o + quarter] > 0.0:
+                out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS, o + quarter]

@@ -1,0 +1,401 @@
+"""One revolution of contact and Archard wear in one call: the simulation's inner step.
+
+:func:`revolution_wear` balances every load of a revolution (paper balance, eqs. (5)/(7))
+and accumulates Archard's wear ``K_d sum_k p_jk ds_k`` straight from each load's
+contact window; the dense (M, N) pressure is assembled only when asked for
+(:meth:`RevolutionWear.solution`). With numba installed the balance runs in a fused,
+compiled loop (:mod:`jointwear.contact._compiled`, imported on first use and cached on
+disk); without it, or with ``JOINTWEAR_NO_NUMBA=1``, the same result comes from the
+NumPy path (:func:`jointwear.contact.balance.solve_contact` and
+:func:`jointwear.tribology.archard.wear_depth`), which stays the readable reference.
+
+The compiled path applies to the power laws ``p = k delta^n`` with ``n`` 1 or 1.5
+(Winkler, asymmetric Winkler, NLCP); any other law takes the NumPy path.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from jointwear.contact.balance.guesses import _conformal_depth, _curvature
+from jointwear.contact.balance.solve import _check, check_reach, checked_loads, solve_contact
+from jointwear.contact.laws import PowerLaw, SpringLaw
+from jointwear.contact.solution import ContactSolution
+from jointwear.errors import ContactError
+from jointwear.geometry.contour import BushingContour, Pin, RadiusStencil
+from jointwear.tribology.archard import wear_depth
+
+__all__ = ["RevolutionWear", "compiled_available", "revolution_wear"]
+
+FloatArray = NDArray[np.float64]
+
+#: a residual that this many units in the last place of the offset explain is round-off
+ROUND_OFF_ULPS = 4.0
+_COMPILED: Any = None
+#: per (nodes, azimuths): the load lines' node indices, shifts and radius stencil
+_AZIMUTH_CACHE: dict[tuple[int, bytes], _Lines] = {}
+
+
+def compiled_available() -> bool:
+    """True if the compiled kernel can be used (numba importable, not switched off)."""
+    return _compiled() is not None
+
+
+def _compiled():
+    """The compiled module, imported on first use (None without numba)."""
+    global _COMPILED
+    if os.environ.get("JOINTWEAR_NO_NUMBA", "") not in ("", "0"):
+        return None
+    if _COMPILED is None:
+        try:
+            from jointwear.contact import _compiled as module
+        except ImportError:
+            module = False
+        _COMPILED = module
+    return _COMPILED or None
+
+
+@dataclass(frozen=True, eq=False)
+class RevolutionWear:
+    """Wear and contact summary of one revolution.
+
+    Attributes
+    ----------
+    wear : ndarray, shape (N,)
+        Archard wear depth of the revolution at every node [m].
+    offset : ndarray, shape (M,)
+        Pin displacement along each load line [m] (warm start of the next solve).
+    window : int
+        Half-width [nodes] of a window holding every step's contact, plus a margin.
+    iterations : ndarray of int, shape (M,)
+        Residual evaluations of each step's balance.
+    half_angle_left, half_angle_right : ndarray, shape (M,)
+        Contact extent counter-clockwise / clockwise of the load line [rad].
+    peak_pressure : ndarray, shape (M,)
+        Largest pressure of each step [Pa].
+    normal_force, tangential_force : ndarray, shape (M,)
+        Resultants along and across the load [N].
+    springs_left, springs_right : ndarray of int, shape (M,)
+        Springs in contact each side of the load line.
+    """
+
+    wear: FloatArray
+    offset: FloatArray
+    window: int
+    iterations: NDArray[np.int64]
+    half_angle_left: FloatArray
+    half_angle_right: FloatArray
+    peak_pressure: FloatArray
+    normal_force: FloatArray
+    tangential_force: FloatArray
+    springs_left: NDArray[np.int64]
+    springs_right: NDArray[np.int64]
+    #: how to assemble the dense pressure (None: the NumPy path's solution is kept)
+    _dense: Any = None
+    _solution: ContactSolution | None = None
+    _context: Any = None
+
+    def solution(self) -> ContactSolution:
+        """The revolution as a :class:`ContactSolution`; the (M, N) pressure, the
+        eccentricity and the penetration are assembled when first read."""
+        if self._solution is not None:
+            return self._solution
+        _, _, azimuth, law, centre_gap = self._context
+        lazy = {
+            "pressure": self._dense,
+            "eccentricity": lambda: (
+                self.offset[:, None] * np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
+            ),
+            "penetration": lambda: np.maximum(self.offset - centre_gap, 0.0),
+        }
+        return _WindowSolution(
+            lazy,
+            self,
+            normal_force=self.normal_force,
+            tangential_force=self.tangential_force,
+            half_angle_left=self.half_angle_left,
+            half_angle_right=self.half_angle_right,
+            springs_left=self.springs_left,
+            springs_right=self.springs_right,
+            iterations=self.iterations,
+            model=law.name,
+        )
+
+
+class _WindowSolution(ContactSolution):
+    """A :class:`ContactSolution` whose bulkier fields are assembled when first read.
+
+    Inside a run only the wear (``revolution``), the iterations and the half-angles are
+    read; the dense pressure alone would be an (M, N) array per revolution.
+    """
+
+    def __init__(self, lazy: dict[str, Any], revolution: RevolutionWear, **fields: Any):
+        for name, value in fields.items():
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "revolution", revolution)
+        object.__setattr__(self, "_lazy", lazy)
+
+    def __getattr__(self, name: str) -> Any:
+        # only reached for attributes not set yet: a lazy field, on first use
+        lazy = self.__dict__.get("_lazy", {})
+        if name in lazy:
+            value = lazy[name]()
+            object.__setattr__(self, name, value)
+            return value
+        raise AttributeError(name)
+
+    @property
+    def loads(self) -> int:
+        """Number of loads ``M``."""
+        return int(self.iterations.size)
+
+
+class _Lines:
+    """Contour-independent data of the load lines: node nearest each, and its shift."""
+
+    def __init__(self, nodes: int, azimuth: FloatArray) -> None:
+        dtheta = 2 * np.pi / nodes
+        wrapped = np.mod(azimuth, 2 * np.pi)
+        self.centre = np.rint(wrapped / dtheta).astype(np.int64)
+        self.shift = self.centre * dtheta - wrapped
+        self.cos_shift, self.sin_shift = np.cos(self.shift), np.sin(self.shift)
+        self.stencil = RadiusStencil.at(nodes, wrapped)
+        self.quarter = nodes // 4
+        self.pad = self.quarter + 1
+        offsets = np.arange(-self.quarter, self.quarter + 1)
+        self.cos_o, self.sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
+        #: node of each position of an array padded by ``pad`` nodes each side
+        self.padded = np.arange(-self.pad, nodes + 1 + self.pad) % nodes
+        # constants of the kernel's arguments, never written (not flagged read-only:
+        # numba would compile the kernel again for read-only arrays)
+        self.zeros, self.ones = np.zeros(azimuth.size), np.ones(azimuth.size)
+        self.zeros_padded = np.zeros(self.padded.size)
+
+
+def _lines(nodes: int, azimuth: FloatArray) -> _Lines:
+    key = (nodes, azimuth.tobytes())
+    lines = _AZIMUTH_CACHE.get(key)
+    if lines is None:
+        if len(_AZIMUTH_CACHE) >= 4:
+            _AZIMUTH_CACHE.pop(next(iter(_AZIMUTH_CACHE)))
+        lines = _AZIMUTH_CACHE[key] = _Lines(nodes, azimuth)
+    return lines
+
+
+def revolution_wear(
+    contour: BushingContour,
+    pin: Pin,
+    load: ArrayLike,
+    azimuth: ArrayLike,
+    sliding_distance: ArrayLike,
+    law: SpringLaw,
+    wear_coefficient: float,
+    *,
+    max_penetration: float | None = None,
+    initial_offset: ArrayLike | None = None,
+    window: int | None = None,
+    tolerance: float = 1e-12,
+    max_iterations: int = 100,
+    compiled: bool | None = None,
+) -> RevolutionWear:
+    """Balance every load of a revolution (paper balance) and its Archard wear.
+
+    Parameters
+    ----------
+    contour : BushingContour
+        Current bushing contour.
+    pin : Pin
+        The pin.
+    load : array_like, shape (M,)
+        Joint load magnitudes [N], >= 0.
+    azimuth : array_like, shape (M,)
+        Direction in which the pin presses on the bushing, bushing frame [rad].
+    sliding_distance : array_like, shape (M,)
+        Sliding distance of each step [m].
+    law : SpringLaw
+        Spring law (:func:`jointwear.contact.contact_law`).
+    wear_coefficient : float
+        Dimensional Archard coefficient ``K_d`` [1/Pa].
+    max_penetration : float, optional
+        Largest admissible penetration at the compression centre, normally the wall
+        thickness [m]; a load needing more raises :class:`ContactError`.
+    initial_offset : array_like, shape (M,), optional
+        Guesses of the pin displacement along each load line [m] (warm start).
+    window : int, optional
+        Node window half-width of a previous solve [nodes]; the NumPy path starts from
+        it, the compiled one sizes each load's window from its reach instead.
+    tolerance : float
+        Absolute force tolerance of the balance [N].
+    max_iterations : int
+        Residual evaluations allowed per load.
+    compiled : bool, optional
+        Force (True) or forbid (False) the compiled kernel; default: use it where it
+        applies and numba is available.
+
+    Returns
+    -------
+    RevolutionWear
+    """
+    applies = isinstance(law, PowerLaw) and law.exponent in (1.0, 1.5)
+    module = _compiled() if applies and compiled is not False else None
+    if compiled and module is None:
+        raise ContactError("contact: the compiled kernel needs numba and a power law 1 or 1.5")
+    if module is None:
+        return _numpy_revolution(
+            contour, pin, load, azimuth, sliding_distance, law, wear_coefficient,
+            max_penetration, initial_offset, window, tolerance, max_iterations,
+        )  # fmt: skip
+    load, azimuth = checked_loads(load, azimuth)
+    m = load.size
+    sliding = np.broadcast_to(np.asarray(sliding_distance, dtype=float).ravel(), (m,))
+    contour.check_pin(pin)
+    nodes, grid, lines, centre_gap, padded = _arguments(
+        contour, pin, load, azimuth, law, max_penetration
+    )
+    if initial_offset is None:
+        guess = conformal = np.zeros(m)
+        clearance = np.maximum(centre_gap, 1e-12 * pin.radius)
+        conformal = clearance + _conformal_depth(contour, pin.radius, law, load, clearance)
+    else:
+        guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), np.zeros(m)
+        if guess.size != m:
+            raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
+    floats = np.zeros((6, m))
+    counts = np.zeros((4, m), dtype=np.int64)
+    wear_ext = np.zeros(padded.size)
+    solver = (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), _curvature(law))
+    module.revolution(
+        load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
+        floats, counts, wear_ext,
+    )  # fmt: skip
+    offset, total, tangential, left, right, peak = floats
+    _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
+    wear = np.bincount(padded, weights=wear_ext, minlength=contour.nodes)
+    wear *= wear_coefficient * law.coefficient
+    widest = max(float(left.max(initial=0.0)), float(right.max(initial=0.0)))
+
+    def dense() -> FloatArray:
+        pressure = np.zeros((m, contour.nodes))
+        module.dense_pressure(offset, load, nodes, grid, lines, pressure)
+        return pressure
+
+    return RevolutionWear(
+        wear=wear,
+        offset=offset,
+        window=int(np.ceil(widest / contour.dtheta) + 3),
+        iterations=counts[0],
+        half_angle_left=left,
+        half_angle_right=right,
+        peak_pressure=peak,
+        normal_force=total,
+        tangential_force=tangential,
+        springs_left=counts[1],
+        springs_right=counts[2],
+        _dense=dense,
+        _context=(contour, pin, azimuth, law, centre_gap),
+    )
+
+
+def _arguments(contour, pin, load, azimuth, law, max_penetration):
+    """The compiled kernel's tuples (see :mod:`jointwear.contact._compiled`).
+
+    Returns ``nodes``, ``grid``, ``lines``, the gap on each load line [m] and the node
+    of every position of the padded arrays.
+    """
+    lines = _lines(contour.nodes, azimuth)
+    radius = contour.radius
+    rp = pin.radius
+    m = load.size
+    centre_radius = lines.stencil(radius)
+    centre_gap = centre_radius - rp
+    spring = contour.dtheta * contour.axial_length
+    # r - R_p is exact (Sterbenz); the symmetric law's springs lie on the circle through
+    # the compression centre, one gap per load
+    if law.symmetric:
+        gap_ext, load_gap, gap_min = lines.zeros_padded, centre_gap, centre_gap
+        check_reach(gap_min, load, azimuth, rp)
+    else:
+        padded_radius = radius.take(lines.padded)
+        gap_ext, load_gap = padded_radius - rp, lines.zeros
+        smallest = float(radius.min()) - rp
+        if smallest >= 0.999 * rp:
+            check_reach(np.full(m, smallest), load, azimuth, rp)
+        gap_min = np.full(m, smallest)
+    if law.force_area is not None:
+        area_ext, load_area = np.full(lines.padded.size, float(law.force_area)), lines.ones
+    elif law.symmetric:
+        area_ext, load_area = np.full(lines.padded.size, spring), centre_radius
+    else:
+        area_ext, load_area = padded_radius * spring, lines.ones
+    # the bracket: no node touches at the smallest gap; the pin's reach or the wall
+    lower = gap_min
+    upper = np.full(m, 0.999 * rp)
+    if max_penetration is not None:
+        np.minimum(upper, centre_gap + max_penetration, out=upper)
+    np.maximum(upper, lower, out=upper)
+    nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o)
+    grid = (
+        lines.pad, lines.quarter, contour.dtheta, float(rp), float(law.exponent),
+        float(law.coefficient),
+    )  # fmt: skip
+    per_load = (
+        lines.centre, lines.cos_shift, lines.sin_shift, load_gap, load_area, gap_min, lower,
+        upper, lines.shift,
+    )  # fmt: skip
+    return nodes, grid, per_load, centre_gap, lines.padded
+
+
+def _numpy_revolution(
+    contour,
+    pin,
+    load,
+    azimuth,
+    sliding,
+    law,
+    wear_coefficient,
+    max_penetration,
+    initial_offset,
+    window,
+    tolerance,
+    max_iterations,
+):
+    """The readable reference: the NumPy balance, then Archard on the dense pressure."""
+    warm: dict[str, Any] = {}
+    if initial_offset is not None:
+        warm = {"initial_offset": initial_offset, "window": window}
+    solution = solve_contact(
+        contour,
+        pin,
+        load,
+        azimuth,
+        law,
+        tolerance=tolerance,
+        max_iterations=max_iterations,
+        max_penetration=max_penetration,
+        **warm,
+    )
+    load, azimuth = checked_loads(load, azimuth)
+    sliding = np.broadcast_to(np.asarray(sliding, dtype=float).ravel(), load.shape)
+    unit = np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
+    offset = np.einsum("ij,ij->i", solution.eccentricity, unit)
+    widest = max(float(solution.half_angle_left.max()), float(solution.half_angle_right.max()))
+    return RevolutionWear(
+        wear=wear_depth(solution.pressure, sliding, wear_coefficient),
+        offset=offset,
+        window=int(math.ceil(widest / contour.dtheta) + 3),
+        iterations=solution.iterations,
+        half_angle_left=solution.half_angle_left,
+        half_angle_right=solution.half_angle_right,
+        peak_pressure=solution.pressure.max(axis=1),
+        normal_force=solution.normal_force,
+        tangential_force=solution.tangential_force,
+        springs_left=solution.springs_left,
+        springs_right=solution.springs_right,
+        _solution=solution,
+    )

@@ -1,0 +1,162 @@
+"""The compiled revolution (balance + Archard in one loop) against the NumPy path.
+
+Both balance every load to round-off, so they agree to 1e-12 relative in wear and in
+force balance; the dense pressure, assembled only on request, matches as well.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from jointwear import Simulation
+from jointwear.config import load_config
+from jointwear.contact import kernel
+from jointwear.contact.balance.paper import paper_balance
+from jointwear.contact.kernel import revolution_wear
+from jointwear.geometry import BushingContour
+
+from ..conftest import REPO
+from ..test_fast_path import CALIBRATED, PAPER, worn_profile
+
+MODELS = ["winkler", "asymmetric-winkler", "nlcp"]
+
+pytestmark = pytest.mark.skipif(
+    not kernel.compiled_available(), reason="numba missing or JOINTWEAR_NO_NUMBA set"
+)
+
+
+@pytest.fixture(scope="module")
+def config():
+    return load_config(
+        PAPER, overrides={**CALIBRATED, "simulation.revolutions": 1, "simulation.update_every": 1}
+    )
+
+
+def revolution_inputs(config, model: str, shape: str):
+    simulation = Simulation(config.replace({"contact.model": model}))
+    load = simulation.load_cycle
+    joint = config.joint
+    if shape == "circle":
+        contour = simulation.initial_contour()
+    else:
+        depth = worn_profile(config.contact.nodes, load.azimuth)
+        contour = BushingContour.from_wear_profile(joint.bushing_radius, depth, joint.axial_length)
+    args = (
+        contour,
+        simulation.pin,
+        load.load,
+        load.azimuth,
+        simulation.sliding_distance,
+        simulation.law,
+        config.materials.bushing.wear_coefficient,
+    )
+    return args, {"max_penetration": joint.bushing_thickness}
+
+
+def relative(a: np.ndarray, b: np.ndarray) -> float:
+    return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+
+
+@pytest.mark.parametrize("shape", ["circle", "worn"])
+@pytest.mark.parametrize("model", MODELS)
+def test_compiled_equals_numpy(config, model, shape):
+    """Wear, force balance, offsets, extents and the dense pressure, cold and warm."""
+    args, options = revolution_inputs(config, model, shape)
+    load = args[2]
+    numpy_path = revolution_wear(*args, compiled=False, **options)
+    for warm in (None, numpy_path.offset * (1 + 1e-7)):
+        fast = revolution_wear(*args, compiled=True, initial_offset=warm, **options)
+        assert relative(fast.wear, numpy_path.wear) <= 1e-12
+        for result in (fast, numpy_path):
+            assert np.all(np.abs(result.normal_force - load) <= 1e-12 * load)
+        assert relative(fast.offset, numpy_path.offset) <= 1e-12
+        np.testing.assert_array_equal(fast.springs_left, numpy_path.springs_left)
+        np.testing.assert_array_equal(fast.springs_right, numpy_path.springs_right)
+        np.testing.assert_allclose(fast.half_angle_left, numpy_path.half_angle_left, atol=1e-12)
+        np.testing.assert_allclose(fast.half_angle_right, numpy_path.half_angle_right, atol=1e-12)
+        assert relative(fast.tangential_force, numpy_path.tangential_force) <= 1e-9
+        dense, reference = fast.solution().pressure, numpy_path.solution().pressure
+        assert relative(dense, reference) <= 1e-12
+        np.testing.assert_allclose(fast.peak_pressure, reference.max(axis=1), rtol=1e-12)
+
+
+@pytest.mark.parametrize("model", MODELS)
+def test_fast_solvers_solve_the_stated_balance(config, model):
+    """The plain statement of eqs. (5)/(7) on every node (balance.paper) gives the offsets
+    of the compiled kernel and of the NumPy window solver."""
+    args, options = revolution_inputs(config, model, "worn")
+    contour, pin, load, azimuth, _, law, _ = args
+    rows = slice(0, None, 12)
+    stated = paper_balance(contour, pin, load[rows], azimuth[rows], law)
+    for compiled in (True, False):
+        result = revolution_wear(*args, compiled=compiled, **options)
+        assert relative(result.offset[rows], stated) <= 1e-12
+
+
+def test_dense_pressure_is_the_balanced_state(config):
+    """The pressure assembled on request is the state the balance accepted: its Archard
+    wear is the accumulated one, and its resultant the reported force."""
+    args, options = revolution_inputs(config, "nlcp", "worn")
+    contour, _, load, azimuth, sliding, law, k_d = args
+    result = revolution_wear(*args, **options)
+    solution = result.solution()
+    assert solution.loads == load.size
+    assert "pressure" not in vars(solution)  # not assembled until read
+    pressure = solution.pressure
+    np.testing.assert_allclose(k_d * (sliding @ pressure), result.wear, rtol=1e-12, atol=0)
+    phi = contour.theta[None, :] - azimuth[:, None]
+    normal = (pressure * law.force_area * np.cos(phi)).sum(axis=1)
+    np.testing.assert_allclose(normal, result.normal_force, rtol=1e-13)
+
+
+def test_simulation_steps_match_the_numpy_path(config):
+    """Ten per-revolution updates with the kernel and with the NumPy path."""
+    cfg = config.replace({"simulation.revolutions": 10, "simulation.update_contour": True})
+    depths = []
+    for switch in ("0", "1"):
+        os.environ["JOINTWEAR_NO_NUMBA"] = switch
+        try:
+            simulation = Simulation(cfg)
+            state = simulation.initial_state()
+            for _ in range(10):
+                state = simulation.step(state)
+        finally:
+            del os.environ["JOINTWEAR_NO_NUMBA"]
+        depths.append(state.wear_depth)
+    assert relative(depths[0], depths[1]) <= 1e-12
+
+
+def test_zero_loads_and_errors(config):
+    """No load: the pin touches, no wear; a load through the wall raises ContactError."""
+    args, options = revolution_inputs(config, "nlcp", "circle")
+    contour, pin, load, azimuth, sliding, law, k_d = args
+    some = load.copy()
+    some[::5] = 0.0
+    result = revolution_wear(contour, pin, some, azimuth, sliding, law, k_d, **options)
+    numpy_path = revolution_wear(
+        contour, pin, some, azimuth, sliding, law, k_d, compiled=False, **options
+    )
+    assert relative(result.wear, numpy_path.wear) <= 1e-12
+    assert np.all(result.peak_pressure[::5] == 0.0)
+    from jointwear.errors import ContactError
+
+    with pytest.raises(ContactError, match="through the bushing wall"):
+        revolution_wear(contour, pin, 1e9 * load, azimuth, sliding, law, k_d, **options)
+
+
+def test_numba_is_imported_only_when_used():
+    """``import jointwear`` (and a whole simulation object) does not import numba."""
+    code = (
+        "import sys, jointwear, jointwear.simulation, jointwear.contact.kernel; "
+        "print('numba' in sys.modules)"
+    )
+    env = {**os.environ, "PYTHONPATH": str(REPO / "src")}
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env
+    )
+    assert out.stdout.strip() == "False"
