@@ -1,8 +1,4 @@
-<<<<<<< HEAD
-"""Speed of the wear simulation: fast path vs reference, long runs, memory, start-up.
-=======
 """Speed of the wear simulation: compiled kernel and fast path vs reference, long runs, memory.
->>>>>>> kernel
 
 Run from the repository root::
 
