@@ -12,7 +12,7 @@ from jointwear.contact import ContactParameters
 from jointwear.geometry import BushingContour, Pin
 
 REPO = Path(__file__).resolve().parents[1]
-PAPER_CONFIG = REPO / "examples" / "paper" / "table3_winkler_120rpm.toml"
+PAPER_CONFIG = REPO / "tests" / "data" / "paper_joint.toml"
 
 
 def scar(

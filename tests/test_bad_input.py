@@ -26,7 +26,7 @@ from jointwear.errors import JointwearError
 from jointwear.results import write_netcdf
 
 REPO = Path(__file__).resolve().parents[1]
-PAPER = REPO / "examples" / "paper" / "table3_winkler_120rpm.toml"
+PAPER = REPO / "tests" / "data" / "paper_joint.toml"
 SMALL = ["--set", "contact.nodes=60", "--set", "simulation.steps_per_revolution=60"]
 COMMANDS = set(typer.main.get_command(app).commands)
 

@@ -28,7 +28,7 @@ from jointwear.sweep import (
 )
 
 REPO = Path(__file__).resolve().parents[1]
-PAPER = REPO / "examples" / "paper" / "table3_winkler_120rpm.toml"
+PAPER = REPO / "tests" / "data" / "paper_joint.toml"
 TINY = """
 [set]
 "contact.nodes" = 60

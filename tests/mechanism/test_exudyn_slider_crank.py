@@ -36,7 +36,7 @@ exu = pytest.importorskip("exudyn")
 ii = pytest.importorskip("exudyn.itemInterface")
 
 PAPER_CONFIG = (
-    Path(__file__).resolve().parents[2] / "examples" / "paper" / "table3_winkler_120rpm.toml"
+    Path(__file__).resolve().parents[2] / "tests" / "data" / "paper_joint.toml"
 )
 
 #: the paper's slider-crank (Table 1, SI); rod inertia m l^2 / 12 about its centre;

@@ -19,7 +19,7 @@ from jointwear.mechanism import LoadCycle, load_cycle
 from jointwear.mechanism.history import MIN_ROWS, history_cycle, read_load_history
 
 REPO = Path(__file__).resolve().parents[2]
-PAPER = REPO / "examples" / "paper" / "table3_winkler_120rpm.toml"
+PAPER = REPO / "tests" / "data" / "paper_joint.toml"
 EXAMPLE = REPO / "examples" / "load_history" / "load_history.toml"
 
 MECHANISMS = {

@@ -20,7 +20,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["Diagnostic", "LoadCycle", "bushing_azimuth", "wrap_angle"]
+__all__ = ["Diagnostic", "LoadCycle", "bushing_azimuth", "crank_extras", "wrap_angle"]
 
 FloatArray = NDArray[np.float64]
 
@@ -69,6 +69,34 @@ def bushing_azimuth(
     )
     mean = float(azimuth.mean())
     return azimuth + (wrap_angle(mean) - mean)
+
+
+def crank_extras(
+    crank_speed: float, crank_torque: ArrayLike, lost_steps: ArrayLike
+) -> dict[str, Any]:
+    """Summary scalars of a mechanism driven by a crank at constant speed.
+
+    Parameters
+    ----------
+    crank_speed : float
+        Crank angular velocity [rad/s].
+    crank_torque : array_like, shape (N,)
+        Driving torque at each step [N m].
+    lost_steps : array_like of bool, shape (N,)
+        Steps where the continuous-contact assumption fails.
+    """
+    torque = np.asarray(crank_torque, dtype=float)
+    lost = np.asarray(lost_steps, dtype=bool)
+    return {
+        "crank_speed_rad_s": float(crank_speed),
+        "crank_speed_rpm": float(crank_speed) * 60.0 / (2.0 * math.pi),
+        # the crank angle of step k is 2 pi k / N (rounded so that it prints as 15.0)
+        "contact_lost_crank_angles_deg": [
+            float(a) for a in np.round(360.0 * np.flatnonzero(lost) / lost.size, 9)
+        ],
+        "crank_torque_rms_nm": float(np.sqrt(np.mean(torque**2))),
+        "crank_torque_max_abs_nm": float(np.max(np.abs(torque))),
+    }
 
 
 @dataclass(frozen=True, eq=False)

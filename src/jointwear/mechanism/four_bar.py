@@ -90,7 +90,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import ConfigError, ContactLossWarning, MechanismError
-from jointwear.mechanism.cycle import Diagnostic, LoadCycle, bushing_azimuth, wrap_angle
+from jointwear.mechanism.cycle import (
+    Diagnostic,
+    LoadCycle,
+    bushing_azimuth,
+    crank_extras,
+    wrap_angle,
+)
 
 if TYPE_CHECKING:
     from jointwear.config import Config, FourBarConfig
@@ -655,13 +661,7 @@ def _joint_cycle(
     }
     extras = {
         "bushing_body": bushing_body,
-        "crank_speed_rad_s": float(mech.crank_speed),
-        "crank_speed_rpm": float(mech.crank_speed) * 60.0 / (2.0 * math.pi),
-        "contact_lost_crank_angles_deg": [
-            float(a) for a in np.round(360.0 * np.flatnonzero(lost) / steps, 9)
-        ],
-        "crank_torque_rms_nm": float(np.sqrt(np.mean(crank_torque**2))),
-        "crank_torque_max_abs_nm": float(np.max(np.abs(crank_torque))),
+        **crank_extras(mech.crank_speed, crank_torque, lost),
     }
     return LoadCycle(
         time=mech.period * np.arange(steps) / steps,

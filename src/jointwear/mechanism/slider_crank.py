@@ -59,7 +59,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import ContactLossWarning, ConvergenceError, MechanismError
-from jointwear.mechanism.cycle import Diagnostic, LoadCycle, bushing_azimuth
+from jointwear.mechanism.cycle import Diagnostic, LoadCycle, bushing_azimuth, crank_extras
 
 if TYPE_CHECKING:
     from jointwear.config import Config, SliderCrankConfig
@@ -917,14 +917,7 @@ def slider_crank_cycle(
     extras = {
         "bushing_body": mech.bushing_body,
         "spring_mode": mech.spring_mode,
-        "crank_speed_rad_s": float(mech.crank_speed),
-        "crank_speed_rpm": float(mech.crank_speed) * 60.0 / (2.0 * math.pi),
-        # the crank angle of step k is 2 pi k / N (rounded so that it prints as 15.0)
-        "contact_lost_crank_angles_deg": [
-            float(a) for a in np.round(360.0 * np.flatnonzero(lost) / steps, 9)
-        ],
-        "crank_torque_rms_nm": float(np.sqrt(np.mean(crank_torque**2))),
-        "crank_torque_max_abs_nm": float(np.max(np.abs(crank_torque))),
+        **crank_extras(mech.crank_speed, crank_torque, lost),
     }
     return LoadCycle(
         time=mech.period * np.arange(steps) / steps,
