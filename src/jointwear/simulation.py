@@ -267,6 +267,7 @@ class Simulation:
         self.life = LifeLimits.from_config(config)
         self.schedule = DynamicsSchedule.from_config(config)
         self._warned: set[str] = set()
+        self._sliding: tuple[mechanism.LoadCycle, FloatArray] | None = None
 
     # ---------------------------------------------------------------- stages
     @property
@@ -285,12 +286,12 @@ class Simulation:
     @property
     def sliding_distance(self) -> FloatArray:
         """Stage 3a: sliding distance per step of the current cycle [m]."""
-        return self._sliding(self.load_cycle)
-
-    @functools.lru_cache(maxsize=4)  # noqa: B019 - one simulation, a handful of cycles
-    def _sliding(self, cycle: mechanism.LoadCycle) -> FloatArray:
-        slide = SLIDING_MODELS.get(self.config.simulation.sliding)
-        return slide(cycle, self.config.joint.bushing_radius)
+        cycle = self.load_cycle
+        # computed once per load cycle: every contour update asks for it
+        if self._sliding is None or self._sliding[0] is not cycle:
+            slide = SLIDING_MODELS.get(self.config.simulation.sliding)
+            self._sliding = (cycle, slide(cycle, self.config.joint.bushing_radius))
+        return self._sliding[1]
 
     def initial_contour(self) -> BushingContour:
         """The unworn bushing."""

@@ -144,6 +144,12 @@ def _four_bar(model: str) -> CycleModel:
     def cycles(config: Config, wear_depth: FloatArray | None) -> dict[str, LoadCycle]:
         from jointwear.mechanism import four_bar
 
+        # the ideal-joint reactions do not depend on the clearance; the free pin would
+        if model == "contact-impact" and wear_depth is not None and np.any(wear_depth):
+            raise ConfigError(
+                "simulation.dynamics_update: contact-impact on a worn four-bar joint is not "
+                "modelled; use 'once' (or the slider-crank)"
+            )
         return four_bar.four_bar_cycles(config, model)
 
     return cycles
