@@ -1,8 +1,22 @@
-"""``python -m jointwear``."""
+"""``python -m jointwear`` (and the ``jointwear`` console script)."""
 
 from __future__ import annotations
 
-from jointwear.cli import main
+import sys
+
+
+def main() -> None:
+    """Install the signal handlers before the command line's imports, then run it."""
+    from jointwear.interrupts import exit_code, handling_signals, note
+
+    with handling_signals():
+        try:
+            from jointwear.cli import main as cli_main
+        except KeyboardInterrupt as exc:  # Ctrl-C while numpy & co. load: no traceback
+            sys.stderr.write(note(exc) + "\n")
+            sys.exit(exit_code(exc))
+        cli_main()
+
 
 if __name__ == "__main__":
     main()

@@ -10,7 +10,10 @@ file + rename, :mod:`jointwear.io`):
     checkpointed contour update: revolution, radii, wear rate, update interval,
     the per-update history, the saved profiles and the contact warm start.
     It also stores a digest of the configuration, so a state is never resumed
-    under a different configuration.
+    under a different configuration, and a SHA-256 checksum of its own arrays,
+    so a damaged or edited state is refused (and left in place) instead of
+    resumed; on resuming the state is also checked against the configuration
+    (node count, revolutions, finite values, increasing records).
 
 Because the state holds everything the loop carries, a resumed run computes
 exactly the numbers an uninterrupted run computes (bit for bit).
@@ -55,6 +58,7 @@ __all__ = [
     "CHECKPOINT_CONFIG",
     "CHECKPOINT_STATE",
     "Checkpointer",
+    "check_state",
     "config_digest",
     "has_checkpoint",
     "load_checkpoint",
@@ -67,8 +71,10 @@ __all__ = [
 CHECKPOINT_STATE = "checkpoint.npz"
 #: resolved configuration inside a checkpoint directory
 CHECKPOINT_CONFIG = "checkpoint.toml"
-#: version of the state layout
-FORMAT = 2
+#: version of the state layout (3: with a checksum of its arrays)
+FORMAT = 3
+#: array fields of a state that hold one value per contour node
+_NODE_ARRAYS = ("wear_depth", "wear_rate", "load_depth", "pin_wear_depth", "pin_wear_rate")
 
 
 def config_digest(config: Config) -> str:
@@ -176,10 +182,24 @@ def _state_from_arrays(arrays: dict[str, np.ndarray]) -> SimulationState:
     return SimulationState(**values)
 
 
+def _checksum(arrays: dict[str, np.ndarray]) -> str:
+    """SHA-256 over every array's name, dtype, shape and bytes (the checksum excluded)."""
+    digest = hashlib.sha256()
+    for name in sorted(arrays):
+        if name == "checksum":
+            continue
+        value = np.ascontiguousarray(arrays[name])
+        digest.update(f"{name}\0{value.dtype.str}\0{value.shape}\0".encode())
+        digest.update(value.tobytes())
+    return digest.hexdigest()
+
+
 def write_state(path: str | Path, state: SimulationState, digest: str) -> None:
-    """Write ``state`` to ``path`` (``.npz``) atomically."""
+    """Write ``state`` to ``path`` (``.npz``) atomically, with a checksum of its arrays."""
+    arrays = _state_arrays(state, digest)
+    arrays["checksum"] = np.array(_checksum(arrays))
     with atomic_write(path, "wb") as handle:
-        np.savez(handle, **_state_arrays(state, digest))
+        np.savez(handle, **arrays)
 
 
 def read_state(path: str | Path) -> tuple[SimulationState, str]:
@@ -198,12 +218,77 @@ def read_state(path: str | Path) -> tuple[SimulationState, str]:
         raise DataError(f"{path}: file not found") from None
     except (OSError, ValueError, EOFError, zipfile.BadZipFile) as exc:
         raise DataError(f"{path}: not a readable checkpoint ({type(exc).__name__})") from None
-    if int(arrays.get("format", -1)) != FORMAT:
+    try:
+        version = int(arrays.get("format", -1))
+    except (TypeError, ValueError):
+        version = -1
+    if version != FORMAT:
         raise DataError(f"{path}: not a jointwear checkpoint (format {FORMAT} expected)")
+    if "checksum" not in arrays or str(arrays["checksum"]) != _checksum(arrays):
+        raise DataError(
+            f"{path}: damaged checkpoint (its checksum does not match its contents); "
+            "start the run again without --resume"
+        )
     try:
         return _state_from_arrays(arrays), str(arrays["config_digest"])
     except (KeyError, IndexError, ValueError, TypeError) as exc:
         raise DataError(f"{path}: unusable checkpoint ({exc})") from None
+
+
+def check_state(state: SimulationState, config: Config, path: str | Path) -> None:
+    """Refuse a state that cannot belong to ``config`` (one-line error naming ``path``).
+
+    Checks the node count of every per-node array, the revolution against the
+    configured revolutions, that every array of the state is finite, and that the records
+    (updates, saved profiles, dynamics solves) run forward in revolutions and
+    end at or before the state's revolution.
+
+    Parameters
+    ----------
+    state : SimulationState
+        The state read from ``path``.
+    config : Config
+        The run's configuration.
+    path : path-like
+        The state file (for messages).
+    """
+
+    def bad(reason: str) -> DataError:
+        return DataError(f"{path}: inconsistent checkpoint ({reason})")
+
+    nodes = config.contact.nodes
+    if not 0 <= state.revolution <= config.simulation.revolutions:
+        raise bad(f"revolution {state.revolution} outside 0..{config.simulation.revolutions}")
+    for name in _NODE_ARRAYS:
+        value = getattr(state, name)
+        if value is not None and np.shape(value) != (nodes,):
+            raise bad(f"{name} has shape {np.shape(value)}, the config has {nodes} nodes")
+    for spec in dataclasses.fields(state):
+        value = getattr(state, spec.name)
+        if isinstance(value, np.ndarray) and value.dtype.kind in "fc":
+            if not np.all(np.isfinite(value)):
+                raise bad(f"{spec.name} holds non-finite values")
+        elif isinstance(value, float) and not np.isfinite(value):
+            raise bad(f"{spec.name} is not finite")
+    if state.interval < 1 or (state.next_interval is not None and state.next_interval < 1):
+        raise bad("update interval below 1")
+    if state.updates_since_dynamics < 0:
+        raise bad("negative count of updates since the dynamics")
+    for name in ("history", "dynamics_updates"):
+        columns = getattr(state, name).columns()
+        revolutions = np.asarray(columns.get("revolution", []), dtype=float)
+        if revolutions.size and (
+            not np.all(np.isfinite(revolutions))
+            or np.any(np.diff(revolutions) < 0)
+            or revolutions[-1] > state.revolution
+        ):
+            raise bad(f"{name} revolutions do not run forward to {state.revolution}")
+    saved = [revolution for revolution, _ in state.profiles.items()]
+    if saved and (np.any(np.diff(saved) <= 0) or saved[-1] > state.revolution):
+        raise bad(f"saved profiles do not run forward to {state.revolution}")
+    for revolution, profile in state.profiles.items():
+        if np.shape(profile) != (nodes,) or not np.all(np.isfinite(profile)):
+            raise bad(f"the profile of revolution {revolution} is not {nodes} finite values")
 
 
 # ---------------------------------------------------------------- the run's side
@@ -261,6 +346,7 @@ class Checkpointer:
         state, digest = read_state(self.state_path)
         if digest != self.digest:
             return None
+        check_state(state, self.config, self.state_path)
         self.continue_from(state)
         return state
 
@@ -318,5 +404,6 @@ def load_checkpoint(directory: str | Path) -> tuple[Config, SimulationState | No
             f"{checkpointer.state_path}: belongs to a different configuration than "
             f"{checkpointer.config_path}"
         )
+    check_state(state, config, checkpointer.state_path)
     checkpointer.continue_from(state)
     return config, state, checkpointer

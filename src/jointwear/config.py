@@ -857,17 +857,32 @@ def read_toml(path: str | Path, error: type[Exception] = ConfigError) -> dict[st
     error : exception type
         Raised for a missing, unreadable or invalid file (a ``JointwearError``).
     """
+    from jointwear.io import read_input
+
     path = Path(path)
+    text = read_input(path, "TOML file", error=error)
     try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise error(f"{path}: file not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise error(f"{path}: cannot read ({exc})") from None
-    try:
-        return tomllib.loads(text)
+        data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise error(f"{path}: not valid TOML ({exc})") from None
+    except RecursionError:
+        data = None
+    if data is None or _depth(data) > MAX_TOML_DEPTH:
+        raise error(f"{path}: nested more than {MAX_TOML_DEPTH} levels deep")
+    return data
+
+
+#: deepest nesting of tables and arrays accepted in a TOML file [-]
+MAX_TOML_DEPTH = 32
+
+
+def _depth(value: Any) -> int:
+    """Nesting depth of tables and arrays (a scalar is 0)."""
+    if isinstance(value, dict):
+        return 1 + max((_depth(v) for v in value.values()), default=0)
+    if isinstance(value, list):
+        return 1 + max((_depth(v) for v in value), default=0)
+    return 0
 
 
 def load_config(

@@ -7,9 +7,11 @@ attribute, so a result file alone says how it was made.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import datetime as _dt
 import math
+import sys
 import tomllib
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -18,7 +20,7 @@ import numpy as np
 import xarray as xr
 
 from jointwear.errors import DataError
-from jointwear.io import atomic_path, atomic_write
+from jointwear.io import atomic_write, check_input
 from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS
 
 if TYPE_CHECKING:
@@ -160,9 +162,7 @@ def build_dataset(
             "rad",
             "cycle phase of the pressure snapshot",
         ),
-        "update": _var(
-            ("update",), np.arange(len(history["revolution"])), "1", "contour update"
-        ),
+        "update": _var(("update",), np.arange(len(history["revolution"])), "1", "contour update"),
         "update_revolution": _var(
             ("update",),
             np.asarray(history["revolution"], dtype=np.int64),
@@ -227,8 +227,9 @@ def select_joint(dataset: xr.Dataset, joint: str | None = None) -> xr.Dataset:
     """
     if "joint" not in dataset.dims:
         if joint is not None and joint != dataset.attrs.get("joint", joint):
-            raise DataError(f"result: no clearance joint {joint!r} (it has "
-                            f"{dataset.attrs.get('joint')!r})")
+            raise DataError(
+                f"result: no clearance joint {joint!r} (it has {dataset.attrs.get('joint')!r})"
+            )
         return dataset
     names = [str(j) for j in dataset["joint"].values]
     if joint is None:
@@ -244,9 +245,7 @@ def select_joint(dataset: xr.Dataset, joint: str | None = None) -> xr.Dataset:
     if "dynamics_revolution" in single:
         solves = int(np.count_nonzero(np.isfinite(single["dynamics_revolution"].values)))
         single = single.isel(dynamics_update=slice(0, solves))
-    single = single.assign_coords(
-        update_revolution=single["update_revolution"].astype(np.int64)
-    )
+    single = single.assign_coords(update_revolution=single["update_revolution"].astype(np.int64))
     single.attrs["joint"] = joint
     return single
 
@@ -286,10 +285,23 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
     return out
 
 
+def _local_scheduler() -> contextlib.AbstractContextManager[Any]:
+    """Serialise with dask's synchronous scheduler if dask is loaded (else do nothing)."""
+    if "dask" not in sys.modules:
+        return contextlib.nullcontext()
+    import dask
+
+    return dask.config.set(scheduler="synchronous")
+
+
 def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
     """Write a result Dataset to netCDF-4 (h5netcdf) atomically."""
-    with atomic_path(path) as tmp:
-        dataset.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=False)
+    # serialised in memory, then written as plain bytes: a full disk fails in an ordinary
+    # write (no HDF5 file handle is left open to be closed again at exit)
+    with _local_scheduler():  # a dask.distributed client's locks cannot key a memory buffer
+        data = dataset.to_netcdf(engine="h5netcdf", invalid_netcdf=False)
+    with atomic_write(path, "wb") as handle:
+        handle.write(data)
 
 
 def read_result(path: str | Path) -> xr.Dataset:
@@ -301,8 +313,7 @@ def read_result(path: str | Path) -> xr.Dataset:
         If the file is missing, unreadable or not a jointwear result.
     """
     path = Path(path)
-    if not path.exists():
-        raise DataError(f"{path}: file not found")
+    check_input(path, "result", max_bytes=None)
     try:
         with xr.open_dataset(path, engine="h5netcdf") as handle:
             dataset = handle.load()

@@ -64,7 +64,7 @@ from jointwear.config import (
     read_toml,
 )
 from jointwear.errors import ConfigError, DataError, JointwearError
-from jointwear.io import atomic_write, write_json
+from jointwear.io import atomic_write, check_out, check_tree, write_json
 from jointwear.registry import suggest
 from jointwear.tribology.metrics import WEAR_METRICS
 from jointwear.units import DIMENSIONS, to_si
@@ -730,7 +730,9 @@ def run_sweep(
         Seconds to wait for the dask scheduler [s].
     """
     start = time.perf_counter()
-    out = Path(out)
+    # a link or special file planted inside must never redirect a write or a cleanup
+    out = check_out(out, names=(PLAN_FILE, CASES_DIR, CASES_CSV, DATASET_FILE))
+    check_tree(out)
     if workers is not None and workers < 1:
         raise ConfigError(f"--workers: must be >= 1, got {workers}")
     if (scheduler is not None or client is not None) and workers is not None:

@@ -36,7 +36,6 @@ FloatArray = NDArray[np.float64]
 _COLUMN = re.compile(r"^\s*(?P<name>[^\[\]()]*?)\s*(?:[\[(]\s*(?P<unit>[^\[\]()]*?)\s*[\])])?\s*$")
 
 
-
 def read_text_lines(path: Path) -> list[str]:
     """The lines of a UTF-8 text file (a byte-order mark is dropped).
 
@@ -45,17 +44,9 @@ def read_text_lines(path: Path) -> list[str]:
     path : Path
         The file.
     """
-    if not path.exists():
-        raise DataError(f"{path}: file not found")
-    if path.is_dir():
-        raise DataError(f"{path}: is a directory, not a data file")
-    try:
-        # utf-8-sig: spreadsheet programs like to start CSV files with a byte-order mark
-        return path.read_text(encoding="utf-8-sig").splitlines()
-    except UnicodeDecodeError:
-        raise DataError(f"{path}: not a text file (cannot decode as UTF-8)") from None
-    except OSError as exc:
-        raise DataError(f"{path}: cannot read ({exc.strerror or exc})") from None
+    from jointwear.io import read_input
+
+    return read_input(path, "data file").splitlines()
 
 
 def is_content(line: str) -> bool:
@@ -174,5 +165,3 @@ def unit_factor(unit: str, target: str = "m") -> float | None:
     if parsed.dimensionality != ureg.Unit(target).dimensionality:
         return None
     return float(ureg.Quantity(1.0, parsed).to(target).magnitude)
-
-

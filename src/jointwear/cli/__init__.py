@@ -30,7 +30,6 @@ from jointwear.cli import life_cmd  # noqa: F401  isort: skip
 __all__ = ["app", "main"]
 
 
-
 def _exception_types() -> tuple[tuple[type, ...], tuple[type, ...], tuple[type, ...]]:
     """Exit, abort and usage-error types of whichever click the installed typer uses.
 
@@ -64,56 +63,85 @@ def _one_line_warnings(debug: bool):
             text += f" [{category.__name__} at {filename}:{lineno}]"
         if text not in shown:
             shown.add(text)
-            err_console.print(f"warning: {text}", markup=False, highlight=False, soft_wrap=True)
+            _say(f"warning: {text}")
 
     return show
+
+
+#: options that name a file or directory: an empty value would silently mean "."
+_PATH_OPTIONS = ("--out", "--resume", "--csv")
+
+
+def _empty_path_option(args: list[str]) -> str | None:
+    """The first path option given an empty value (``--out ''``), else ``None``."""
+    for index, arg in enumerate(args):
+        if arg == "--":
+            break
+        if arg in _PATH_OPTIONS and index + 1 < len(args) and not args[index + 1].strip():
+            return arg
+        name, equals, value = arg.partition("=")
+        if equals and name in _PATH_OPTIONS and not value.strip():
+            return name
+    return None
+
+
+def _say(text: str) -> None:
+    err_console.print(text, markup=False, highlight=False, soft_wrap=True)
 
 
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``jointwear`` console script."""
     import warnings
 
+    from jointwear.interrupts import handling_signals
+
     args = list(sys.argv[1:] if argv is None else argv)
     debug = "--debug" in args
-    with warnings.catch_warnings():
+    with handling_signals(), warnings.catch_warnings():
         warnings.showwarning = _one_line_warnings(debug)
         _main(args, debug)
 
 
 def _main(args: list[str], debug: bool) -> None:
+    from jointwear.interrupts import exit_code, note
+
+    empty = _empty_path_option(args)
+    if empty is not None:
+        _say(f"error: {empty}: empty path")
+        sys.exit(2)
     command = typer.main.get_command(app)
     try:
         code = command.main(args=args, prog_name="jointwear", standalone_mode=False)
-        if isinstance(code, int) and code:  # e.g. 130 after Ctrl-C inside a command
-            if code == 130:
-                err_console.print("interrupted")
+        if isinstance(code, int) and code:
             sys.exit(code)
     except JointwearError as exc:
         if debug:
             raise
-        err_console.print(f"error: {exc}", markup=False, highlight=False, soft_wrap=True)
+        _say(f"error: {exc}")
         sys.exit(2)
     except _EXIT as exc:
+        # typer turns a KeyboardInterrupt (Ctrl-C, or SIGTERM via jointwear.interrupts)
+        # into Exit(130) raised from it
+        if isinstance(exc.__cause__, KeyboardInterrupt):
+            _say(note(exc.__cause__))
+            sys.exit(exit_code(exc.__cause__))
         sys.exit(exc.exit_code)
     except _USAGE_ERRORS as exc:
         if debug:
             raise
         message = (getattr(exc, "format_message", None) or exc.__str__)().replace("\n", " ")
         if message.strip():  # empty for a bare `jointwear` (the help was shown)
-            err_console.print(f"error: {message}", markup=False, highlight=False, soft_wrap=True)
+            _say(f"error: {message}")
         sys.exit(2)
-    except _ABORT:
-        err_console.print("aborted")
-        sys.exit(130)
-    except KeyboardInterrupt:
-        sys.exit(130)
+    except _ABORT as exc:
+        cause = exc.__cause__ or exc.__context__
+        _say(note(cause) if isinstance(cause, KeyboardInterrupt) else "aborted")
+        sys.exit(exit_code(cause) if isinstance(cause, KeyboardInterrupt) else 130)
+    except KeyboardInterrupt as exc:
+        _say(note(exc))
+        sys.exit(exit_code(exc))
     except Exception as exc:
         if debug:
             raise
-        err_console.print(
-            f"internal error: {type(exc).__name__}: {exc} (rerun with --debug for the traceback)",
-            markup=False,
-            highlight=False,
-            soft_wrap=True,
-        )
+        _say(f"internal error: {type(exc).__name__}: {exc} (rerun with --debug for the traceback)")
         sys.exit(1)

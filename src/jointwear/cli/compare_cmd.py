@@ -2,10 +2,7 @@
 
 from __future__ import annotations
 
-import contextlib
 import math
-import shutil
-import tempfile
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -99,34 +96,25 @@ def simulated_profile(dataset: Any, path: Path, revolution: int | None) -> tuple
     return depth, revolutions[index]
 
 
-def check_out(out: Path | None) -> None:
-    if out is not None and out.exists() and not out.is_dir():
-        raise ConfigError(f"--out: {out} exists and is not a directory")
+#: what ``jointwear compare --out`` writes
+COMPARE_FILES = (
+    "comparison.json",
+    "profiles.csv",
+    "compare_polar.png",
+    "compare_polar.svg",
+    "compare_profile.png",
+    "compare_profile.svg",
+)
 
 
 def write_staged(out: Path, write: Any) -> list[Path]:
-    """Call ``write(staging_dir)``, then move its files into ``out``: all or nothing."""
-    created = not out.exists()
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-        staging = Path(tempfile.mkdtemp(prefix=".staging-", dir=out))
-    except OSError as exc:
-        raise DataError(f"--out: cannot create {out} ({exc.strerror or exc})") from None
-    try:
+    """Call ``write(staging_dir)``, then publish its files into ``out``: all or nothing."""
+    from jointwear.io import staged_output
+
+    with staged_output(out, names=COMPARE_FILES, files=COMPARE_FILES) as staging:
         write(staging)
-        moved = []
-        for item in sorted(staging.iterdir()):
-            target = out / item.name
-            item.replace(target)
-            moved.append(target)
-        return moved
-    except OSError as exc:
-        raise DataError(f"--out: cannot write into {out} ({exc.strerror or exc})") from None
-    finally:
-        shutil.rmtree(staging, ignore_errors=True)
-        if created:
-            with contextlib.suppress(OSError):
-                out.rmdir()  # only if nothing was written
+        names = sorted(item.name for item in staging.iterdir())
+    return [out / name for name in names]
 
 
 @app.command()
@@ -143,8 +131,9 @@ def compare(
     revolution: RevolutionOpt = None,
     joint: Annotated[
         str | None,
-        typer.Option("--joint", help="The clearance joint of a result with several "
-                     "(default: the most worn)."),
+        typer.Option(
+            "--joint", help="The clearance joint of a result with several (default: the most worn)."
+        ),
     ] = None,
     json_: JsonOpt = False,
 ) -> None:
@@ -155,6 +144,7 @@ def compare(
     and both are compared on the simulation's grid: RMS error, peak, width, mass.
     Errors are measured minus simulated.
     """
+    from jointwear.io import check_out
     from jointwear.measurement.compare import (
         CIRCLE_FITS,
         PROFILE_CHOICES,
@@ -182,7 +172,8 @@ def compare(
     alignment = parse_align(align)
     if units is not None:
         length_unit_factor(units, "--units")
-    check_out(out)
+    if out is not None:
+        out = check_out(out, names=COMPARE_FILES, files=COMPARE_FILES)
 
     dataset = select_joint(read_result(result), joint)
     config = config_of(dataset)

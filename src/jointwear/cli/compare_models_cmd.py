@@ -68,9 +68,13 @@ def compare_models_command(
 ) -> None:
     """Contact half-angle, peak pressure and approach of every model over a load range."""
     from jointwear.contact import CONTACT_MODELS, ContactParameters
+    from jointwear.io import check_out, staged_output
     from jointwear.references.compare import DEFAULT_MODELS, METRICS, compare_models
     from jointwear.registry import suggest
 
+    names = ("compare_models_pressure.png", "compare_models_pressure.svg")
+    if out is not None:
+        out = check_out(out, names=names, files=names)
     cfg = load(config, list(set_ or []))
     force = _parse_loads(loads)
     names = _split(models) or list(DEFAULT_MODELS)
@@ -87,6 +91,8 @@ def compare_models_command(
         names.append(reference)
     if target not in ("pressure", "metrics"):
         raise ConfigError(f"--target: unknown {target!r}; choose 'pressure' or 'metrics'")
+    if calibrate and reference not in ("fem", "persson"):
+        raise ConfigError("--calibrate: the reference must be 'fem' or 'persson'")
     params = ContactParameters.from_config(cfg)
     options = {
         "balance": cfg.contact.balance,
@@ -103,15 +109,15 @@ def compare_models_command(
     if out is not None:
         from jointwear.references.compare import plot_pressure
 
-        plots = plot_pressure(comparison, out)
+        with staged_output(out, names=names, files=names) as staging:
+            staged = plot_pressure(comparison, staging)
+        plots = [out / path.name for path in staged]
         result["plots"] = [str(p) for p in plots]
 
     fits = {}
     if calibrate:
         from jointwear.references.calibrate import calibrate_to_reference
 
-        if reference not in ("fem", "persson"):
-            raise ConfigError("--calibrate: the reference must be 'fem' or 'persson'")
         fits = calibrate_to_reference(
             params, force, reference=reference, target=target, nodes=cfg.contact.nodes
         )

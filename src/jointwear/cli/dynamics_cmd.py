@@ -20,7 +20,8 @@ from jointwear.cli.common import (
     err_console,
     load,
 )
-from jointwear.io import atomic_write
+from jointwear.errors import ConfigError, DataError
+from jointwear.io import atomic_write, os_reason
 from jointwear.mechanism import LoadCycle, load_cycles
 
 CsvOpt = Annotated[
@@ -52,6 +53,18 @@ def write_csv(path: Path, cycle: LoadCycle) -> None:
         writer = csv.writer(handle)
         writer.writerow(columns)
         writer.writerows([repr(float(value)) for value in row] for row in rows)
+
+
+def check_csv(path: Path) -> None:
+    """A --csv target must be absent or a regular file (not a link, folder or device)."""
+    if path.is_symlink() or (path.exists() and not path.is_file()):
+        kind = "a directory" if path.is_dir() and not path.is_symlink() else "not a regular file"
+        raise ConfigError(f"--csv: {path} is {kind}")
+    for parent in path.parents:  # created when missing; the first existing one is a folder
+        if parent.exists():
+            if not parent.is_dir():
+                raise ConfigError(f"--csv: {parent} is not a directory")
+            break
 
 
 def csv_paths(path: Path, joints: list[str]) -> dict[str, Path]:
@@ -124,6 +137,8 @@ def dynamics(
     overrides = list(set_ or [])
     if strict:
         overrides.append("dynamics.strict=true")
+    if csv_path is not None:  # before anything is computed
+        check_csv(csv_path)
     cfg = load(config, overrides)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -134,8 +149,14 @@ def dynamics(
             f"warning: {warning.message}", markup=False, highlight=False, soft_wrap=True
         )
     if csv_path is not None:
-        for joint, path in csv_paths(csv_path, list(cycles)).items():
-            write_csv(path, cycles[joint])
+        paths = csv_paths(csv_path, list(cycles))
+        for path in paths.values():
+            check_csv(path)
+        try:
+            for joint, path in paths.items():
+                write_csv(path, cycles[joint])
+        except OSError as exc:
+            raise DataError(f"--csv: {exc.filename or csv_path}: {os_reason(exc)}") from None
     context = {"clearance_m": cfg.joint.clearance}
     summaries = {joint: {**cycle.summary(), **context} for joint, cycle in cycles.items()}
     first = next(iter(summaries.values()))

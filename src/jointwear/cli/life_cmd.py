@@ -47,18 +47,20 @@ def life(
     Each case draws the sampled inputs and runs to its first limit; the sensitivity is
     the rank correlation of the life with each input.
     """
+    from jointwear.io import atomic_path, check_out, check_tree
     from jointwear.life import life_plan, parse_distribution, plot_life, run_life
 
     if out is None:
         raise ConfigError("--out: missing; the life study needs a directory for its cases")
-    if out.exists() and not out.is_dir():
-        raise ConfigError(f"--out: {out} exists and is not a directory")
+    out = check_out(out, names=("life.json", "life.png", "cases.csv", "sweep.nc"))
+    check_tree(out)
     base = load(config, set_)
     samples = dict(parse_distribution(text) for text in sample or [])
     plan = life_plan(base, samples, cases, seed)
     with ProgressBar("cases", quiet=quiet, delay=0.0) as bar:
         result = run_life(plan, out, scheduler=scheduler, workers=workers, progress=bar)
-    plot_life(result).savefig(out / "life.png", dpi=120)
+    with atomic_path(out / "life.png") as tmp:
+        plot_life(result).savefig(tmp, format="png", dpi=120)
     summary = result.summary()
     if json_:
         emit_json(summary)

@@ -4,9 +4,7 @@ from __future__ import annotations
 
 import contextlib
 import math
-import shutil
 import sys
-import tempfile
 import time
 from pathlib import Path
 from typing import Annotated
@@ -94,14 +92,16 @@ def plot_joints(dataset, directory: Path, **options) -> list[Path]:
     ]
 
 
+#: what ``jointwear run --out`` writes (files, then the plots folder)
+RUN_FILES = ("result.nc", "metrics.csv", "config.toml", "summary.json")
+
+
 def write_outputs(result, out: Path, plots: bool = True) -> None:
-    """Write a run's files into ``out``: all or nothing (staged, then moved in)."""
-    from jointwear.io import write_json
+    """Write a run's files into ``out``: all or nothing (staged, then published at once)."""
+    from jointwear.io import staged_output, write_json
     from jointwear.results import write_metrics_csv
 
-    out.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=".staging-", dir=out))
-    try:
+    with staged_output(out, names=(*RUN_FILES, "plots"), files=RUN_FILES) as staging:
         result.to_netcdf(staging / "result.nc")
         write_metrics_csv(result.dataset, staging / "metrics.csv")
         (staging / "config.toml").write_text(
@@ -110,13 +110,6 @@ def write_outputs(result, out: Path, plots: bool = True) -> None:
         write_json(staging / "summary.json", result.summary())
         if plots:
             plot_joints(result.dataset, staging / "plots")
-        for item in staging.iterdir():
-            target = out / item.name
-            if target.is_dir() and item.is_dir():
-                shutil.rmtree(target)
-            item.replace(target)
-    finally:
-        shutil.rmtree(staging, ignore_errors=True)
 
 
 def summary_table(summary: dict, title: str) -> Table:
@@ -133,6 +126,10 @@ def summary_table(summary: dict, title: str) -> Table:
     table.add_row("run time", f"{summary['runtime_s']:.3g} s")
     return table
 
+
+#: entries of a run's --out directory a run may replace (checkpoints included)
+OUT_FILES = (*RUN_FILES, "checkpoint.toml", "checkpoint.npz")
+OUT_NAMES = (*OUT_FILES, "plots")
 
 OptConfigArg = Annotated[
     Path | None,
@@ -173,7 +170,8 @@ def run(
 ) -> None:
     """Simulate wear over revolutions (dynamics -> pressure -> Archard -> contour update)."""
     from jointwear.checkpoint import Checkpointer, has_checkpoint, load_checkpoint
-    from jointwear.errors import ConfigError, DataError, JointwearError
+    from jointwear.errors import ConfigError, JointwearError
+    from jointwear.io import check_out
     from jointwear.simulation import Simulation
 
     state = None
@@ -188,8 +186,8 @@ def run(
             raise ConfigError("--checkpoint-every: a resumed run keeps its checkpoint interval")
         if out is not None and out.resolve() != resume.resolve():
             raise ConfigError("--out: a resumed run writes its results into the --resume directory")
-        cfg, state, checkpointer = load_checkpoint(resume)
-        out = resume
+        out = check_out(resume, "--resume", names=OUT_NAMES, files=OUT_FILES)
+        cfg, state, checkpointer = load_checkpoint(out)
         name = out.name
     else:
         if config is None:
@@ -201,9 +199,9 @@ def run(
             if checkpoint_every > 0 and out is None:
                 raise ConfigError("--checkpoint-every: needs --out DIR (checkpoints go there)")
             overrides.append(f"simulation.checkpoint_every={checkpoint_every}")
+        if out is not None:  # before anything is computed
+            out = check_out(out, names=OUT_NAMES, files=OUT_FILES)
         cfg = load(config, overrides)
-        if out is not None and out.exists() and not out.is_dir():
-            raise ConfigError(f"--out: {out} exists and is not a directory")
         if out is not None and has_checkpoint(out):
             raise ConfigError(
                 f"--out: {out} holds the checkpoint of an unfinished run; continue it with "
@@ -227,15 +225,12 @@ def run(
                 with contextlib.suppress(OSError):
                     out.rmdir()
         raise
-    except KeyboardInterrupt:
-        if checkpointer is not None:
-            err_console.print(f"interrupted; continue with `jointwear run --resume {out}`")
+    except KeyboardInterrupt as exc:
+        if checkpointer is not None and checkpointer.config_path.exists():
+            exc.resume = f"jointwear run --resume {out}"  # printed by the CLI's one line
         raise
     if out is not None:
-        try:
-            write_outputs(result, out, plots=plots)
-        except OSError as exc:
-            raise DataError(f"--out: cannot write the results into {out} ({exc})") from None
+        write_outputs(result, out, plots=plots)
     if checkpointer is not None:
         checkpointer.clear()
     summary = result.summary()
@@ -260,9 +255,9 @@ def plot(
 ) -> None:
     """Redraw the figures of a saved result."""
     from jointwear.errors import ConfigError
+    from jointwear.io import check_out, staged_output
     from jointwear.results import read_result
 
-    dataset = read_result(result)
     if magnification != "auto":
         try:
             value = float(magnification)
@@ -274,6 +269,8 @@ def plot(
             raise ConfigError("--magnification: must be a positive number")
     else:
         value = "auto"
-    target = out if out is not None else result.parent / "plots"
-    paths = plot_joints(dataset, target, magnification=value)
-    console.print(f"{len(paths)} files written to {target}/")
+    target = check_out(out if out is not None else result.parent / "plots")
+    dataset = read_result(result)
+    with staged_output(target) as staging:
+        count = len(plot_joints(dataset, staging, magnification=value))
+    console.print(f"{count} files written to {target}/")

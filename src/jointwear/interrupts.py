@@ -1,0 +1,73 @@
+"""SIGINT and SIGTERM as one exception, so every command cleans up the same way.
+
+The command line installs :func:`handling_signals` first thing (before its heavy
+imports): either signal raises :class:`Interrupted` (a ``KeyboardInterrupt``) in the
+main thread, every ``finally`` block and staging directory is cleaned up on the way
+out, and the process ends with ``interrupted`` (exit status 130) or ``terminated``
+(143) on stderr. A checkpointed run adds the command that continues it.
+
+Only the standard library is imported here: the handler must be in place before
+numpy, xarray or matplotlib start loading.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+from collections.abc import Iterator
+from types import FrameType
+
+__all__ = ["Interrupted", "exit_code", "handling_signals", "note"]
+
+_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+_NOTES = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated"}
+
+
+class Interrupted(KeyboardInterrupt):
+    """SIGINT or SIGTERM arrived; ``signum`` says which, ``resume`` how to continue."""
+
+    def __init__(self, signum: int = signal.SIGINT) -> None:
+        super().__init__(_NOTES.get(signum, "interrupted"))
+        self.signum = signum
+        self.resume: str | None = None
+
+
+def exit_code(exc: BaseException) -> int:
+    """128 + the signal number (130 for SIGINT, 143 for SIGTERM)."""
+    return 128 + int(getattr(exc, "signum", signal.SIGINT))
+
+
+def note(exc: BaseException) -> str:
+    """The one line printed on stderr: ``interrupted`` / ``terminated`` (+ how to resume)."""
+    text = _NOTES.get(getattr(exc, "signum", signal.SIGINT), "interrupted")
+    resume = getattr(exc, "resume", None)
+    return f"{text}; continue with `{resume}`" if resume else text
+
+
+def _raise(signum: int, frame: FrameType | None) -> None:
+    # a second signal while the first one is being cleaned up is ignored
+    for each in _SIGNALS:
+        signal.signal(each, signal.SIG_IGN)
+    raise Interrupted(signum)
+
+
+@contextlib.contextmanager
+def handling_signals() -> Iterator[None]:
+    """Turn SIGINT/SIGTERM into :class:`Interrupted` for the block; restore the old handlers.
+
+    A signal the parent process set to be ignored (``nohup``, background jobs) stays
+    ignored. Outside the main thread this does nothing.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {each: signal.getsignal(each) for each in _SIGNALS}
+    for each, handler in previous.items():
+        if handler is not signal.SIG_IGN:
+            signal.signal(each, _raise)
+    try:
+        yield
+    finally:
+        for each, handler in previous.items():
+            signal.signal(each, handler if handler is not None else signal.SIG_DFL)
