@@ -49,7 +49,7 @@ import numpy as np
 
 from jointwear.config import Config, config_from_dict, read_toml
 from jointwear.errors import ConfigError, DataError
-from jointwear.io import atomic_write
+from jointwear.io import atomic_write, check_input
 
 if TYPE_CHECKING:
     from jointwear.simulation import SimulationState
@@ -211,6 +211,7 @@ def read_state(path: str | Path) -> tuple[SimulationState, str]:
         If the file is missing, truncated or not a jointwear checkpoint.
     """
     path = Path(path)
+    check_input(path, "checkpoint", max_bytes=None)  # a FIFO or folder is never opened
     try:
         with np.load(path, allow_pickle=False) as data:
             arrays = {name: data[name] for name in data.files}

@@ -903,7 +903,8 @@ def load_config(
     if isinstance(mechanism, dict) and isinstance(mechanism.get("file"), str):
         # a data file named in a config is found next to the config, wherever it is run
         base = Path.cwd() if path is None else Path(path).parent
-        mechanism["file"] = str((base / mechanism["file"]).resolve())
+        # absolute, but a link keeps its name (messages name the file the user wrote)
+        mechanism["file"] = str(Path.absolute(base / mechanism["file"]))
     return config_from_dict(data)
 
 

@@ -18,7 +18,7 @@ import threading
 from collections.abc import Iterator
 from types import FrameType
 
-__all__ = ["Interrupted", "exit_code", "handling_signals", "note"]
+__all__ = ["Interrupted", "exit_code", "handling_signals", "last", "note"]
 
 _SIGNALS = (signal.SIGINT, signal.SIGTERM)
 _NOTES = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated"}
@@ -45,11 +45,21 @@ def note(exc: BaseException) -> str:
     return f"{text}; continue with `{resume}`" if resume else text
 
 
+_last: list[Interrupted] = []
+
+
+def last() -> Interrupted | None:
+    """The :class:`Interrupted` raised by the handler, if any (frameworks may swallow it)."""
+    return _last[-1] if _last else None
+
+
 def _raise(signum: int, frame: FrameType | None) -> None:
     # a second signal while the first one is being cleaned up is ignored
     for each in _SIGNALS:
         signal.signal(each, signal.SIG_IGN)
-    raise Interrupted(signum)
+    exc = Interrupted(signum)
+    _last.append(exc)
+    raise exc
 
 
 @contextlib.contextmanager
@@ -63,6 +73,7 @@ def handling_signals() -> Iterator[None]:
         yield
         return
     previous = {each: signal.getsignal(each) for each in _SIGNALS}
+    _last.clear()
     for each, handler in previous.items():
         if handler is not signal.SIG_IGN:
             signal.signal(each, _raise)

@@ -249,7 +249,11 @@ def _refuse_special(target: Path, flag: str) -> os.stat_result | None:
 
 
 def check_out(
-    out: str | Path, flag: str = "--out", names: Iterable[str] = (), files: Iterable[str] = ()
+    out: str | Path,
+    flag: str = "--out",
+    names: Iterable[str] = (),
+    files: Iterable[str] = (),
+    dirs: Iterable[str] = (),
 ) -> Path:
     """Check an output directory before anything is computed or written.
 
@@ -265,6 +269,8 @@ def check_out(
         file or a directory, not a symbolic link or special file.
     files : iterable of str
         Entries that are files: a directory of that name is refused.
+    dirs : iterable of str
+        Entries that are folders: a file of that name is refused.
 
     Returns
     -------
@@ -281,11 +287,13 @@ def check_out(
     if out.is_symlink():
         raise ConfigError(f"{flag}: {out} is a dangling symbolic link")
     if out.is_dir():
-        files = set(files)
-        for name in {*names, *files}:
+        files, dirs = set(files), set(dirs)
+        for name in sorted({*names, *files, *dirs}):
             info = _refuse_special(out / name, flag)
             if info is not None and name in files and stat.S_ISDIR(info.st_mode):
                 raise DataError(f"{flag}: {out / name} is a directory, not a file")
+            if info is not None and name in dirs and not stat.S_ISDIR(info.st_mode):
+                raise DataError(f"{flag}: {out / name} is a file, not a directory")
     else:
         for parent in out.parents:  # the first existing ancestor must be a directory
             if parent.exists() or parent.is_symlink():
@@ -347,7 +355,11 @@ def _publish(staging: Path, out: Path, flag: str) -> None:
 
 @contextlib.contextmanager
 def staged_output(
-    out: str | Path, flag: str = "--out", names: Iterable[str] = (), files: Iterable[str] = ()
+    out: str | Path,
+    flag: str = "--out",
+    names: Iterable[str] = (),
+    files: Iterable[str] = (),
+    dirs: Iterable[str] = (),
 ) -> Iterator[Path]:
     """Stage a command's output and publish it into ``out`` all at once, or not at all.
 
@@ -362,7 +374,7 @@ def staged_output(
         Output directory.
     flag : str
         The option, for messages.
-    names, files : iterable of str
+    names, files, dirs : iterable of str
         As in :func:`check_out`.
 
     Raises
@@ -372,7 +384,7 @@ def staged_output(
         or an entry to replace is a symbolic link, a special file, or a directory
         where a file goes.
     """
-    out = check_out(out, flag, names, files)
+    out = check_out(out, flag, names, files, dirs)
     created: list[Path] = []
     for parent in reversed(out.parents):
         if not parent.exists():
@@ -406,15 +418,26 @@ def staged_output(
                     parent.rmdir()
 
 
-def check_tree(out: str | Path, flag: str = "--out") -> None:
-    """Refuse symbolic links and special files anywhere inside ``out`` (a command's own tree).
+def check_tree(out: str | Path, names: Iterable[str], flag: str = "--out") -> None:
+    """Refuse symbolic links and special files in the folders ``names`` of ``out``.
 
-    Used for directories a command fills incrementally (sweeps, their cases), so a
+    Used for directories a command fills incrementally (a sweep's ``cases/``), so a
     link planted inside can never make it write or delete outside ``out``.
+
+    Parameters
+    ----------
+    out : path-like
+        The output directory.
+    names : iterable of str
+        Its entries the command owns (checked with everything below them).
+    flag : str
+        The option, for messages.
     """
     out = Path(out)
-    if not out.is_dir():
-        return
-    for root, dirs, entries in os.walk(out):
-        for name in [*dirs, *entries]:
-            _refuse_special(Path(root) / name, flag)
+    for name in names:
+        top = out / name
+        if _refuse_special(top, flag) is None or not top.is_dir():
+            continue
+        for root, dirs, entries in os.walk(top):
+            for entry in [*dirs, *entries]:
+                _refuse_special(Path(root) / entry, flag)

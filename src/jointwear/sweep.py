@@ -64,7 +64,7 @@ from jointwear.config import (
     read_toml,
 )
 from jointwear.errors import ConfigError, DataError, JointwearError
-from jointwear.io import atomic_write, check_out, check_tree, write_json
+from jointwear.io import atomic_write, check_out, check_tree, read_input, write_json
 from jointwear.registry import suggest
 from jointwear.tribology.metrics import WEAR_METRICS
 from jointwear.units import DIMENSIONS, to_si
@@ -677,11 +677,11 @@ def load_plan(out: str | Path) -> SweepPlan:
     path = out / PLAN_FILE
     if not out.is_dir():
         raise DataError(f"{out}: no such directory to resume")
+    if not (path.exists() or path.is_symlink()):
+        raise DataError(f"{out}: not a sweep directory (no {PLAN_FILE})")
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise DataError(f"{out}: not a sweep directory (no {PLAN_FILE})") from None
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        data = json.loads(read_input(path, "sweep plan"))
+    except json.JSONDecodeError as exc:
         raise DataError(f"{path}: unreadable sweep plan ({type(exc).__name__})") from None
     if not isinstance(data, dict):
         raise DataError(f"{path}: not a jointwear sweep plan")
@@ -731,8 +731,8 @@ def run_sweep(
     """
     start = time.perf_counter()
     # a link or special file planted inside must never redirect a write or a cleanup
-    out = check_out(out, names=(PLAN_FILE, CASES_DIR, CASES_CSV, DATASET_FILE))
-    check_tree(out)
+    out = check_out(out, files=(PLAN_FILE, CASES_CSV, DATASET_FILE), dirs=(CASES_DIR,))
+    check_tree(out, (CASES_DIR,))
     if workers is not None and workers < 1:
         raise ConfigError(f"--workers: must be >= 1, got {workers}")
     if (scheduler is not None or client is not None) and workers is not None:

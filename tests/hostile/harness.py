@@ -8,7 +8,8 @@ Each ``test_*.py`` module of this package holds a ``CASES`` list of them;
 
 The contract every case asserts: exit status 2, exactly one line on stderr starting
 with ``error:`` and containing every fragment, nothing on stdout, no traceback, and
-nothing written into ``--out`` or next to the inputs.
+nothing written or changed in ``--out`` or next to the inputs (no file, folder or link
+created, none changed or removed).
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ class Bad:
     """One bad input: the command line, the files it needs, what the message must say."""
 
     id: str
-    area: str  # config | cli | data | sweep | run
+    area: str  # config | cli | data | sweep | run | output | files | signals | checkpoint
     argv: list[str]
     expect: list[str]
     files: dict[str, str | bytes] = field(default_factory=dict)
@@ -58,11 +59,29 @@ CSV_HEADER = "x [mm],y [mm]\n"
 
 
 def materialise(tmp: Path, files: dict[str, str | bytes], result: bytes) -> None:
+    """Create ``files`` under ``tmp``; besides text and bytes, a few markers.
+
+    ``@dir`` a folder, ``@fifo`` a named pipe, ``@link:NAME`` a symbolic link to
+    ``tmp/NAME``, ``@sparse:N`` an N MiB file of zeros (sparse), ``@tiny`` /
+    ``@config`` / ``@result`` / ``@truncated-result`` / ``@foreign-netcdf`` real inputs.
+    """
+    import os
+
     import xarray as xr
 
     for name, content in files.items():
         path = tmp / name
-        if content == "@tiny":
+        path.parent.mkdir(parents=True, exist_ok=True)
+        if content == "@dir":
+            path.mkdir(exist_ok=True)
+        elif content == "@fifo":
+            os.mkfifo(path)
+        elif isinstance(content, str) and content.startswith("@link:"):
+            path.symlink_to(tmp / content.removeprefix("@link:"))
+        elif isinstance(content, str) and content.startswith("@sparse:"):
+            with open(path, "wb") as handle:
+                handle.truncate(int(content.removeprefix("@sparse:")) * 2**20)
+        elif content == "@tiny":
             path.write_text(tiny_toml(), encoding="utf-8")
         elif content == "@config":
             path.write_text(load_config(PAPER).to_toml(), encoding="utf-8")
@@ -96,12 +115,32 @@ def files_in(folder: Path) -> list[Path]:
     return [p for p in folder.rglob("*") if p.is_file()] if folder.exists() else []
 
 
+def snapshot(folder: Path) -> dict[Path, tuple[str, bytes | str | None]]:
+    """Every entry under ``folder`` (links not followed): its kind and content."""
+    import os
+    import stat
+
+    entries: dict[Path, tuple[str, bytes | str | None]] = {}
+    for root, dirs, names in os.walk(folder):
+        for name in [*dirs, *names]:
+            path = Path(root) / name
+            mode = path.lstat().st_mode
+            if stat.S_ISLNK(mode):
+                entries[path] = ("link", os.readlink(path))
+            elif stat.S_ISREG(mode):
+                entries[path] = ("file", path.read_bytes())
+            else:
+                entries[path] = ("dir" if stat.S_ISDIR(mode) else "special", None)
+    return entries
+
+
 def check_contract(case: Bad, tmp_path: Path, capsys, result: bytes) -> None:
     """Run ``case`` in-process in ``tmp_path`` and assert the bad-input contract."""
     if case.needs() not in COMMANDS:
         pytest.fail(f"no `jointwear {case.needs()}` command")
     materialise(tmp_path, case.files, result)
     before = set(files_in(tmp_path))
+    entries = snapshot(tmp_path)
     out = tmp_path / "out"
     argv = expand(case.argv, tmp_path, out)
     if case.area == "run" and "--out" not in argv:
@@ -115,6 +154,7 @@ def check_contract(case: Bad, tmp_path: Path, capsys, result: bytes) -> None:
     assert "Traceback" not in stderr
     for fragment in case.expect:
         assert fragment in stderr, f"{fragment!r} not in {stderr!r}"
-    # nothing written: no results, no checkpoints, no temporary files
-    assert files_in(out) == []
+    # nothing written or changed: no results, no checkpoints, no temporary files or folders
+    assert set(files_in(out)) <= before
     assert set(files_in(tmp_path)) == before
+    assert snapshot(tmp_path) == entries

@@ -103,7 +103,7 @@ def main(argv: list[str] | None = None) -> None:
 
 
 def _main(args: list[str], debug: bool) -> None:
-    from jointwear.interrupts import exit_code, note
+    from jointwear.interrupts import exit_code, last, note
 
     empty = _empty_path_option(args)
     if empty is not None:
@@ -112,6 +112,10 @@ def _main(args: list[str], debug: bool) -> None:
     command = typer.main.get_command(app)
     try:
         code = command.main(args=args, prog_name="jointwear", standalone_mode=False)
+        if code == 130:  # typer returns 130 for a KeyboardInterrupt inside a command
+            interrupt = last() or KeyboardInterrupt()
+            _say(note(interrupt))
+            sys.exit(exit_code(interrupt))
         if isinstance(code, int) and code:
             sys.exit(code)
     except JointwearError as exc:

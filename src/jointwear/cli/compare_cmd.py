@@ -111,7 +111,7 @@ def write_staged(out: Path, write: Any) -> list[Path]:
     """Call ``write(staging_dir)``, then publish its files into ``out``: all or nothing."""
     from jointwear.io import staged_output
 
-    with staged_output(out, names=COMPARE_FILES, files=COMPARE_FILES) as staging:
+    with staged_output(out, files=COMPARE_FILES) as staging:
         write(staging)
         names = sorted(item.name for item in staging.iterdir())
     return [out / name for name in names]
@@ -173,7 +173,7 @@ def compare(
     if units is not None:
         length_unit_factor(units, "--units")
     if out is not None:
-        out = check_out(out, names=COMPARE_FILES, files=COMPARE_FILES)
+        out = check_out(out, files=COMPARE_FILES)
 
     dataset = select_joint(read_result(result), joint)
     config = config_of(dataset)

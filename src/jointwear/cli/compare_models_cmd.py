@@ -74,7 +74,7 @@ def compare_models_command(
 
     names = ("compare_models_pressure.png", "compare_models_pressure.svg")
     if out is not None:
-        out = check_out(out, names=names, files=names)
+        out = check_out(out, files=names)
     cfg = load(config, list(set_ or []))
     force = _parse_loads(loads)
     names = _split(models) or list(DEFAULT_MODELS)
@@ -109,7 +109,7 @@ def compare_models_command(
     if out is not None:
         from jointwear.references.compare import plot_pressure
 
-        with staged_output(out, names=names, files=names) as staging:
+        with staged_output(out, files=names) as staging:
             staged = plot_pressure(comparison, staging)
         plots = [out / path.name for path in staged]
         result["plots"] = [str(p) for p in plots]

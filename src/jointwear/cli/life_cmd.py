@@ -52,8 +52,8 @@ def life(
 
     if out is None:
         raise ConfigError("--out: missing; the life study needs a directory for its cases")
-    out = check_out(out, names=("life.json", "life.png", "cases.csv", "sweep.nc"))
-    check_tree(out)
+    out = check_out(out, files=("life.json", "life.png", "cases.csv", "sweep.nc"), dirs=("cases",))
+    check_tree(out, ("cases",))
     base = load(config, set_)
     samples = dict(parse_distribution(text) for text in sample or [])
     plan = life_plan(base, samples, cases, seed)

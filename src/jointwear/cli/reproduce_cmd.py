@@ -31,7 +31,11 @@ def reproduce(
     quiet: Annotated[bool, typer.Option("--quiet", "-q")] = False,
 ) -> None:
     """Run the paper's cases (Tables 3-5, Figs. 8-15) and write OUT/report.md."""
+    from jointwear.io import check_out, check_tree
     from jointwear.reproduce import case_names
+
+    out = check_out(out, files=("report.md", "report.json"), dirs=("figures", "results"))
+    check_tree(out, ("figures", "results"))
     from jointwear.reproduce import reproduce as run_reproduction
 
     if case:

@@ -101,7 +101,7 @@ def write_outputs(result, out: Path, plots: bool = True) -> None:
     from jointwear.io import staged_output, write_json
     from jointwear.results import write_metrics_csv
 
-    with staged_output(out, names=(*RUN_FILES, "plots"), files=RUN_FILES) as staging:
+    with staged_output(out, files=RUN_FILES, dirs=("plots",)) as staging:
         result.to_netcdf(staging / "result.nc")
         write_metrics_csv(result.dataset, staging / "metrics.csv")
         (staging / "config.toml").write_text(
@@ -129,7 +129,6 @@ def summary_table(summary: dict, title: str) -> Table:
 
 #: entries of a run's --out directory a run may replace (checkpoints included)
 OUT_FILES = (*RUN_FILES, "checkpoint.toml", "checkpoint.npz")
-OUT_NAMES = (*OUT_FILES, "plots")
 
 OptConfigArg = Annotated[
     Path | None,
@@ -186,7 +185,7 @@ def run(
             raise ConfigError("--checkpoint-every: a resumed run keeps its checkpoint interval")
         if out is not None and out.resolve() != resume.resolve():
             raise ConfigError("--out: a resumed run writes its results into the --resume directory")
-        out = check_out(resume, "--resume", names=OUT_NAMES, files=OUT_FILES)
+        out = check_out(resume, "--resume", files=OUT_FILES, dirs=("plots",))
         cfg, state, checkpointer = load_checkpoint(out)
         name = out.name
     else:
@@ -200,7 +199,7 @@ def run(
                 raise ConfigError("--checkpoint-every: needs --out DIR (checkpoints go there)")
             overrides.append(f"simulation.checkpoint_every={checkpoint_every}")
         if out is not None:  # before anything is computed
-            out = check_out(out, names=OUT_NAMES, files=OUT_FILES)
+            out = check_out(out, files=OUT_FILES, dirs=("plots",))
         cfg = load(config, overrides)
         if out is not None and has_checkpoint(out):
             raise ConfigError(
