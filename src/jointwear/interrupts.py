@@ -22,6 +22,7 @@ __all__ = ["Interrupted", "exit_code", "handling_signals", "last", "note"]
 
 _SIGNALS = (signal.SIGINT, signal.SIGTERM)
 _NOTES = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated"}
+_last: list[Interrupted] = []
 
 
 class Interrupted(KeyboardInterrupt):
@@ -31,6 +32,7 @@ class Interrupted(KeyboardInterrupt):
         super().__init__(_NOTES.get(signum, "interrupted"))
         self.signum = signum
         self.resume: str | None = None
+        _last.append(self)  # the CLI reads it back where a framework swallowed the exception
 
 
 def exit_code(exc: BaseException) -> int:
@@ -45,11 +47,8 @@ def note(exc: BaseException) -> str:
     return f"{text}; continue with `{resume}`" if resume else text
 
 
-_last: list[Interrupted] = []
-
-
 def last() -> Interrupted | None:
-    """The :class:`Interrupted` raised by the handler, if any (frameworks may swallow it)."""
+    """The latest :class:`Interrupted` (typer turns it into a plain exit status 130)."""
     return _last[-1] if _last else None
 
 
@@ -57,9 +56,7 @@ def _raise(signum: int, frame: FrameType | None) -> None:
     # a second signal while the first one is being cleaned up is ignored
     for each in _SIGNALS:
         signal.signal(each, signal.SIG_IGN)
-    exc = Interrupted(signum)
-    _last.append(exc)
-    raise exc
+    raise Interrupted(signum)
 
 
 @contextlib.contextmanager

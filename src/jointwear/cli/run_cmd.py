@@ -170,6 +170,7 @@ def run(
     """Simulate wear over revolutions (dynamics -> pressure -> Archard -> contour update)."""
     from jointwear.checkpoint import Checkpointer, has_checkpoint, load_checkpoint
     from jointwear.errors import ConfigError, JointwearError
+    from jointwear.interrupts import Interrupted
     from jointwear.io import check_out
     from jointwear.simulation import Simulation
 
@@ -225,9 +226,11 @@ def run(
                     out.rmdir()
         raise
     except KeyboardInterrupt as exc:
-        if checkpointer is not None and checkpointer.config_path.exists():
-            exc.resume = f"jointwear run --resume {out}"  # printed by the CLI's one line
-        raise
+        if checkpointer is None or not checkpointer.config_path.exists():
+            raise
+        interrupt = exc if isinstance(exc, Interrupted) else Interrupted()
+        interrupt.resume = f"jointwear run --resume {out}"  # on the CLI's one line
+        raise interrupt from None
     if out is not None:
         write_outputs(result, out, plots=plots)
     if checkpointer is not None:

@@ -1,0 +1,245 @@
+"""SIGINT and SIGTERM: exit 130 / 143 with one line, nothing half-written, resumable checkpoints.
+
+Either signal raises :class:`jointwear.interrupts.Interrupted` in the main thread; staging
+folders are removed on the way out, so ``--out`` holds either nothing new or, for a
+checkpointed run, a complete checkpoint that ``jointwear run --resume DIR`` continues to
+exactly the numbers of an uninterrupted run.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import random
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from jointwear import Simulation, load_config
+from jointwear.checkpoint import CHECKPOINT_CONFIG, CHECKPOINT_STATE, Checkpointer, read_state
+from jointwear.interrupts import Interrupted
+from jointwear.results import read_result
+from tests.hostile.harness import PAPER, REPO, SMALL, Bad, run_cli, snapshot
+
+#: the signal tests are free-form (real processes); no table cases
+CASES: list[Bad] = []
+
+UPDATE_CONFIG = REPO / "examples" / "paper" / "fig14_nlcp_update.toml"
+ENDLESS = [
+    *SMALL,
+    "--set",
+    "simulation.revolutions=100000000",
+    "--set",
+    "simulation.update_every=1",
+]
+RESUMABLE = {
+    "contact.nodes": 90,
+    "simulation.steps_per_revolution": 90,
+    "simulation.revolutions": 3000,
+    "simulation.update_every": 1,
+}
+
+
+def jointwear(*args: str) -> subprocess.Popen:
+    return subprocess.Popen(
+        [sys.executable, "-m", "jointwear", *args],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "PYTHONPATH": str(REPO / "src")},
+    )
+
+
+def handler_installed(pid: int) -> bool:
+    """Whether ``pid`` catches SIGTERM yet (jointwear's handler; Python's default does not)."""
+    try:
+        status = Path(f"/proc/{pid}/status").read_text()
+    except OSError:
+        return False
+    caught = next(line for line in status.splitlines() if line.startswith("SigCgt:"))
+    return bool(int(caught.split()[1], 16) >> (signal.SIGTERM - 1) & 1)
+
+
+def wait_for(condition, process: subprocess.Popen, what: str, limit: float = 120.0) -> None:
+    deadline = time.monotonic() + limit
+    while not condition():
+        assert process.poll() is None, process.communicate()
+        assert time.monotonic() < deadline, f"never saw {what}"
+        time.sleep(0.005)
+
+
+def finish(process: subprocess.Popen) -> tuple[int, str, str]:
+    try:
+        stdout, stderr = process.communicate(timeout=120)
+    finally:
+        process.kill()
+    return process.returncode, stdout, stderr
+
+
+def last_line(stderr: str) -> str:
+    """The final stderr line (a run may print physics warnings before it)."""
+    lines = stderr.splitlines()
+    assert lines, "nothing on stderr"
+    assert not any("Traceback" in line for line in lines), stderr
+    return lines[-1]
+
+
+# ---------------------------------------------------------------- real processes
+
+
+@pytest.mark.parametrize(
+    ("signum", "code", "note"),
+    [(signal.SIGINT, 130, "interrupted"), (signal.SIGTERM, 143, "terminated")],
+)
+def test_signal_mid_run_exits_with_one_line_and_writes_nothing(tmp_path, signum, code, note):
+    """A signal in the middle of a run: exit 130/143, one note, --out never created."""
+    out = tmp_path / "out"
+    process = jointwear("run", str(PAPER), *ENDLESS, "--out", str(out), "--quiet", "--json")
+    wait_for(lambda: handler_installed(process.pid), process, "the signal handler")
+    time.sleep(1.5)  # well inside the (endless) revolution loop
+    process.send_signal(signum)
+    returncode, stdout, stderr = finish(process)
+    assert returncode == code, stderr
+    assert stdout == ""
+    assert last_line(stderr) == note
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_ctrl_c_during_imports_prints_no_traceback(tmp_path):
+    """Ctrl-C while the command line is still importing numpy & co.: `interrupted`, 130."""
+    process = jointwear("run", str(PAPER), "--out", str(tmp_path / "out"))
+    wait_for(lambda: handler_installed(process.pid), process, "the signal handler")
+    process.send_signal(signal.SIGINT)
+    returncode, stdout, stderr = finish(process)
+    assert returncode == 130, stderr
+    assert stdout == ""
+    assert stderr == "interrupted\n"
+    assert list(tmp_path.iterdir()) == []
+
+
+def interrupted_checkpointed_run(tmp_path: Path, signum: int) -> tuple[Path, str]:
+    out = tmp_path / "run"
+    args = [str(UPDATE_CONFIG), "--out", str(out), "--checkpoint-every", "50", "--quiet"]
+    for key, value in RESUMABLE.items():
+        args += ["--set", f"{key}={value}"]
+    process = jointwear("run", *args, "--no-plots", "--json")
+    wait_for(lambda: (out / CHECKPOINT_STATE).exists(), process, "a checkpoint")
+    time.sleep(random.uniform(0.0, 0.3))
+    process.send_signal(signum)
+    returncode, stdout, stderr = finish(process)
+    assert returncode == 128 + signum, stderr
+    assert stdout == ""
+    return out, stderr
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_signal_leaves_a_resumable_checkpoint_that_resumes_bit_identically(
+    tmp_path, capsys, signum
+):
+    """SIGINT/SIGTERM during a checkpointed run: the resume hint, then identical numbers."""
+    out, stderr = interrupted_checkpointed_run(tmp_path, signum)
+    note = "interrupted" if signum == signal.SIGINT else "terminated"
+    assert last_line(stderr) == f"{note}; continue with `jointwear run --resume {out}`"
+    assert sorted(p.name for p in out.iterdir()) == sorted([CHECKPOINT_CONFIG, CHECKPOINT_STATE])
+    stopped, _ = read_state(out / CHECKPOINT_STATE)
+    assert 50 <= stopped.revolution < RESUMABLE["simulation.revolutions"]
+
+    code, stdout, stderr = run_cli(capsys, ["run", "--resume", str(out), "--json", "--no-plots"])
+    assert code == 0, stderr
+    reference = Simulation(load_config(UPDATE_CONFIG, RESUMABLE)).run()
+    summary, expected = json.loads(stdout), reference.summary()
+    summary.pop("runtime_s"), expected.pop("runtime_s")
+    assert summary == expected
+    dataset = read_result(out / "result.nc")
+    for name in ("wear_depth", "peak_wear_depth", "wear_mass", "pressure_final"):
+        np.testing.assert_array_equal(dataset[name].values, reference.dataset[name].values, name)
+
+
+# ---------------------------------------------------------------- in-process
+
+
+def test_interrupt_inside_a_command_is_one_line(tmp_path, capsys, monkeypatch):
+    """An interrupt raised inside a command: `terminated`, 143, nothing in --out."""
+
+    def stop(self, *args, **kwargs):
+        raise Interrupted(signal.SIGTERM)
+
+    monkeypatch.setattr(Simulation, "run", stop)
+    out = tmp_path / "out"
+    code, stdout, stderr = run_cli(capsys, ["run", str(PAPER), "--out", str(out)])
+    assert (code, stdout, stderr) == (143, "", "terminated\n")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_interrupt_while_publishing_leaves_out_as_it_was(tmp_path, capsys, monkeypatch):
+    """An interrupt between two renames into an existing --out rolls every file back."""
+    import jointwear.io
+
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "summary.json").write_text("{}\n")
+    (out / "notes.txt").write_text("mine\n")
+    before = snapshot(tmp_path)
+    real = Path.rename
+    calls = {"n": 0}
+
+    def rename(self, target):
+        if ".staging-" in self.parent.name:
+            calls["n"] += 1
+            if calls["n"] == 3:
+                raise Interrupted(signal.SIGINT)
+        return real(self, target)
+
+    monkeypatch.setattr(Path, "rename", rename)
+    code, stdout, stderr = run_cli(
+        capsys, ["run", str(PAPER), *SMALL, "--out", str(out), "--json", "--no-plots"]
+    )
+    assert (code, stdout, stderr) == (130, "", "interrupted\n")
+    assert calls["n"] == 3
+    assert snapshot(tmp_path) == before
+    assert jointwear.io  # the module whose publishing was interrupted
+
+
+def test_interrupted_checkpointed_run_resumes_bit_identically_in_process(
+    tmp_path, capsys, monkeypatch
+):
+    """Interrupt after a checkpoint (in-process): the hint names the folder; resume matches."""
+    overrides = {**RESUMABLE, "simulation.revolutions": 120, "contact.nodes": 60}
+    overrides["simulation.steps_per_revolution"] = 60
+    real = Checkpointer.__call__
+
+    def call(self, state):
+        real(self, state)
+        if state.revolution >= 77:
+            raise Interrupted(signal.SIGINT)
+
+    monkeypatch.setattr(Checkpointer, "__call__", call)
+    out = tmp_path / "run"
+    sets = [f"--set={key}={value}" for key, value in overrides.items()]
+    argv = ["run", str(UPDATE_CONFIG), *sets, "--out", str(out), "--checkpoint-every", "25"]
+    code, stdout, stderr = run_cli(capsys, [*argv, "--json", "--no-plots"])
+    assert code == 130
+    assert stdout == ""
+    assert stderr == f"interrupted; continue with `jointwear run --resume {out}`\n"
+    assert read_state(out / CHECKPOINT_STATE)[0].revolution == 75
+    monkeypatch.setattr(Checkpointer, "__call__", real)
+
+    code, stdout, stderr = run_cli(capsys, ["run", "--resume", str(out), "--json", "--no-plots"])
+    assert code == 0, stderr
+    reference = Simulation(load_config(UPDATE_CONFIG, overrides)).run()
+    dataset = read_result(out / "result.nc")
+    for name in ("wear_depth", "peak_wear_depth", "wear_mass", "bushing_radius"):
+        np.testing.assert_array_equal(dataset[name].values, reference.dataset[name].values, name)
+
+
+def test_handlers_are_restored_after_main(capsys):
+    """Calling the CLI in-process leaves the caller's SIGINT/SIGTERM handlers as they were."""
+    before = signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)
+    run_cli(capsys, ["run", str(PAPER), "--set", "joint.clearance=5 kg"])
+    assert (signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)) == before
