@@ -223,8 +223,13 @@ def read_state(path: str | Path) -> tuple[SimulationState, str]:
         version = int(arrays.get("format", -1))
     except (TypeError, ValueError):
         version = -1
-    if version != FORMAT:
+    if version < 1:
         raise DataError(f"{path}: not a jointwear checkpoint (format {FORMAT} expected)")
+    if version != FORMAT:
+        raise DataError(
+            f"{path}: written in checkpoint format {version}, this jointwear reads format "
+            f"{FORMAT}; start the run again without --resume"
+        )
     if "checksum" not in arrays or str(arrays["checksum"]) != _checksum(arrays):
         raise DataError(
             f"{path}: damaged checkpoint (its checksum does not match its contents); "

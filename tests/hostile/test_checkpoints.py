@@ -81,7 +81,7 @@ EDITS = {
     "edited-revolution": (_set("f_revolution", 4), False, ["damaged checkpoint"]),
     "checksum-removed": (lambda a: a.pop("checksum"), False, ["damaged checkpoint"]),
     "checksum-garbage": (_set("checksum", "0" * 64), False, ["damaged checkpoint"]),
-    "old-format": (_set("format", 2), True, ["not a jointwear checkpoint", "format 3"]),
+    "old-format": (_set("format", 2), True, ["checkpoint format 2", "reads format 3"]),
     "field-missing": (lambda a: a.pop("f_interval"), True, ["unusable checkpoint"]),
     "schema-garbage": (_set("schema", "{not json"), True, ["unusable checkpoint"]),
     "fewer-nodes": (
