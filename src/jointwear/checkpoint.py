@@ -41,6 +41,7 @@ import contextlib
 import dataclasses
 import hashlib
 import json
+import shutil
 import zipfile
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -49,7 +50,7 @@ import numpy as np
 
 from jointwear.config import Config, config_from_dict, read_toml
 from jointwear.errors import ConfigError, DataError
-from jointwear.io import atomic_write, check_input
+from jointwear.io import atomic_write, check_input, os_reason
 
 if TYPE_CHECKING:
     from jointwear.simulation import SimulationState
@@ -57,6 +58,7 @@ if TYPE_CHECKING:
 __all__ = [
     "CHECKPOINT_CONFIG",
     "CHECKPOINT_STATE",
+    "CheckpointWriteError",
     "Checkpointer",
     "check_state",
     "config_digest",
@@ -300,6 +302,20 @@ def check_state(state: SimulationState, config: Config, path: str | Path) -> Non
 # ---------------------------------------------------------------- the run's side
 
 
+class CheckpointWriteError(DataError):
+    """A checkpoint could not be written (full disk ...); the previous one is intact."""
+
+
+def _written(path: Path, write) -> None:
+    try:
+        write()
+    except OSError as exc:
+        raise CheckpointWriteError(
+            f"{path}: cannot write the checkpoint ({os_reason(exc)}); the previous "
+            f"checkpoint is kept: make room, then `jointwear run --resume {path.parent}`"
+        ) from None
+
+
 class Checkpointer:
     """Save the simulation state into ``directory`` every ``every`` revolutions.
 
@@ -336,14 +352,24 @@ class Checkpointer:
 
     def begin(self) -> None:
         """Write the configuration (start of a fresh run)."""
-        self.directory.mkdir(parents=True, exist_ok=True)
-        with contextlib.suppress(FileNotFoundError):
-            self.state_path.unlink()
-        with atomic_write(self.config_path, encoding="utf-8") as handle:
-            handle.write(
-                "# checkpointed run: fully resolved configuration, SI units\n"
-                + self.config.to_toml()
-            )
+        text = "# checkpointed run: fully resolved configuration, SI units\n"
+        text += self.config.to_toml()
+
+        def write() -> None:
+            self.directory.mkdir(parents=True, exist_ok=True)
+            with contextlib.suppress(FileNotFoundError):
+                self.state_path.unlink()
+            with atomic_write(self.config_path, encoding="utf-8") as handle:
+                handle.write(text)
+
+        created = not self.directory.exists()
+        try:
+            write()
+        except OSError as exc:
+            if created:
+                with contextlib.suppress(OSError):
+                    shutil.rmtree(self.directory)
+            raise DataError(f"--out: {self.directory}: {os_reason(exc)}") from None
 
     def load(self) -> SimulationState | None:
         """The saved state, or ``None`` if there is none for this configuration."""
@@ -362,7 +388,7 @@ class Checkpointer:
 
     def __call__(self, state: SimulationState) -> None:
         if state.revolution >= self._next:
-            write_state(self.state_path, state, self.digest)
+            _written(self.state_path, lambda: write_state(self.state_path, state, self.digest))
             self.continue_from(state)
 
     def clear(self) -> None:

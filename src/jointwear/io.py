@@ -407,8 +407,7 @@ def staged_output(
             yield staging
             _publish(staging, out, flag)
         except OSError as exc:
-            where = exc.filename if isinstance(exc.filename, str) else out
-            raise DataError(f"{flag}: {where}: {os_reason(exc)}") from None
+            raise DataError(f"{flag}: {_shown(exc, staging, out)}: {os_reason(exc)}") from None
     finally:
         if staging is not None:
             shutil.rmtree(staging, ignore_errors=True)
@@ -416,6 +415,16 @@ def staged_output(
             for parent in reversed(created):
                 with contextlib.suppress(OSError):
                     parent.rmdir()
+
+
+def _shown(exc: OSError, staging: Path, out: Path) -> Path:
+    """The path an error is about, as the user sees it (the staging folder hidden)."""
+    if not isinstance(exc.filename, str):
+        return out
+    path = Path(exc.filename)
+    if path.is_relative_to(staging):
+        return out / path.relative_to(staging)
+    return path if path.is_relative_to(out) else out
 
 
 def check_tree(out: str | Path, names: Iterable[str], flag: str = "--out") -> None:

@@ -307,3 +307,42 @@ def test_intact_checkpoint_resumes(tmp_path, capsys, checkpoints):
     assert code == 0, stderr
     assert json.loads(stdout)["revolutions"] == OVERRIDES["simulation.revolutions"]
     assert not (folder / CHECKPOINT_STATE).exists()
+
+
+def test_full_disk_while_checkpointing_keeps_the_previous_checkpoint(tmp_path):
+    """A disk that fills up between checkpoints: one line, exit 2, the last checkpoint intact."""
+    import os
+    import subprocess
+    import sys
+
+    from jointwear.checkpoint import read_state
+    from tests.hostile.harness import REPO
+    from tests.hostile.test_output import small_filesystem
+
+    with small_filesystem(tmp_path / "disk", "size=96k") as disk:
+        out = disk / "run"
+        sets = [
+            "--set=simulation.revolutions=400",
+            "--set=simulation.update_every=1",
+            "--set=simulation.update_contour=true",
+            "--set=contact.nodes=60",
+            "--set=simulation.steps_per_revolution=60",
+        ]
+        argv = ["run", str(PAPER), *sets, "--out", str(out), "--checkpoint-every", "5", "--json"]
+        done = subprocess.run(
+            [sys.executable, "-m", "jointwear", *argv],
+            capture_output=True,
+            text=True,
+            check=False,
+            timeout=300,
+            env={**os.environ, "PYTHONPATH": str(REPO / "src")},
+        )
+        assert done.returncode == 2, done.stderr
+        assert done.stdout == ""
+        line = done.stderr.splitlines()[-1]
+        assert line.startswith(f"error: {out / CHECKPOINT_STATE}: cannot write the checkpoint")
+        assert "no space left on device" in line
+        assert f"jointwear run --resume {out}" in line
+        state, _ = read_state(out / CHECKPOINT_STATE)
+        assert 5 <= state.revolution < 400
+        assert sorted(p.name for p in out.iterdir()) == [CHECKPOINT_STATE, CHECKPOINT_CONFIG]

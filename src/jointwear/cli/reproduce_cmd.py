@@ -31,12 +31,13 @@ def reproduce(
     quiet: Annotated[bool, typer.Option("--quiet", "-q")] = False,
 ) -> None:
     """Run the paper's cases (Tables 3-5, Figs. 8-15) and write OUT/report.md."""
-    from jointwear.io import check_out, check_tree
+    from jointwear.io import check_out, check_tree, staged_output
     from jointwear.reproduce import case_names
-
-    out = check_out(out, files=("report.md", "report.json"), dirs=("figures", "results"))
-    check_tree(out, ("figures", "results"))
     from jointwear.reproduce import reproduce as run_reproduction
+
+    files, dirs = ("report.md", "report.json"), ("figures", "results")
+    out = check_out(out, files=files, dirs=dirs)
+    check_tree(out, dirs)
 
     if case:
         known = case_names()
@@ -52,9 +53,10 @@ def reproduce(
         if not quiet and not json_ and name != "done":
             err_console.print(f"[{done + 1}/{total}] {name}", highlight=False)
 
-    report = run_reproduction(
-        out, progress=progress, calibrate=calibrate, cases=case, overrides=overrides
-    )
+    with staged_output(out, files=files, dirs=dirs) as staging:  # appears when complete
+        report = run_reproduction(
+            staging, progress=progress, calibrate=calibrate, cases=case, overrides=overrides
+        )
     if json_:
         from jointwear.reproduce import _jsonable
 

@@ -168,7 +168,12 @@ def run(
     resume: ResumeOpt = None,
 ) -> None:
     """Simulate wear over revolutions (dynamics -> pressure -> Archard -> contour update)."""
-    from jointwear.checkpoint import Checkpointer, has_checkpoint, load_checkpoint
+    from jointwear.checkpoint import (
+        Checkpointer,
+        CheckpointWriteError,
+        has_checkpoint,
+        load_checkpoint,
+    )
     from jointwear.errors import ConfigError, JointwearError
     from jointwear.interrupts import Interrupted
     from jointwear.io import check_out
@@ -217,9 +222,10 @@ def run(
     try:
         with ProgressBar("revolutions", quiet=quiet) as bar:
             result = simulation.run(progress=bar, state=state, on_step=checkpointer)
-    except JointwearError:
-        # the run cannot finish from this state: leave no checkpoint (or empty folder) behind
-        if checkpointer is not None:
+    except JointwearError as exc:
+        # the run cannot finish from this state: leave no checkpoint (or empty folder) behind;
+        # a checkpoint that could not be written (full disk) keeps the previous one
+        if checkpointer is not None and not isinstance(exc, CheckpointWriteError):
             checkpointer.clear()
             if created:
                 with contextlib.suppress(OSError):
