@@ -158,3 +158,20 @@ def check_contract(case: Bad, tmp_path: Path, capsys, result: bytes) -> None:
     assert set(files_in(out)) <= before
     assert set(files_in(tmp_path)) == before
     assert snapshot(tmp_path) == entries
+
+
+def check_cases(cases: list[Bad], area: str, minimum: int) -> None:
+    """A module's ``CASES``: at least ``minimum``, all of ``area``, ids unique in the package."""
+    import importlib
+    import pkgutil
+
+    assert len(cases) >= minimum
+    assert {case.area for case in cases} == {area}
+    package = Path(__file__).parent
+    ids = [
+        case.id
+        for module in pkgutil.iter_modules([str(package)])
+        if module.name.startswith("test_")
+        for case in getattr(importlib.import_module(f"tests.hostile.{module.name}"), "CASES", [])
+    ]
+    assert len(ids) == len(set(ids)), sorted(i for i in ids if ids.count(i) > 1)

@@ -18,7 +18,7 @@ import pytest
 
 from jointwear import Simulation, load_config
 from jointwear.checkpoint import CHECKPOINT_CONFIG, CHECKPOINT_STATE, Checkpointer, _checksum
-from tests.hostile.harness import PAPER, Bad, check_contract
+from tests.hostile.harness import PAPER, Bad, check_cases, check_contract
 
 OVERRIDES = {
     "contact.nodes": 60,
@@ -285,13 +285,12 @@ def resolved(case: Bad, markers: dict[str, str | bytes], tmp_path) -> Bad:
 
 def test_checkpoint_cases_are_many_and_unique():
     """The checkpoint cases cover edits, truncation, swaps and file kinds; ids are unique."""
-    assert len(CASES) >= 25
-    assert len({c.id for c in CASES}) == len(CASES)
-    assert {c.area for c in CASES} == {"checkpoint"}
+    check_cases(CASES, "checkpoint", 25)
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
 def test_bad_checkpoint(case: Bad, tmp_path, capsys, result_bytes, checkpoints):
+    """The case's command fails with its one line, exit 2, nothing written."""
     check_contract(resolved(case, checkpoints, tmp_path), tmp_path, capsys, result_bytes)
 
 

@@ -20,6 +20,7 @@ from tests.hostile.harness import (
     PAPER,
     REPO,
     Bad,
+    check_cases,
     check_contract,
     run_cli,
     sweep_toml,
@@ -248,14 +249,13 @@ CASES: list[Bad] = [
 
 
 def test_file_cases_are_many_and_unique():
-    """The file cases cover every reader and each id is unique."""
-    assert len(CASES) >= 40
-    assert len({c.id for c in CASES}) == len(CASES)
-    assert {c.area for c in CASES} == {"files"}
+    """The file cases cover every reader and each id is unique across the suite."""
+    check_cases(CASES, "files", 40)
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c.id for c in CASES])
 def test_bad_file(case: Bad, tmp_path, capsys, result_bytes):
+    """The case's command fails with its one line, exit 2, nothing written."""
     check_contract(case, tmp_path, capsys, result_bytes)
 
 
