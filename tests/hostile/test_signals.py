@@ -243,3 +243,36 @@ def test_handlers_are_restored_after_main(capsys):
     before = signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)
     run_cli(capsys, ["run", str(PAPER), "--set", "joint.clearance=5 kg"])
     assert (signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)) == before
+
+
+@pytest.mark.slow
+def test_interrupted_sweep_names_its_resume_and_resumes(tmp_path, capsys):
+    """Ctrl-C to a sweep and its workers: one line with the resume command; resume finishes."""
+    (tmp_path / "tiny.toml").write_text(PAPER.read_text(encoding="utf-8"), encoding="utf-8")
+    (tmp_path / "s.toml").write_text(
+        'base = "tiny.toml"\n[set]\n"contact.nodes" = 60\n"simulation.revolutions" = 20000\n'
+        '"simulation.update_every" = 1\n"simulation.update_contour" = true\n'
+        '[grid]\n"joint.clearance" = ["0.05 mm", "0.1 mm", "0.15 mm"]\n',
+        encoding="utf-8",
+    )
+    out = tmp_path / "out"
+    argv = ["sweep", str(tmp_path / "s.toml"), "--out", str(out), "--workers", "2", "--quiet"]
+    process = subprocess.Popen(
+        [sys.executable, "-m", "jointwear", *argv],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env={**os.environ, "PYTHONPATH": str(REPO / "src")},
+        start_new_session=True,  # a terminal's Ctrl-C reaches the whole process group
+    )
+    wait_for(lambda: (out / "sweep-plan.json").exists(), process, "the sweep plan")
+    time.sleep(0.5)
+    os.killpg(process.pid, signal.SIGINT)
+    returncode, stdout, stderr = finish(process)
+    assert returncode == 130, stderr
+    assert stdout == ""
+    assert stderr == f"interrupted; continue with `jointwear sweep --resume {out}`\n"
+    code, stdout, stderr = run_cli(capsys, ["sweep", "--resume", str(out), "--json"])
+    assert code == 0, stderr
+    summary = json.loads(stdout)
+    assert (summary["cases"], summary["ok"]) == (3, 3)

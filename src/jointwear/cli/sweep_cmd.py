@@ -87,15 +87,25 @@ def sweep(
         if out.exists() and not out.is_dir():
             raise ConfigError(f"--out: {out} exists and is not a directory")
         plan = load_sweep(sweep_file)
-    with ProgressBar("cases", quiet=quiet, delay=0.0) as bar:
-        result = run_sweep(
-            plan,
-            out,
-            scheduler=scheduler,
-            workers=workers,
-            resume=resume is not None,
-            progress=bar,
-        )
+    try:
+        with ProgressBar("cases", quiet=quiet, delay=0.0) as bar:
+            result = run_sweep(
+                plan,
+                out,
+                scheduler=scheduler,
+                workers=workers,
+                resume=resume is not None,
+                progress=bar,
+            )
+    except KeyboardInterrupt as exc:
+        from jointwear.interrupts import Interrupted
+        from jointwear.sweep import PLAN_FILE
+
+        if not (out / PLAN_FILE).is_file():
+            raise
+        interrupt = exc if isinstance(exc, Interrupted) else Interrupted()
+        interrupt.resume = f"jointwear sweep --resume {out}"  # finished cases are kept
+        raise interrupt from None
     summary = result.summary()
     if json_:
         emit_json(summary)
