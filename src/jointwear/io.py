@@ -6,8 +6,8 @@ Output is never half-written:
   file next to it and a rename;
 * :func:`staged_output` stages everything a command writes into a temporary
   directory and publishes it in one step: one rename of the whole directory when
-  ``--out`` does not exist or is empty, or renames with a rollback when merging
-  into an existing directory. Symbolic links and special files are never written
+  ``--out`` does not exist yet, or renames with a rollback when merging into an
+  existing directory. Symbolic links and special files are never written
   through; a full disk or a read-only file system is a one-line
   :class:`~jointwear.errors.DataError` naming the path.
 
@@ -341,15 +341,15 @@ def _publish_into(staging: Path, out: Path, flag: str) -> None:
 
 
 def _publish(staging: Path, out: Path, flag: str) -> None:
-    os.chmod(staging, 0o777 & ~_umask())
     if staging.parent != out:
+        os.chmod(staging, 0o777 & ~_umask())
         try:
-            os.rename(staging, out)  # absent or empty: one atomic rename
+            os.rename(staging, out)  # a new --out: one atomic rename
             return
-        except OSError as exc:
-            if exc.errno not in (errno.ENOTEMPTY, errno.EEXIST, errno.EBUSY, errno.EXDEV):
+        except OSError as exc:  # created meanwhile by someone else: merge into it
+            if exc.errno not in (errno.ENOTEMPTY, errno.EEXIST, errno.EISDIR):
                 raise
-        out.mkdir(exist_ok=True)
+    # an existing folder (perhaps the working directory, a mount point): keep it, move in
     _publish_into(staging, out, flag)
 
 
@@ -363,10 +363,12 @@ def staged_output(
 ) -> Iterator[Path]:
     """Stage a command's output and publish it into ``out`` all at once, or not at all.
 
-    Yields a temporary directory on the same file system (next to ``out``, or inside
-    it when ``out`` already holds files); whatever is written there appears in
-    ``out`` when the block ends without an exception. On an exception nothing in
-    ``out`` changes and every directory this call created is removed again.
+    Yields a temporary directory on the same file system (next to ``out`` when it
+    does not exist yet, else inside it); whatever is written there appears in ``out``
+    when the block ends without an exception: a new ``out`` by one rename, an
+    existing one (kept as it is, with its other files) by renames with a rollback.
+    On an exception nothing in ``out`` changes and every directory this call created
+    is removed again.
 
     Parameters
     ----------
@@ -384,7 +386,8 @@ def staged_output(
         or an entry to replace is a symbolic link, a special file, or a directory
         where a file goes.
     """
-    out = check_out(out, flag, names, files, dirs)
+    shown = check_out(out, flag, names, files, dirs)
+    out = Path(os.path.abspath(shown))  # "." and ".." have no usable parent or name
     created: list[Path] = []
     for parent in reversed(out.parents):
         if not parent.exists():
@@ -392,22 +395,19 @@ def staged_output(
     staging: Path | None = None
     try:
         try:
-            out.parent.mkdir(parents=True, exist_ok=True)
-            holds_files = out.is_dir() and any(out.iterdir())
-            try:
-                where = out if holds_files else out.parent
-                staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.staging-", dir=where))
-            except OSError:
-                if not out.is_dir():
-                    raise
+            if out.is_dir():  # stage inside: same file system even if --out is a mount point
                 staging = Path(tempfile.mkdtemp(prefix=".staging-", dir=out))
+            else:
+                out.parent.mkdir(parents=True, exist_ok=True)
+                staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.staging-", dir=out.parent))
         except OSError as exc:
-            raise DataError(f"{flag}: {out}: {os_reason(exc)}") from None
+            raise DataError(f"{flag}: {shown}: {os_reason(exc)}") from None
         try:
             yield staging
             _publish(staging, out, flag)
         except OSError as exc:
-            raise DataError(f"{flag}: {_shown(exc, staging, out)}: {os_reason(exc)}") from None
+            where = _shown(exc, staging, out, shown)
+            raise DataError(f"{flag}: {where}: {os_reason(exc)}") from None
     finally:
         if staging is not None:
             shutil.rmtree(staging, ignore_errors=True)
@@ -417,14 +417,15 @@ def staged_output(
                     parent.rmdir()
 
 
-def _shown(exc: OSError, staging: Path, out: Path) -> Path:
-    """The path an error is about, as the user sees it (the staging folder hidden)."""
+def _shown(exc: OSError, staging: Path, out: Path, shown: Path) -> Path:
+    """The path an error is about, as the user wrote it (the staging folder hidden)."""
     if not isinstance(exc.filename, str):
-        return out
-    path = Path(exc.filename)
-    if path.is_relative_to(staging):
-        return out / path.relative_to(staging)
-    return path if path.is_relative_to(out) else out
+        return shown
+    path = Path(os.path.abspath(exc.filename))
+    for base in (staging, out):
+        if path.is_relative_to(base) and path != base:
+            return shown / path.relative_to(base)
+    return shown
 
 
 def check_tree(out: str | Path, names: Iterable[str], flag: str = "--out") -> None:
