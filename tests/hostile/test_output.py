@@ -28,7 +28,6 @@ from tests.hostile.harness import (
     Bad,
     check_cases,
     check_contract,
-    files_in,
     run_cli,
     snapshot,
     sweep_toml,
@@ -428,31 +427,42 @@ def test_read_only_disk_is_one_line(tmp_path, capsys):
         assert stderr == f"error: --out: {out}: read-only file system\n"
 
 
-def test_full_disk_simulated_for_every_writer(tmp_path, capsys, monkeypatch, result_bytes):
-    """ENOSPC from the file system (simulated) while compare writes: one line, nothing left."""
+WRITE_FAILURES = [
+    (errno.ENOSPC, "no space left on device"),
+    (errno.EROFS, "read-only file system"),
+    (errno.EACCES, "permission denied"),
+]
+STAGED = {
+    "run": ["run", "{paper}", *SMALL, "--json"],
+    "plot": ["plot", "{tmp}/result.nc"],
+    "compare": ["compare", "{tmp}/result.nc", "{tmp}/m.csv", "--json"],
+    "compare-models": ["compare-models", "{paper}", "--loads", "1 kN", "--json"],
+}
+
+
+@pytest.mark.parametrize(("number", "reason"), WRITE_FAILURES, ids=["enospc", "erofs", "eacces"])
+@pytest.mark.parametrize("command", list(STAGED))
+def test_write_failure_of_every_writer_is_one_line(
+    tmp_path, capsys, monkeypatch, result_bytes, command, number, reason
+):
+    """Each writer, its file system failing on publishing (simulated): one line, no trace."""
+    import numpy as np
+
     import jointwear.io
 
     (tmp_path / "result.nc").write_bytes(result_bytes)
-    measured = tmp_path / "m.csv"
-    import numpy as np
-
     theta = np.linspace(0, 2 * np.pi, 200, endpoint=False)
-    measured.write_text(
-        CSV_HEADER + "".join(f"{7.5 * np.cos(t)},{7.5 * np.sin(t)}\n" for t in theta)
-    )
-    real = jointwear.io._publish
+    points = "".join(f"{7.5 * np.cos(t)},{7.5 * np.sin(t)}\n" for t in theta)
+    (tmp_path / "m.csv").write_text(CSV_HEADER + points)
+    before = snapshot(tmp_path)
 
-    def full(staging, out, flag):
-        raise OSError(errno.ENOSPC, "No space left on device")
+    def failing(staging, out, flag):
+        raise OSError(number, os.strerror(number))
 
-    monkeypatch.setattr(jointwear.io, "_publish", full)
-    out = tmp_path / "cmp"
-    code, _, stderr = run_cli(
-        capsys, ["compare", str(tmp_path / "result.nc"), str(measured), "--out", str(out)]
-    )
-    assert code == 2
-    assert stderr == f"error: --out: {out}: no space left on device\n"
-    assert files_in(out) == []
-    assert not out.exists()
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["m.csv", "result.nc"]
-    monkeypatch.setattr(jointwear.io, "_publish", real)
+    monkeypatch.setattr(jointwear.io, "_publish", failing)
+    out = tmp_path / "new"
+    argv = [a.format(tmp=tmp_path, paper=PAPER) for a in STAGED[command]]
+    code, stdout, stderr = run_cli(capsys, [*argv, "--out", str(out)])
+    assert (code, stdout) == (2, "")
+    assert stderr == f"error: --out: {out}: {reason}\n"
+    assert snapshot(tmp_path) == before
