@@ -853,6 +853,10 @@ def _run_local(
                 record = _lost(case, "its worker process died")
             finish(case, record)
     except BaseException:
+        # interrupted: stop the running cases now (their checkpoints are whole files)
+        # instead of waiting for them at exit
+        for process in list((getattr(executor, "_processes", None) or {}).values()):
+            process.kill()
         executor.shutdown(wait=False, cancel_futures=True)
         raise
     executor.shutdown()

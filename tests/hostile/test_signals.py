@@ -276,3 +276,26 @@ def test_interrupted_sweep_names_its_resume_and_resumes(tmp_path, capsys):
     assert code == 0, stderr
     summary = json.loads(stdout)
     assert (summary["cases"], summary["ok"]) == (3, 3)
+
+
+@pytest.mark.slow
+def test_terminated_sweep_stops_its_running_cases(tmp_path):
+    """SIGTERM to a sweep alone (not its workers): it exits 143 without finishing its cases."""
+    (tmp_path / "tiny.toml").write_text(PAPER.read_text(encoding="utf-8"), encoding="utf-8")
+    (tmp_path / "s.toml").write_text(
+        'base = "tiny.toml"\n[set]\n"contact.nodes" = 60\n"simulation.revolutions" = 100000000\n'
+        '"simulation.update_every" = 1\n"simulation.update_contour" = true\n'
+        '[grid]\n"joint.clearance" = ["0.05 mm", "0.1 mm"]\n',
+        encoding="utf-8",
+    )
+    out = tmp_path / "out"
+    argv = ["sweep", str(tmp_path / "s.toml"), "--out", str(out), "--workers", "2", "--quiet"]
+    process = jointwear(*argv)
+    wait_for(lambda: (out / "sweep-plan.json").exists(), process, "the sweep plan")
+    time.sleep(1.0)
+    process.send_signal(signal.SIGTERM)
+    returncode, stdout, stderr = finish(process)  # endless cases: only returns if they stop
+    assert returncode == 143, stderr
+    assert stdout == ""
+    assert stderr == f"terminated; continue with `jointwear sweep --resume {out}`\n"
+    assert list((out / "cases").glob("*.json")) == []
