@@ -10,6 +10,7 @@ nested at most 32 levels deep.
 from __future__ import annotations
 
 import json
+import math
 
 import pytest
 
@@ -268,6 +269,18 @@ def test_byte_order_mark_is_accepted(tmp_path, capsys):
     plain_code, plain, _ = run_cli(capsys, ["contact", str(PAPER), "--load", "1 kN", "--json"])
     assert plain_code == 0
     assert json.loads(stdout) == json.loads(plain)
+
+    theta = [i * 0.1 for i in range(60)]
+    rows = CSV_HEADER + "".join(f"{7.5 * math.cos(t)},{7.5 * math.sin(t)}\n" for t in theta)
+    summaries = []
+    for name, prefix in (("bom.csv", b"\xef\xbb\xbf"), ("plain.csv", b"")):
+        (tmp_path / name).write_bytes(prefix + rows.encode("utf-8"))
+        code, stdout, stderr = run_cli(
+            capsys, ["measure", str(tmp_path / name), *RADIUS, "--nodes", "60", "--json"]
+        )
+        assert code == 0, stderr
+        summaries.append({k: v for k, v in json.loads(stdout).items() if "csv" not in str(v)})
+    assert summaries[0] == summaries[1]
 
 
 def test_size_limit_is_configurable(tmp_path, capsys, monkeypatch):
