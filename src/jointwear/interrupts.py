@@ -26,7 +26,13 @@ _last: list[Interrupted] = []
 
 
 class Interrupted(KeyboardInterrupt):
-    """SIGINT or SIGTERM arrived; ``signum`` says which, ``resume`` how to continue."""
+    """SIGINT or SIGTERM arrived; ``signum`` says which, ``resume`` how to continue.
+
+    Parameters
+    ----------
+    signum : int
+        The signal number [-] (default SIGINT).
+    """
 
     def __init__(self, signum: int = signal.SIGINT) -> None:
         super().__init__(_NOTES.get(signum, "interrupted"))
@@ -36,12 +42,25 @@ class Interrupted(KeyboardInterrupt):
 
 
 def exit_code(exc: BaseException) -> int:
-    """128 + the signal number (130 for SIGINT, 143 for SIGTERM)."""
+    """128 + the signal number (130 for SIGINT, 143 for SIGTERM).
+
+    Parameters
+    ----------
+    exc : BaseException
+        An :class:`Interrupted` (a plain ``KeyboardInterrupt`` counts as SIGINT).
+    """
     return 128 + int(getattr(exc, "signum", signal.SIGINT))
 
 
 def note(exc: BaseException) -> str:
-    """The one line printed on stderr: ``interrupted`` / ``terminated`` (+ how to resume)."""
+    """The one line printed on stderr: ``interrupted`` / ``terminated`` (+ how to resume).
+
+    Parameters
+    ----------
+    exc : BaseException
+        An :class:`Interrupted` (its ``resume`` command is appended) or a plain
+        ``KeyboardInterrupt``.
+    """
     text = _NOTES.get(getattr(exc, "signum", signal.SIGINT), "interrupted")
     resume = getattr(exc, "resume", None)
     return f"{text}; continue with `{resume}`" if resume else text

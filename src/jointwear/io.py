@@ -64,7 +64,13 @@ _REASONS = {
 
 
 def os_reason(exc: OSError) -> str:
-    """A short, stable reason for an operating-system error (``no space left on device``)."""
+    """A short, stable reason for an operating-system error (``no space left on device``).
+
+    Parameters
+    ----------
+    exc : OSError
+        The error; its ``errno`` picks the reason.
+    """
     if exc.errno in _REASONS:
         return _REASONS[exc.errno]
     return (exc.strerror or str(exc) or type(exc).__name__).lower()
