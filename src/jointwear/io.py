@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import contextlib
 import json
+import math
 import os
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 from typing import IO, Any
 
-__all__ = ["atomic_path", "atomic_write", "write_json"]
+__all__ = ["atomic_path", "atomic_write", "json_ready", "write_json"]
 
 
 def _umask() -> int:
@@ -52,6 +53,29 @@ def atomic_write(path: str | Path, mode: str = "w", **kwargs: Any) -> Iterator[I
         yield handle
         handle.flush()
         os.fsync(handle.fileno())
+
+
+def json_ready(value: Any) -> Any:
+    """``value`` as plain JSON data: non-finite floats become ``None`` (``null``).
+
+    Dicts and lists are converted recursively, tuples become lists and numpy
+    scalars Python numbers; everything else is returned as it is.
+
+    Parameters
+    ----------
+    value : Any
+        Nested dicts, lists and tuples of numbers, strings, booleans and ``None``
+        (any units: the values are not changed).
+    """
+    if isinstance(value, dict):
+        return {key: json_ready(item) for key, item in value.items()}
+    if isinstance(value, list | tuple):
+        return [json_ready(item) for item in value]
+    if hasattr(value, "item") and callable(value.item) and getattr(value, "shape", None) == ():
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
 
 
 def write_json(path: str | Path, data: Any) -> None:

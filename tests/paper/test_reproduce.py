@@ -8,17 +8,11 @@ from pathlib import Path
 
 import pytest
 
-from jointwear.reproduce import (
-    CALIBRATION_CASE,
-    PAPER_ROWS,
-    case_config,
-    case_names,
-    check_trends,
-    reproduce,
-    run_cases,
-)
+from jointwear.paper.calibration import CALIBRATION_CASE
+from jointwear.paper.cases import PAPER_ROWS, case_config, case_names
+from jointwear.paper.reproduce import check_trends, reproduce, run_cases
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 
 def test_every_paper_row_has_a_case_and_the_examples_are_the_cases() -> None:
@@ -128,10 +122,10 @@ def test_wear_mass_falls_with_clearance_under_continuous_contact(model: str) -> 
 
 
 def test_sensitivity_variants_resolve_and_nlcp_stiffness_leaves_winkler_alone() -> None:
-    from jointwear.reproduce import SENSITIVITY, _eq2_stiffness_over_pi
+    from jointwear.paper.reproduce import SENSITIVITY, eq2_stiffness_over_pi
 
     config = case_config(CALIBRATION_CASE)
-    assert _eq2_stiffness_over_pi(config) == pytest.approx(config.nlcp_stiffness / math.pi)
+    assert eq2_stiffness_over_pi(config) == pytest.approx(config.nlcp_stiffness / math.pi)
     variant = next(v for k, v in SENSITIVITY.items() if k.startswith("NLCP stiffness"))
     stiffness = variant["contact.stiffness"](config)
     soft = {**CALIBRATED, "contact.stiffness": stiffness}

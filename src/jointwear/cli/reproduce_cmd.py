@@ -31,8 +31,8 @@ def reproduce(
     quiet: Annotated[bool, typer.Option("--quiet", "-q")] = False,
 ) -> None:
     """Run the paper's cases (Tables 3-5, Figs. 8-15) and write OUT/report.md."""
-    from jointwear.reproduce import case_names
-    from jointwear.reproduce import reproduce as run_reproduction
+    from jointwear.paper.cases import case_names
+    from jointwear.paper.reproduce import reproduce as run_reproduction
 
     if case:
         known = case_names()
@@ -52,9 +52,7 @@ def reproduce(
         out, progress=progress, calibrate=calibrate, cases=case, overrides=overrides
     )
     if json_:
-        from jointwear.reproduce import _jsonable
-
-        emit_json(_jsonable({k: v for k, v in report.items()}))
+        emit_json(report)
         return
     holds = sum(t["holds"] for t in report["trends"])
     console.print(

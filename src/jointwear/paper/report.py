@@ -8,7 +8,9 @@ from typing import Any
 import numpy as np
 
 from jointwear.io import atomic_write
-from jointwear.plots import depth_unit, new_figure, save_figure
+from jointwear.paper.calibration import CALIBRATION_CASE
+from jointwear.paper.cases import PAPER_ROWS, deviation
+from jointwear.plots import depth_unit, new_figure, polar_magnification, save_figure
 
 __all__ = ["figures", "write_report"]
 
@@ -64,8 +66,6 @@ def _polar_and_linear(
     directory: Path,
     name: str,
 ) -> list[Path]:
-    from jointwear.plots import polar_magnification
-
     peak = max(float(depth.max()) for _, depth in curves.values())
     mag = polar_magnification(peak, radius)
     scale, unit = depth_unit(peak)
@@ -130,8 +130,6 @@ def _pct(x: float) -> str:
 
 def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Path]) -> None:
     """Write the markdown report."""
-    from jointwear.reproduce import CALIBRATION_CASE, PAPER_ROWS, deviation
-
     lines = ["# jointwear: reproduction of the NLCP paper", ""]
     lines += [
         "Every row below is computed by `jointwear reproduce`. The paper's units are read as "
@@ -180,7 +178,7 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
         "",
         "Each row is reproduced on its own by `jointwear run examples/paper/CASE.toml --json` "
         "(the shipped configs carry the calibrated values above; the packaged copies are "
-        "`jointwear/paper_cases/CASE.toml`).",
+        "`jointwear/paper/configs/CASE.toml`).",
         "",
         "| case | table | peak paper [mm] | peak ours [mm] | dev. | width paper [°] | "
         "width ours [°] | dev. | mass paper [g] | mass ours [g] | dev. | time paper [s] | "
@@ -282,7 +280,7 @@ def _feedback_lines(feedback: dict[str, Any] | None) -> list[str]:
         "",
         "Table 5's NLCP case run on to 10^5 revolutions, with the load of the unworn joint "
         "throughout (the paper's procedure) and with the dynamics solved again on the worn "
-        "joint (`simulation.dynamics_update = \"adaptive\"`). The pulling spring keeps the "
+        'joint (`simulation.dynamics_update = "adaptive"`). The pulling spring keeps the '
         "pin on the wall, so the worn joint's load hardly moves: "
         f"peak {_pct(b['peak_wear_depth_m'] / a['peak_wear_depth_m'] - 1)}, "
         f"mass {_pct(b['wear_mass_kg'] / a['wear_mass_kg'] - 1)} "
@@ -322,8 +320,6 @@ def _feedback_lines(feedback: dict[str, Any] | None) -> list[str]:
 
 
 def _sensitivity_lines(report: dict[str, Any]) -> list[str]:
-    from jointwear.reproduce import CALIBRATION_CASE
-
     variants = list(report.get("sensitivity") or [])
     if not variants:
         return []
