@@ -19,12 +19,14 @@ from jointwear.errors import ConfigError
 from jointwear.registry import suggest
 
 __all__ = [
+    "DISPLAY_UNITS",
     "PAPER_ROWS",
     "PaperRow",
     "case_config",
     "case_names",
     "configs_folder",
     "deviation",
+    "shown",
 ]
 
 
@@ -75,6 +77,29 @@ PAPER_ROWS: dict[str, PaperRow] = {
     "table5_winkler_10000r": PaperRow("Table 5", 0.061e-3, 165, 0.0353e-3, 14.12),
     "table5_winkler_15000r": PaperRow("Table 5", 0.0859e-3, 176, 0.0538e-3, 21.09),
 }
+
+
+#: the unit every table of the report shows a metric in: key -> (factor from SI, unit);
+#: the paper prints its tables in mm and g (see :data:`PAPER_ROWS`)
+DISPLAY_UNITS: dict[str, tuple[float, str]] = {
+    "peak": (1e3, "mm"),
+    "width": (1.0, "°"),
+    "mass": (1e3, "g"),
+}
+
+
+def shown(key: str, value: float) -> str:
+    """A metric as the report shows it, with its unit (``shown("peak", 1.1e-8)``: ``1.1e-05 mm``).
+
+    Parameters
+    ----------
+    key : {"peak", "width", "mass"}
+        The metric (:data:`DISPLAY_UNITS`).
+    value : float
+        Its value in SI: peak [m], width [deg], mass [kg].
+    """
+    scale, unit = DISPLAY_UNITS[key]
+    return f"{value * scale:.4g}{'' if unit == '°' else ' '}{unit}"
 
 
 def configs_folder() -> Traversable:

@@ -26,7 +26,7 @@ from jointwear.paper.calibration import (
     CALIBRATION_PARAMETERS,
     calibrate_paper_row,
 )
-from jointwear.paper.cases import PAPER_ROWS, case_config, case_names, deviation
+from jointwear.paper.cases import PAPER_ROWS, case_config, case_names, deviation, shown
 
 __all__ = [
     "FEEDBACK_CLEARANCES",
@@ -64,7 +64,7 @@ def _grows(results, low, high, keys=("peak", "width", "mass"), shrink=()):
         a, b = results[low][key], results[high][key]
         good = b < a if key in shrink else b > a
         ok &= good
-        parts.append(f"{key} {a:.4g} → {b:.4g}")
+        parts.append(f"{key} {shown(key, a)} → {shown(key, b)}")
     return ok, ", ".join(parts)
 
 
@@ -126,8 +126,8 @@ TRENDS = (
                 for s in ("120rpm", "240rpm")
             ),
             ", ".join(
-                f"{s}: {r[f'table3_nlcp_{s}']['width']:.4g} vs "
-                f"{r[f'table3_winkler_{s}']['width']:.4g} deg"
+                f"{s}: {shown('width', r[f'table3_nlcp_{s}']['width'])} vs "
+                f"{shown('width', r[f'table3_winkler_{s}']['width'])}"
                 for s in ("120rpm", "240rpm")
             ),
         ),
@@ -140,8 +140,8 @@ TRENDS = (
                 for s in ("120rpm", "240rpm")
             ),
             ", ".join(
-                f"{s}: {r[f'table3_nlcp_{s}']['peak']:.4g} vs "
-                f"{r[f'table3_winkler_{s}']['peak']:.4g} m"
+                f"{s}: {shown('peak', r[f'table3_nlcp_{s}']['peak'])} vs "
+                f"{shown('peak', r[f'table3_winkler_{s}']['peak'])}"
                 for s in ("120rpm", "240rpm")
             ),
         ),
@@ -275,7 +275,9 @@ def run_cases(
     -------
     summaries : dict
         Per case, the ``run --json`` summary plus ``peak`` [m], ``width`` [deg],
-        ``mass`` [kg] and ``budget`` (:func:`wear_budget`).
+        ``mass`` [kg], ``contour_update`` (whether the contour was updated; without,
+        ``contour_updates`` counts the saved profiles of the scaled revolution) and
+        ``budget`` (:func:`wear_budget`).
     results : dict
         Per case, the :class:`~jointwear.simulation.WearResult`.
     """
@@ -291,6 +293,7 @@ def run_cases(
         summary["peak"] = summary["peak_wear_depth_m"]
         summary["width"] = summary["wear_width_deg"]
         summary["mass"] = summary["wear_mass_kg"]
+        summary["contour_update"] = bool(result.config.simulation.update_contour)
         summary["budget"] = wear_budget(result)
         summaries[name] = summary
         results[name] = result
