@@ -80,6 +80,17 @@ def _both_models(fn):
     return check
 
 
+def _nlcp_beside_winkler(results, key, larger):
+    """Is NLCP's ``key`` larger (or smaller) than Winkler's at 120 and 240 rpm, one revolution?"""
+    pairs = [
+        (speed, results[f"table3_nlcp_{speed}"][key], results[f"table3_winkler_{speed}"][key])
+        for speed in ("120rpm", "240rpm")
+    ]
+    ok = all(nlcp > winkler if larger else nlcp < winkler for _, nlcp, winkler in pairs)
+    text = ", ".join(f"{s}: {shown(key, n)} vs {shown(key, w)}" for s, n, w in pairs)
+    return ok, text
+
+
 TRENDS = (
     Trend(
         "faster crank (120 -> 240 rpm) -> larger peak, width and mass",
@@ -120,31 +131,11 @@ TRENDS = (
     ),
     Trend(
         "NLCP -> wider zone than Winkler (one revolution, 120 and 240 rpm)",
-        lambda r: (
-            all(
-                r[f"table3_nlcp_{s}"]["width"] > r[f"table3_winkler_{s}"]["width"]
-                for s in ("120rpm", "240rpm")
-            ),
-            ", ".join(
-                f"{s}: {shown('width', r[f'table3_nlcp_{s}']['width'])} vs "
-                f"{shown('width', r[f'table3_winkler_{s}']['width'])}"
-                for s in ("120rpm", "240rpm")
-            ),
-        ),
+        lambda r: _nlcp_beside_winkler(r, "width", larger=True),
     ),
     Trend(
         "NLCP -> lower peak than Winkler (one revolution, 120 and 240 rpm)",
-        lambda r: (
-            all(
-                r[f"table3_nlcp_{s}"]["peak"] < r[f"table3_winkler_{s}"]["peak"]
-                for s in ("120rpm", "240rpm")
-            ),
-            ", ".join(
-                f"{s}: {shown('peak', r[f'table3_nlcp_{s}']['peak'])} vs "
-                f"{shown('peak', r[f'table3_winkler_{s}']['peak'])}"
-                for s in ("120rpm", "240rpm")
-            ),
-        ),
+        lambda r: _nlcp_beside_winkler(r, "peak", larger=False),
     ),
     Trend(
         "larger clearance (0.05 -> 0.2 mm, 120 rpm, 10000 r, NLCP) -> larger peak, smaller width",
