@@ -12,8 +12,8 @@ a notebook or in the documentation's gallery).
 from __future__ import annotations
 
 import jointwear as jw
+from jointwear.paper import case_config
 from jointwear.plots import plot_wear_result
-from jointwear.reproduce import case_config
 
 # The paper's cases ship with the package (the TOML files in examples/paper/);
 # jw.load_config("examples/paper/table3_nlcp_120rpm.toml") reads the same file.

@@ -8,7 +8,7 @@ from jointwear import Simulation
 from jointwear.calibration import Parameter, calibrate_metrics
 from jointwear.config import Config
 from jointwear.errors import ConfigError
-from jointwear.reproduce import CALIBRATION_PARAMETERS
+from jointwear.paper.calibration import CALIBRATION_PARAMETERS
 
 
 def test_recovers_known_parameters(paper_config: Config) -> None:

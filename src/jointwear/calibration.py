@@ -8,7 +8,8 @@ different size weigh alike.
 
 :func:`calibrate_metrics` fits scalar metrics (the paper's wear peak, width and
 mass: the reproduction protocol calibrates the undisclosed parameters on one table
-row); :mod:`jointwear.measurement` adds residuals from measured profiles.
+row, see :mod:`jointwear.paper.calibration`); :mod:`jointwear.measurement` adds
+residuals from measured profiles.
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ from scipy.optimize import least_squares
 from jointwear.config import Config
 from jointwear.errors import ConfigError, ConvergenceError
 
-__all__ = ["CalibrationResult", "Parameter", "calibrate", "calibrate_metrics"]
+__all__ = ["CalibrationResult", "Parameter", "calibrate", "calibrate_metrics", "config_value"]
 
 
 @dataclass(frozen=True)
@@ -145,7 +146,7 @@ def calibrate(
         raise ConfigError("calibrate: name at least one parameter to fit")
     start = []
     for p in parameters:
-        value = (initial or {}).get(p.key, _get(config, p.key))
+        value = (initial or {}).get(p.key, config_value(config, p.key))
         start.append(min(max(p.to_unit(value), 0.0), 1.0))
     evaluations = 0
 
@@ -216,7 +217,26 @@ def calibrate_metrics(
     return calibrate(config, parameters, residual, [f"log({n}/target)" for n in names], initial)
 
 
-def _get(config: Config, key: str) -> float:
+def config_value(config: Config, key: str) -> float:
+    """The numeric value of a dotted config key, in SI.
+
+    Parameters
+    ----------
+    config : Config
+        The configuration.
+    key : str
+        Dotted key (``joint.axial_length``).
+
+    Returns
+    -------
+    float
+        The value [SI unit of the key].
+
+    Raises
+    ------
+    ConfigError
+        Not a config key, or not a number.
+    """
     node: object = config.to_dict()
     for part in key.split("."):
         if not isinstance(node, dict) or part not in node:

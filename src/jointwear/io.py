@@ -22,6 +22,7 @@ from __future__ import annotations
 import contextlib
 import errno
 import json
+import math
 import os
 import shutil
 import stat
@@ -39,6 +40,7 @@ __all__ = [
     "check_input",
     "check_out",
     "check_tree",
+    "json_ready",
     "os_reason",
     "read_input",
     "read_input_bytes",
@@ -229,6 +231,29 @@ def atomic_write(path: str | Path, mode: str = "w", **kwargs: Any) -> Iterator[I
         yield handle
         handle.flush()
         os.fsync(handle.fileno())
+
+
+def json_ready(value: Any) -> Any:
+    """``value`` as plain JSON data: non-finite floats become ``None`` (``null``).
+
+    Dicts and lists are converted recursively, tuples become lists and numpy
+    scalars Python numbers; everything else is returned as it is.
+
+    Parameters
+    ----------
+    value : Any
+        Nested dicts, lists and tuples of numbers, strings, booleans and ``None``
+        (any units: the values are not changed).
+    """
+    if isinstance(value, dict):
+        return {key: json_ready(item) for key, item in value.items()}
+    if isinstance(value, list | tuple):
+        return [json_ready(item) for item in value]
+    if hasattr(value, "item") and callable(value.item) and getattr(value, "shape", None) == ():
+        value = value.item()
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
 
 
 def write_json(path: str | Path, data: Any) -> None:

@@ -17,9 +17,17 @@ from jointwear.config import Config
 from jointwear.measurement.synthetic import synthesize_measurement
 
 REQUIRED = {
-    "rms_error_m", "peak_wear_depth_simulated_m", "peak_wear_depth_measured_m", "peak_error_rel",
-    "wear_width_simulated_deg", "wear_width_measured_deg", "width_error_deg",
-    "wear_mass_simulated_kg", "wear_mass_measured_kg", "mass_error_rel", "alignment_offset_deg",
+    "rms_error_m",
+    "peak_wear_depth_simulated_m",
+    "peak_wear_depth_measured_m",
+    "peak_error_rel",
+    "wear_width_simulated_deg",
+    "wear_width_measured_deg",
+    "width_error_deg",
+    "wear_mass_simulated_kg",
+    "wear_mass_measured_kg",
+    "mass_error_rel",
+    "alignment_offset_deg",
     "fit",
 }
 ROTATION_DEG = 57.0
@@ -42,7 +50,12 @@ def files(tmp_path_factory: pytest.TempPathFactory, paper_config: Config) -> dic
     result = Simulation(config).run()
     result.to_netcdf(folder / "result.nc")
     x, y = synthesize_measurement(
-        result.wear_depth, config.bushing_radius, 3600, 0.7e-6, 11, (3e-3, -2e-3),
+        result.wear_depth,
+        config.bushing_radius,
+        3600,
+        0.7e-6,
+        11,
+        (3e-3, -2e-3),
         math.radians(ROTATION_DEG),
     )
     rows = "".join(f"{a * 1e3:.7f},{b * 1e3:.7f}\n" for a, b in zip(x, y, strict=True))
@@ -54,9 +67,12 @@ def files(tmp_path_factory: pytest.TempPathFactory, paper_config: Config) -> dic
     )
     (folder / "fake.nc").write_text("this is not netCDF\n")
     return {
-        "result": folder / "result.nc", "csv": folder / "worn.csv",
-        "plain": folder / "worn_plain.txt", "arc": folder / "arc.csv",
-        "fake": folder / "fake.nc", "peak": result.wear_depth.max(),  # type: ignore[dict-item]
+        "result": folder / "result.nc",
+        "csv": folder / "worn.csv",
+        "plain": folder / "worn_plain.txt",
+        "arc": folder / "arc.csv",
+        "fake": folder / "fake.nc",
+        "peak": result.wear_depth.max(),  # type: ignore[dict-item]
     }
 
 
@@ -90,8 +106,15 @@ def test_plain_fit_given_alignment_and_units(
     capsys: pytest.CaptureFixture[str], files: dict
 ) -> None:
     plain = run_json(
-        capsys, str(files["result"]), str(files["plain"]), "--units", "mm",
-        "--fit", "least-squares", "--align", f"{ROTATION_DEG} deg",
+        capsys,
+        str(files["result"]),
+        str(files["plain"]),
+        "--units",
+        "mm",
+        "--fit",
+        "least-squares",
+        "--align",
+        f"{ROTATION_DEG} deg",
     )
     assert plain["fit"] == "least-squares"
     assert plain["alignment"] == "given"
@@ -112,8 +135,12 @@ def test_out_writes_plots_and_data(
     assert "--floor" in text  # the noise note
     names = sorted(p.name for p in out.iterdir())
     assert names == [
-        "compare_polar.png", "compare_polar.svg", "compare_profile.png", "compare_profile.svg",
-        "comparison.json", "profiles.csv",
+        "compare_polar.png",
+        "compare_polar.svg",
+        "compare_profile.png",
+        "compare_profile.svg",
+        "comparison.json",
+        "profiles.csv",
     ]
     stored = json.loads((out / "comparison.json").read_text())
     assert stored.keys() >= REQUIRED
@@ -125,9 +152,20 @@ def test_out_writes_plots_and_data(
 def test_console_script_error_has_no_traceback(files: dict, tmp_path: Path) -> None:
     out = tmp_path / "out"
     result = subprocess.run(
-        [sys.executable, "-c", "from jointwear.cli import main; main()", "compare",
-         str(files["fake"]), str(files["csv"]), "--out", str(out), "--json"],
-        capture_output=True, text=True, check=False,
+        [
+            sys.executable,
+            "-c",
+            "from jointwear.cli import main; main()",
+            "compare",
+            str(files["fake"]),
+            str(files["csv"]),
+            "--out",
+            str(out),
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        check=False,
     )
     assert result.returncode == 2
     assert result.stdout == ""
@@ -143,8 +181,10 @@ def test_console_script_error_has_no_traceback(files: dict, tmp_path: Path) -> N
         (["{csv}", "{csv}"], "worn.csv: not a readable netCDF result"),
         (["{result}", "{arc}"], "arc.csv: the points cover only"),
         (["{result}", "{result}"], "result.nc: not a text file"),
-        (["{result}", "{csv}", "--fit", "robustt"], "--fit: unknown circle fit 'robustt'; "
-                                                     "did you mean 'robust'?"),
+        (
+            ["{result}", "{csv}", "--fit", "robustt"],
+            "--fit: unknown circle fit 'robustt'; did you mean 'robust'?",
+        ),
         (["{result}", "{csv}", "--units", "kg"], "--units: 'kg' is not a length unit"),
         (["{result}", "{csv}", "--units", "um"], "worn.csv: column 'x' is in mm but units 'um'"),
         (["{result}", "{csv}", "--align", "12 kg"], "--align:"),
@@ -154,8 +194,11 @@ def test_console_script_error_has_no_traceback(files: dict, tmp_path: Path) -> N
     ],
 )
 def test_errors_exit_2_one_line_and_no_partial_output(
-    capsys: pytest.CaptureFixture[str], files: dict, tmp_path: Path,
-    args: list[str], message: str,
+    capsys: pytest.CaptureFixture[str],
+    files: dict,
+    tmp_path: Path,
+    args: list[str],
+    message: str,
 ) -> None:
     out = tmp_path / "out"
     args = [a.format(**files) for a in args]
@@ -180,3 +223,26 @@ def test_out_that_is_a_file(
     assert info.value.code == 2
     assert "is not a directory" in capsys.readouterr().err
     assert target.read_text() == "keep me"
+
+
+def test_measured_frame_beside_the_alignment(
+    capsys: pytest.CaptureFixture[str], files: dict
+) -> None:
+    """The measured peak angle is the one as measured; the rotation is shown on its own."""
+    data = run_json(capsys, str(files["result"]), str(files["csv"]))
+    # a deepest node of a flat-topped, noisy scar: good to two nodes (180 nodes)
+    node = 2 * 2.0
+    assert data["peak_angle_difference_deg"] == pytest.approx(ROTATION_DEG, abs=node)
+    assert data["peak_angle_measured_deg"] == pytest.approx(
+        (data["peak_angle_simulated_deg"] + ROTATION_DEG) % 360, abs=node
+    )
+    assert data["peak_angle_residual_deg"] == pytest.approx(0.0, abs=node)
+    simulated = data["peak_angle_simulated_deg"]
+    assert data["peak_angle_aligned_deg"] == pytest.approx(simulated, abs=node)
+    main(["compare", str(files["result"]), str(files["csv"])])
+    text = capsys.readouterr().out
+    row = next(line for line in text.splitlines() if "peak angle as measured" in line)
+    assert f"{data['peak_angle_measured_deg']:.4g}°" in row
+    assert f"{data['peak_angle_difference_deg']:+.3g}°" in row
+    assert "rotation (best fit)" in text
+    assert f"peak angle, rotated {data['alignment_offset_deg']:+.3g}°" in text

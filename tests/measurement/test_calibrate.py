@@ -20,7 +20,6 @@ from jointwear.errors import ConfigError, DataError, WearThroughError
 from jointwear.measurement.calibrate import (
     DEFAULT_BOUNDS,
     MeasuredCase,
-    calibrate_paper_row,
     calibrate_profiles,
     key_unit,
     parse_case,
@@ -226,41 +225,3 @@ def test_replace_lets_derived_defaults_follow(paper_config: Config) -> None:
     wider = paper_config.replace({"joint.axial_length": 0.04})
     assert wider.spring_area == pytest.approx(2 * paper_config.spring_area)
     assert paper_config.replace({}) == paper_config
-
-
-def test_paper_row_is_the_reproduction_protocol(
-    paper_config: Config, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    """Same config, targets and parameters as reproduce.calibrate_on_paper."""
-    import jointwear.measurement.calibrate as ours
-    import jointwear.reproduce as reproduce
-
-    calls: list[tuple] = []
-
-    def record(config: Config, targets: dict, parameters: list, initial: object = None) -> str:
-        calls.append((config, dict(targets), list(parameters)))
-        return "fitted"
-
-    monkeypatch.setattr(ours, "calibrate_metrics", record)
-    monkeypatch.setattr(reproduce, "calibrate_metrics", record)
-    coarse = {"contact.nodes": 90}
-    assert calibrate_paper_row(reproduce.CALIBRATION_CASE, overrides=coarse) == "fitted"
-    assert reproduce.calibrate_on_paper(coarse) == "fitted"
-    assert calls[0] == calls[1]
-    assert calls[0][0].contact.nodes == 90
-    assert calls[0][1] == {
-        "peak_wear_depth_m": 1.056e-8,
-        "wear_width_deg": 115,
-        "wear_mass_kg": 3.355e-9,
-    }
-    # another row, other parameters, a config of one's own
-    own = paper_config.replace({"mechanism.crank_speed": "240 rpm"})
-    calibrate_paper_row(
-        "table3_winkler_240rpm", [resolve_parameter("wear_coefficient", own)], config=own
-    )
-    config, targets, parameters = calls[2]
-    assert config == own
-    assert targets["wear_width_deg"] == 118
-    assert [p.key for p in parameters] == [KD]
-    with pytest.raises(ConfigError, match="did you mean 'table3_winkler_120rpm'"):
-        calibrate_paper_row("table3_winkler_120")

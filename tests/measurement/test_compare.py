@@ -78,9 +78,13 @@ def test_the_simulated_scar_is_table5_sized(worn: Worn) -> None:
 
 def test_compare_recovers_the_simulated_profile(worn: Worn) -> None:
     cmp = compare_measurement(
-        worn.depth, worn.x, worn.y, worn.radius,
+        worn.depth,
+        worn.x,
+        worn.y,
+        worn.radius,
         axial_length=worn.config.joint.axial_length,
-        density=worn.config.materials.bushing.density, floor=3 * NOISE,
+        density=worn.config.materials.bushing.density,
+        floor=3 * NOISE,
     )
     assert cmp.fit is not None
     assert cmp.fit.method == "robust"
@@ -93,15 +97,47 @@ def test_compare_recovers_the_simulated_profile(worn: Worn) -> None:
     assert abs(cmp.width_error_deg) < 3.0
     assert abs(cmp.mass_error_rel) < 0.01
     assert cmp.mass_error_rel == pytest.approx(cmp.area_error_rel)
-    assert cmp.simulated_metrics.mass == pytest.approx(
-        2200 * 20e-3 * cmp.simulated_metrics.area
-    )
+    assert cmp.simulated_metrics.mass == pytest.approx(2200 * 20e-3 * cmp.simulated_metrics.area)
     np.testing.assert_allclose(cmp.simulated, worn.depth)
     np.testing.assert_allclose(cmp.theta, node_angles(worn.depth.size))
     summary = cmp.summary()
     assert summary["fit"] == "robust"
     assert summary["peak_error_rel"] == cmp.peak_error_rel
     assert summary["alignment_offset_deg"] == pytest.approx(ROTATION_DEG, abs=0.3)
+
+
+def test_a_load_direction_off_by_8_deg_shows_as_measured_and_is_aligned_away(
+    worn: Worn,
+) -> None:
+    """The real load 8 deg from the model's: the measured frame says so, the alignment undoes it.
+
+    The measured bushing wears like the simulation but with its scar turned 8 deg
+    (instrument frame = bushing frame). As measured, the peak sits 8 deg from the
+    predicted one; rotated by the best alignment (~8 deg) it sits on it.
+    """
+    shift = 8.0
+    theta = node_angles(worn.depth.size)
+    turned = np.interp(theta - math.radians(shift), theta, worn.depth, period=2 * np.pi)
+    x, y = synthesize_measurement(turned, worn.radius, 3600, NOISE, 5, (0.0, 0.0), 0.0)
+    node = 360.0 / worn.depth.size
+    cmp = compare_measurement(worn.depth, x, y, worn.radius, floor=3 * NOISE)
+    summary = cmp.summary()
+    # the measured frame: no rotation
+    simulated_peak = summary["peak_angle_simulated_deg"]
+    assert summary["peak_angle_measured_deg"] == pytest.approx(simulated_peak + shift, abs=node)
+    assert summary["peak_angle_difference_deg"] == pytest.approx(shift, abs=node)
+    assert summary["rms_error_measured_frame_m"] > 5 * summary["rms_error_m"]
+    np.testing.assert_allclose(cmp.measured_unrotated, turned, atol=3e-6)
+    # the best alignment: rotated by the shift, nothing left over
+    assert summary["alignment"] == "best"
+    assert summary["alignment_offset_deg"] == pytest.approx(shift, abs=0.3)
+    assert summary["peak_angle_aligned_deg"] == pytest.approx(simulated_peak, abs=node)
+    assert summary["peak_angle_residual_deg"] == pytest.approx(0.0, abs=node)
+    assert summary["rms_error_m"] < 0.5 * NOISE
+    # a given offset of zero keeps the measured frame: the 8 deg stay a residual
+    as_is = compare_measurement(worn.depth, x, y, worn.radius, align=0.0).summary()
+    assert as_is["peak_angle_residual_deg"] == pytest.approx(shift, abs=node)
+    assert as_is["peak_angle_measured_deg"] == summary["peak_angle_measured_deg"]
 
 
 def test_robust_fit_beats_the_plain_fit_on_the_one_sided_scar(worn: Worn) -> None:
@@ -121,7 +157,11 @@ def test_robust_fit_beats_the_plain_fit_on_the_one_sided_scar(worn: Worn) -> Non
 def test_given_offset_and_interpolated_profile(worn: Worn) -> None:
     best = compare_measurement(worn.depth, worn.x, worn.y, worn.radius)
     given = compare_measurement(
-        worn.depth, worn.x, worn.y, worn.radius, align=math.radians(ROTATION_DEG),
+        worn.depth,
+        worn.x,
+        worn.y,
+        worn.radius,
+        align=math.radians(ROTATION_DEG),
         profile="interpolate",
     )
     assert not given.aligned
@@ -185,7 +225,10 @@ def test_plot_comparison_writes_png_and_svg(worn: Worn, tmp_path: Path) -> None:
     paths = plot_comparison(cmp, tmp_path / "plots", worn.x, worn.y, label="test")
     names = sorted(p.name for p in paths)
     assert names == [
-        "compare_polar.png", "compare_polar.svg", "compare_profile.png", "compare_profile.svg",
+        "compare_polar.png",
+        "compare_polar.svg",
+        "compare_profile.png",
+        "compare_profile.svg",
     ]
     assert all(p.stat().st_size > 1000 for p in paths)
     assert not [p for p in (tmp_path / "plots").iterdir() if p.name.startswith(".")]

@@ -210,36 +210,28 @@ def _paper(
     json_: bool,
 ) -> None:
     """``calibrate --paper-row``: fit the paper's metrics of one table row."""
-    from jointwear.calibration import _get
+    from jointwear.calibration import config_value
     from jointwear.config import parse_override
-    from jointwear.measurement.calibrate import calibrate_paper_row, key_unit, parse_fit
-    from jointwear.reproduce import CALIBRATION_PARAMETERS, PAPER_ROWS, case_config, case_names
+    from jointwear.measurement.calibrate import key_unit, parse_fit
+    from jointwear.paper.calibration import (
+        CALIBRATION_PARAMETERS,
+        calibrate_paper_row,
+        row_config,
+    )
+    from jointwear.paper.cases import PAPER_ROWS
     from jointwear.simulation import Simulation
 
     if measured or case:
         raise ConfigError("--paper-row: fits the paper's table, not measured files; drop them")
-    if row not in PAPER_ROWS:
-        from jointwear.registry import suggest
-
-        raise ConfigError(f"--paper-row: unknown row {row!r}{suggest(row, PAPER_ROWS)}")
     if config is not None:
-        base = load(config, set_)
-    elif row in case_names():
-        base = case_config(row, dict(parse_override(text) for text in set_ or []))
+        base = row_config(row, config=load(config, set_))
     else:
-        raise ConfigError(
-            f"--paper-row: no packaged config for {row}; give its CONFIG "
-            f"(examples/paper/{row}.toml)"
-        )
+        base = row_config(row, dict(parse_override(text) for text in set_ or []))
     parameters = [parse_fit(text, base) for text in fit] if fit else list(CALIBRATION_PARAMETERS)
     result = calibrate_paper_row(row, parameters, config=base)
     achieved = Simulation(result.config).run().summary()
     paper = PAPER_ROWS[row]
-    targets = {
-        "peak_wear_depth_m": paper.peak,
-        "wear_width_deg": paper.width,
-        "wear_mass_kg": paper.mass,
-    }
+    targets = paper.targets
     summary = {
         "paper_row": row,
         "parameters": {
@@ -247,7 +239,7 @@ def _paper(
                 "value": result.values[p.key],
                 "uncertainty": _finite(result.uncertainty[p.key]),
                 "unit": key_unit(p.key),
-                "initial": _get(base, p.key),
+                "initial": config_value(base, p.key),
                 "lower": p.lower,
                 "upper": p.upper,
             }
@@ -321,7 +313,7 @@ def _parameter_table(parameters: dict[str, dict[str, Any]], title: str) -> Table
 
 def _reference(reference, loads, config, measured, set_, json_) -> None:
     """``calibrate --reference``: Winkler's stiffness and NLCP's K, n fitted to a reference."""
-    from jointwear.cli.compare_models_cmd import _parse_loads
+    from jointwear.cli.compare_models_cmd import parse_loads
     from jointwear.config import load_config
     from jointwear.contact import ContactParameters
     from jointwear.references.calibrate import calibrate_to_reference
@@ -335,7 +327,7 @@ def _reference(reference, loads, config, measured, set_, json_) -> None:
     if measured:
         raise ConfigError("--reference: fits the contact laws to a reference, not measured files")
     cfg = load(config, set_) if config is not None else load_config(overrides=set_ or [])
-    force = _parse_loads(loads)
+    force = parse_loads(loads)
     fits = calibrate_to_reference(
         ContactParameters.from_config(cfg), force, reference=reference, nodes=cfg.contact.nodes
     )

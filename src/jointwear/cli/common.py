@@ -79,15 +79,7 @@ def load(config: Path, overrides: list[str] | None) -> Config:
 
 def emit_json(data: dict[str, Any]) -> None:
     """Print one JSON object on stdout (non-finite numbers become null)."""
+    from jointwear.io import json_ready
 
-    def clean(value: Any) -> Any:
-        if (isinstance(value, float) and value != value) or value in (float("inf"), float("-inf")):
-            return None
-        if isinstance(value, dict):
-            return {k: clean(v) for k, v in value.items()}
-        if isinstance(value, list | tuple):
-            return [clean(v) for v in value]
-        return value
-
-    sys.stdout.write(json.dumps(clean(data)) + "\n")
+    sys.stdout.write(json.dumps(json_ready(data)) + "\n")
     sys.stdout.flush()

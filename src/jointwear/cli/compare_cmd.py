@@ -140,9 +140,10 @@ def compare(
     """Compare a simulated wear profile with a measured bushing.
 
     The unworn radius, axial length and density come from the result's stored
-    config. The measured profile is rotated onto the simulated one (--align best)
-    and both are compared on the simulation's grid: RMS error, peak, width, mass.
-    Errors are measured minus simulated.
+    config. Both are compared on the simulation's grid, first as measured (no
+    rotation: the measured peak angle against the predicted one), then with the
+    measured profile rotated onto the simulated one (--align best, or a given
+    offset): RMS error, peak, width, mass. Errors are measured minus simulated.
     """
     from jointwear.io import check_out
     from jointwear.measurement.compare import (
@@ -209,13 +210,13 @@ def compare(
     )
 
     if out is not None:
-        from jointwear.io import write_json
+        from jointwear.io import json_ready, write_json
 
         label = f"{measured.name} vs {result.name}"
 
         def write(directory: Path) -> None:
             plot_comparison(comparison, directory, x, y, label=label)
-            write_json(directory / "comparison.json", _jsonable(summary))
+            write_json(directory / "comparison.json", json_ready(summary))
             _write_profiles(directory / "profiles.csv", comparison)
 
         summary["files"] = [str(p) for p in write_staged(out, write)]
@@ -234,13 +235,6 @@ def compare(
         )
     if out is not None:
         console.print(f"plots and data in {out}/")
-
-
-def _jsonable(data: dict[str, Any]) -> dict[str, Any]:
-    return {
-        key: (None if isinstance(value, float) and not math.isfinite(value) else value)
-        for key, value in data.items()
-    }
 
 
 def _write_profiles(path: Path, comparison: Any) -> None:
@@ -276,11 +270,21 @@ def _table(summary: dict[str, Any], measured: Path, result: Path) -> Table:
         um(summary["peak_wear_depth_measured_m"]),
         f"{um(summary['peak_error_m'])} ({rel(summary['peak_error_rel'])})",
     )
+    shift = summary["alignment_offset_deg"]
+    how = "best fit" if summary["alignment"] == "best" else "given"
     table.add_row(
-        "peak angle",
+        "peak angle as measured",
         f"{summary['peak_angle_simulated_deg']:.4g}°",
         f"{summary['peak_angle_measured_deg']:.4g}°",
-        "",
+        f"{summary['peak_angle_difference_deg']:+.3g}°",
+    )
+    table.add_row("RMS error as measured", "", "", um(summary["rms_error_measured_frame_m"]))
+    table.add_row(f"rotation ({how})", "", "", f"{shift:+.4g}°")
+    table.add_row(
+        f"peak angle, rotated {shift:+.3g}°",
+        f"{summary['peak_angle_simulated_deg']:.4g}°",
+        f"{summary['peak_angle_aligned_deg']:.4g}°",
+        f"{summary['peak_angle_residual_deg']:+.3g}°",
     )
     table.add_row(
         "wear width",
@@ -295,8 +299,7 @@ def _table(summary: dict[str, Any], measured: Path, result: Path) -> Table:
         "-" if mass_meas != mass_meas else f"{mass_meas * 1e3:.4g} g",
         rel(summary["mass_error_rel"]),
     )
-    table.add_row("RMS error", "", "", um(summary["rms_error_m"]))
-    table.add_row("largest error", "", "", um(summary["max_abs_error_m"]))
-    table.add_row("alignment offset", "", f"{summary['alignment_offset_deg']:.4g}°", "")
+    table.add_row("RMS error, rotated", "", "", um(summary["rms_error_m"]))
+    table.add_row("largest error, rotated", "", "", um(summary["max_abs_error_m"]))
     table.add_row("fit rms residual", "", um(summary["fit_rms_residual_m"]), "")
     return table

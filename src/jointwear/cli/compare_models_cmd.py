@@ -24,7 +24,24 @@ def _split(values: list[str] | None) -> list[str]:
     return out
 
 
-def _parse_loads(text: str) -> list[float]:
+def parse_loads(text: str) -> list[float]:
+    """Parse a ``--loads`` option: comma-separated forces with units (``"50 N,100 N"``).
+
+    Parameters
+    ----------
+    text : str
+        The option's text; each load a positive force with its unit.
+
+    Returns
+    -------
+    list of float
+        The loads [N].
+
+    Raises
+    ------
+    ConfigError
+        No load, a bad unit, or a load that is not positive and finite.
+    """
     loads = [to_si(part, "force", "--loads") for part in _split([text])]
     if not loads or any(not (math.isfinite(f) and f > 0) for f in loads):
         raise ConfigError('--loads: give loads > 0, e.g. "50 N,100 N,200 N"')
@@ -76,7 +93,7 @@ def compare_models_command(
     if out is not None:
         out = check_out(out, files=names)
     cfg = load(config, list(set_ or []))
-    force = _parse_loads(loads)
+    force = parse_loads(loads)
     names = _split(models) or list(DEFAULT_MODELS)
     for name in names:
         if name not in CONTACT_MODELS:

@@ -32,8 +32,8 @@ def reproduce(
 ) -> None:
     """Run the paper's cases (Tables 3-5, Figs. 8-15) and write OUT/report.md."""
     from jointwear.io import check_out, check_tree, staged_output
-    from jointwear.reproduce import case_names
-    from jointwear.reproduce import reproduce as run_reproduction
+    from jointwear.paper.cases import case_names
+    from jointwear.paper.reproduce import reproduce as run_reproduction
 
     files, dirs = ("report.md", "report.json"), ("figures", "results")
     out = check_out(out, files=files, dirs=dirs)
@@ -58,9 +58,7 @@ def reproduce(
             staging, progress=progress, calibrate=calibrate, cases=case, overrides=overrides
         )
     if json_:
-        from jointwear.reproduce import _jsonable
-
-        emit_json(_jsonable({k: v for k, v in report.items()}))
+        emit_json(report)
         return
     holds = sum(t["holds"] for t in report["trends"])
     console.print(

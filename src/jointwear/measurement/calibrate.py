@@ -42,9 +42,8 @@ starting values and kept fixed during a least-squares pass; after the pass it
 is found again at the fitted values, and the pass is repeated (at most three
 times) while it moves by more than a tenth of a node.
 
-Paper protocol: :func:`calibrate_paper_row` fits scalar metrics (peak, width,
-mass) of one of the paper's table rows, the same machinery as
-:func:`jointwear.reproduce.calibrate_on_paper` (the reproduction protocol).
+The paper's protocol -- scalar metrics (peak, width, mass) of one of its table
+rows -- is :func:`jointwear.paper.calibration.calibrate_paper_row`.
 """
 
 from __future__ import annotations
@@ -59,13 +58,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from jointwear.calibration import (
-    CalibrationResult,
-    Parameter,
-    _get,
-    calibrate,
-    calibrate_metrics,
-)
+from jointwear.calibration import CalibrationResult, Parameter, calibrate, config_value
 from jointwear.config import Config, key_field, parse_override
 from jointwear.errors import ConfigError, DataError, JointwearError
 from jointwear.measurement.compare import (
@@ -86,7 +79,6 @@ __all__ = [
     "PARAMETER_ALIASES",
     "MeasuredCase",
     "ProfileCalibration",
-    "calibrate_paper_row",
     "calibrate_profiles",
     "key_kind",
     "key_unit",
@@ -108,8 +100,9 @@ PARAMETER_ALIASES: dict[str, str] = {
 
 #: Default search bounds [SI]. ``K_d`` 1e-16 ... 1e-10 1/Pa (log scale: PTFE-like
 #: polymers lie around 1e-13 ... 1e-12); axial length, wall thickness and preload
-#: as in :data:`jointwear.reproduce.CALIBRATION_PARAMETERS`. Any other real-valued
-#: key defaults to a tenth ... ten times its current value.
+#: wide around the paper's joint (the reproduction calibrates them on one row of its
+#: tables within these bounds). Any other real-valued key defaults to a tenth ... ten
+#: times its current value.
 DEFAULT_BOUNDS: dict[str, tuple[float, float]] = {
     "materials.bushing.wear_coefficient": (1e-16, 1e-10),
     "joint.axial_length": (5e-3, 80e-3),
@@ -202,7 +195,7 @@ def resolve_key(name: str, config: Config) -> str:
     if name in numeric:
         return name
     try:
-        _get(config, name)
+        config_value(config, name)
     except ConfigError:
         options = [*PARAMETER_ALIASES, *numeric]
         raise ConfigError(f"--fit: unknown parameter {name!r}{suggest(name, options)}") from None
@@ -234,7 +227,7 @@ def resolve_parameter(
         if key in DEFAULT_BOUNDS:
             bounds = DEFAULT_BOUNDS[key]
         else:
-            value = _get(config, key)
+            value = config_value(config, key)
             if not value > 0:
                 raise ConfigError(
                     f"--fit: {key} is {value:g}; give bounds, e.g. --fit '{key}=LOWER..UPPER'"
@@ -567,7 +560,9 @@ def calibrate_profiles(
     if str(fit).replace("_", "-") not in CIRCLE_FITS:
         raise ConfigError(f"fit: unknown circle fit {fit!r}{suggest(str(fit), CIRCLE_FITS)}")
     measured = [_Measured(case, fit, profile) for case in cases]
-    start = {p.key: float((initial or {}).get(p.key, _get(config, p.key))) for p in parameters}
+    start = {
+        p.key: float((initial or {}).get(p.key, config_value(config, p.key))) for p in parameters
+    }
     start = {p.key: min(max(start[p.key], p.lower), p.upper) for p in parameters}
     # validate every case's config once, with the starting values
     for case in cases:
@@ -637,7 +632,7 @@ def calibrate_profiles(
                 try:
                     simulated = _simulate(case_cfg)
                 except JointwearError:
-                    failed.add(tuple(_get(cfg, key) for key in keys))
+                    failed.add(tuple(config_value(cfg, key) for key in keys))
                     parts.append(np.full(nodes, _FAILED_RESIDUAL))
                     continue
                 parts.append((simulated - target) / peak)
@@ -686,61 +681,3 @@ def calibrate_profiles(
         evaluations=evaluations,
         simulations=simulations,
     )
-
-
-# ---------------------------------------------------------------- the paper's tables
-def calibrate_paper_row(
-    row: str,
-    parameters: Sequence[Parameter] | None = None,
-    overrides: Mapping[str, Any] | None = None,
-    config: Config | None = None,
-) -> CalibrationResult:
-    """Calibrate parameters on the peak, width and mass of one of the paper's rows.
-
-    With the defaults (``row = "table3_winkler_120rpm"``, the parameters of
-    :data:`jointwear.reproduce.CALIBRATION_PARAMETERS`) this is the
-    reproduction's protocol, :func:`jointwear.reproduce.calibrate_on_paper`: three metrics,
-    three unknowns, an exact fit (no uncertainty can be estimated).
-
-    Parameters
-    ----------
-    row : str
-        A key of :data:`jointwear.reproduce.PAPER_ROWS`.
-    parameters : sequence of Parameter, optional
-        What to fit; default axial length, wall thickness and spring preload.
-    overrides : mapping, optional
-        Dotted-key overrides of the row's packaged config (e.g. coarser grids).
-    config : Config, optional
-        Use this config instead of the packaged one (needed for rows without a
-        packaged config); ``overrides`` are applied to it.
-
-    Returns
-    -------
-    CalibrationResult
-        Residuals are ``log(metric / paper)`` for peak, width and mass.
-
-    Raises
-    ------
-    ConfigError
-        Unknown row (with a suggestion) or no config for it.
-    """
-    from jointwear.reproduce import CALIBRATION_PARAMETERS, PAPER_ROWS, case_config, case_names
-
-    if row not in PAPER_ROWS:
-        raise ConfigError(f"--paper-row: unknown row {row!r}{suggest(row, PAPER_ROWS)}")
-    if config is None:
-        if row not in case_names():
-            raise ConfigError(
-                f"--paper-row: no packaged config for {row}; give its CONFIG "
-                f"(examples/paper/{row}.toml)"
-            )
-        config = case_config(row, dict(overrides or {}))
-    elif overrides:
-        config = config.replace(overrides)
-    paper = PAPER_ROWS[row]
-    targets = {
-        "peak_wear_depth_m": paper.peak,
-        "wear_width_deg": paper.width,
-        "wear_mass_kg": paper.mass,
-    }
-    return calibrate_metrics(config, targets, list(parameters or CALIBRATION_PARAMETERS))

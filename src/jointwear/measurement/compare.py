@@ -28,6 +28,12 @@ the nearest node, then a bounded scalar search within one node
 too deep or too shallow overall still aligns right.
 With a number the offset is taken as given [rad] (a marked reference on the part).
 
+Both frames are reported: the *measured frame* (the profile as measured, no
+rotation; its peak angle next to the predicted one and their difference --
+how far the real load direction is from the model's) and the *aligned* one
+(rotated by the offset; the errors of shape, depth, width and mass). An angle
+after rotation is never reported as the measured one.
+
 Signs: every error is *measured minus simulated*; relative errors are divided
 by the simulated value.
 
@@ -109,6 +115,9 @@ class Comparison:
         How the points were brought onto the grid (``"interpolate"`` or ``"bin"``).
     points : int
         Number of measured points (0 if unknown).
+    measured_frame : ndarray, shape (N,), optional
+        Measured wear depth in its own frame, not rotated [m] (default: ``measured``
+        rotated back by the offset, see :attr:`measured_unrotated`).
     """
 
     theta: FloatArray
@@ -122,6 +131,7 @@ class Comparison:
     fit: CircleFit | None = None
     profile_method: str | None = None
     points: int = 0
+    measured_frame: FloatArray | None = None
 
     def __repr__(self) -> str:
         return (
@@ -149,6 +159,40 @@ class Comparison:
     def max_abs_error(self) -> float:
         """Largest absolute difference of the aligned profiles [m]."""
         return float(np.max(np.abs(self.difference)))
+
+    @property
+    def measured_unrotated(self) -> FloatArray:
+        """Measured wear depth in the measured frame, not rotated [m]."""
+        if self.measured_frame is not None:
+            return self.measured_frame
+        # the aligned profile seen from the measured frame again
+        return np.interp(
+            self.theta - self.alignment_offset, self.theta, self.measured, period=2 * np.pi
+        )
+
+    @property
+    def peak_angle_measured_frame(self) -> float:
+        """Angle of the deepest node of the measured profile as measured, not rotated [rad]."""
+        return float(self.theta[np.argmax(self.measured_unrotated)])
+
+    @property
+    def peak_angle_difference(self) -> float:
+        """Measured-frame peak angle minus the simulated one, wrapped to (-pi, pi] [rad].
+
+        No rotation: how far the measured wear sits from the predicted one as measured
+        (a load direction of the real joint off the model's shows here).
+        """
+        return _wrapped(self.peak_angle_measured_frame - self.simulated_metrics.peak_angle)
+
+    @property
+    def rms_error_measured_frame(self) -> float:
+        """Root mean square of measured (not rotated) minus simulated depth [m]."""
+        return float(np.sqrt(np.mean((self.measured_unrotated - self.simulated) ** 2)))
+
+    @property
+    def peak_angle_residual(self) -> float:
+        """Aligned (rotated) measured peak angle minus the simulated one, wrapped [rad]."""
+        return _wrapped(self.measured_metrics.peak_angle - self.simulated_metrics.peak_angle)
 
     @property
     def peak_error(self) -> float:
@@ -207,7 +251,13 @@ class Comparison:
             "peak_error_m": self.peak_error,
             "peak_error_rel": self.peak_error_rel,
             "peak_angle_simulated_deg": sim.peak_angle_deg,
-            "peak_angle_measured_deg": meas.peak_angle_deg,
+            # the measured frame: as measured, no rotation
+            "peak_angle_measured_deg": math.degrees(self.peak_angle_measured_frame),
+            "peak_angle_difference_deg": math.degrees(self.peak_angle_difference),
+            "rms_error_measured_frame_m": self.rms_error_measured_frame,
+            # the aligned frame: the measured profile rotated by the offset
+            "peak_angle_aligned_deg": meas.peak_angle_deg,
+            "peak_angle_residual_deg": math.degrees(self.peak_angle_residual),
             "wear_width_simulated_deg": sim.width_deg,
             "wear_width_measured_deg": meas.width_deg,
             "width_error_deg": self.width_error_deg,
@@ -232,6 +282,11 @@ class Comparison:
             "original_radius_m": self.original_radius,
             "threshold": sim.threshold,
         }
+
+
+def _wrapped(angle: float) -> float:
+    """An angle wrapped to (-pi, pi] [rad]."""
+    return float(np.pi - np.mod(np.pi - angle, 2 * np.pi))
 
 
 def _relative(error: float, reference: float) -> float:
@@ -342,7 +397,7 @@ def best_offset(
     )
     better = negative_correlation(float(result.x)) <= negative_correlation(coarse)
     offset = float(result.x) if better else coarse
-    return float(np.pi - np.mod(np.pi - offset, 2 * np.pi))
+    return _wrapped(offset)
 
 
 def _check_profile(name: str, values: ArrayLike, nodes: int | None = None) -> FloatArray:
@@ -458,6 +513,7 @@ def compare_profiles(
         aligned=given is None,
         simulated_metrics=sim_metrics,
         measured_metrics=meas_metrics,
+        measured_frame=measured,
     )
 
 
@@ -527,8 +583,9 @@ def compare_measurement(
     method = resolve_profile_method(profile, x.size, nodes)
     given = _check_align(align)
     circle = fit if isinstance(fit, CircleFit) else fit_circle(x, y, original_radius, fit)
+    # the profile as measured (offset 0): the measured frame
+    first = measured_wear_profile(x, y, circle, original_radius, nodes, 0.0, method)
     if given is None:
-        first = measured_wear_profile(x, y, circle, original_radius, nodes, 0.0, method)
         theta = node_angles(nodes)
         coarse, _ = align_profiles(simulated, first)
 
@@ -554,7 +611,18 @@ def compare_measurement(
         fit=circle,
         profile_method=method,
         points=int(x.size),
+        measured_frame=first,
     )
+
+
+def _frame_titles(comparison: Comparison) -> tuple[str, str]:
+    """The measured-frame comparison and the kind of rotation, as plot title text."""
+    frames = (
+        f"as measured: peak at {math.degrees(comparison.peak_angle_measured_frame):.4g}° vs "
+        f"{comparison.simulated_metrics.peak_angle_deg:.4g}° predicted "
+        f"({math.degrees(comparison.peak_angle_difference):+.3g}°)"
+    )
+    return frames, "best alignment" if comparison.aligned else "given offset"
 
 
 def plot_comparison(
@@ -567,13 +635,17 @@ def plot_comparison(
 ) -> list[Path]:
     """Overlay plots of a comparison, PNG + SVG each, written atomically.
 
-    * ``compare_polar``: original circle, simulated and measured contours with
+    Titles give both frames: the measured peak angle as measured (no rotation)
+    against the predicted one, and the rotation applied to the measured profile.
+
+    * ``compare_polar``: original circle, simulated and measured (rotated) contours with
       the wear magnified (``R0 + m h``, ``m`` a power of ten as in the paper's
       figures, :func:`jointwear.plots.polar_magnification`), and the measured
       points in the bushing frame; drawn as a roundness chart, the radial axis
       starting at ``0.8 R0``;
     * ``compare_profile``: wear depth [µm] vs bushing angle [deg], simulated,
-      measured profile and points, and their difference.
+      measured profile (rotated, and as measured when the rotation is not zero)
+      and points, and their difference.
 
     Parameters
     ----------
@@ -609,6 +681,8 @@ def plot_comparison(
         points_angle = np.mod(np.arctan2(py, px)[::step] - comparison.alignment_offset, 2 * np.pi)
         points_depth = np.hypot(px, py)[::step] - r0
     title = f"{label}: " if label else ""
+    shift = math.degrees(comparison.alignment_offset)
+    frames, rotation = _frame_titles(comparison)
     written: list[Path] = []
 
     closed = np.append(theta, theta[0])
@@ -629,11 +703,22 @@ def plot_comparison(
             label="measured points",
         )
     ax.plot(closed, ring(comparison.simulated), lw=1.6, color="tab:blue", label="simulated")
-    ax.plot(closed, ring(comparison.measured), "--", lw=1.2, color="tab:orange", label="measured")
+    ax.plot(
+        closed,
+        ring(comparison.measured),
+        "--",
+        lw=1.2,
+        color="tab:orange",
+        label=f"measured, rotated by {shift:+.3g}°",
+    )
     # a roundness chart: the radial axis starts at 0.8 R0 so that the wear shows
     outer = max(float(np.max(ring(comparison.simulated))), float(np.max(ring(comparison.measured))))
     ax.set_ylim(0.8 * r0 * 1e3, 1.02 * outer)
-    ax.set_title(f"{title}worn contour, wear x{mag:g} [mm]\n(radial axis from 0.8 R0)")
+    ax.set_title(
+        f"{title}worn contour, wear x{mag:g} [mm], radial axis from 0.8 R0\n"
+        f"measured rotated by {shift:+.3g}° ({rotation}); {frames}",
+        fontsize=8,
+    )
     ax.legend(loc="lower left", fontsize=7, bbox_to_anchor=(-0.1, -0.12), ncol=2)
     written += save_figure(fig, directory, "compare_polar")
 
@@ -647,16 +732,34 @@ def plot_comparison(
             ".",
             ms=1.5,
             color="0.6",
-            label="measured points",
+            label="measured points (rotated)",
         )
     ax1.plot(degrees, comparison.simulated * 1e6, lw=1.6, color="tab:blue", label="simulated")
-    ax1.plot(degrees, comparison.measured * 1e6, "--", lw=1.2, color="tab:orange", label="measured")
+    if abs(comparison.alignment_offset) > 1e-9:
+        ax1.plot(
+            degrees,
+            comparison.measured_unrotated * 1e6,
+            ":",
+            lw=1.0,
+            color="tab:red",
+            label="measured, as measured (not rotated)",
+        )
+    ax1.plot(
+        degrees,
+        comparison.measured * 1e6,
+        "--",
+        lw=1.2,
+        color="tab:orange",
+        label=f"measured, rotated by {shift:+.3g}°",
+    )
     ax1.set_ylabel("wear depth [µm]")
     ax1.grid(alpha=0.3)
     ax1.legend(fontsize=7)
     ax1.set_title(
-        f"{title}RMS error {comparison.rms_error * 1e6:.3g} µm, "
-        f"peak error {100 * comparison.peak_error_rel:+.3g} %"
+        f"{title}{frames}\n{rotation}, rotated by {shift:+.3g}°: "
+        f"RMS error {comparison.rms_error * 1e6:.3g} µm, "
+        f"peak error {100 * comparison.peak_error_rel:+.3g} %",
+        fontsize=9,
     )
     ax2.plot(degrees, comparison.difference * 1e6, color="k", lw=1)
     ax2.axhline(0.0, color="0.5", lw=0.8)

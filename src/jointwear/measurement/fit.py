@@ -68,6 +68,7 @@ from jointwear.errors import DataError
 
 __all__ = [
     "CircleFit",
+    "angular_extent",
     "circle_residuals",
     "fit_circle_kasa",
     "fit_circle_least_squares",
@@ -490,7 +491,7 @@ def fit_circle_robust(
     radius = radius if fixed else fitted
     kept = np.abs(circle_residuals(x, y, cx, cy, radius)) <= half_width
 
-    arc = np.degrees(_angular_extent(x[kept] - cx, y[kept] - cy))
+    arc = np.degrees(angular_extent(x[kept] - cx, y[kept] - cy))
     if arc < min_arc_deg:
         raise DataError(
             f"robust circle fit: the unworn arc spans only {arc:.0f}° "
@@ -553,8 +554,19 @@ def _noise_from_inside(residual: FloatArray) -> float:
     return float(np.sqrt(np.mean(inside**2))) if inside.size else 0.0
 
 
-def _angular_extent(dx: FloatArray, dy: FloatArray) -> float:
-    """Angle covered by points seen from the origin: 2 pi minus the largest gap [rad]."""
+def angular_extent(dx: FloatArray, dy: FloatArray) -> float:
+    """Angle covered by points seen from the origin: 2 pi minus the largest gap [rad].
+
+    Parameters
+    ----------
+    dx, dy : ndarray, shape (M,)
+        Points relative to the origin (e.g. a fitted centre) [m, or any length unit].
+
+    Returns
+    -------
+    float
+        Angular coverage [rad], 0 for fewer than two points.
+    """
     if dx.size < 2:
         return 0.0
     angle = np.sort(np.mod(np.arctan2(dy, dx), 2 * np.pi))

@@ -29,7 +29,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear.errors import ConfigError, DataError
-from jointwear.measurement.fit import _angular_extent, fit_circle_kasa
+from jointwear.measurement.fit import angular_extent, fit_circle_kasa
 from jointwear.tables import (
     delimiter_of,
     is_content,
@@ -152,7 +152,7 @@ def check_ring(
         reason = str(exc).removeprefix("circle fit: ")
         raise DataError(f"{source}: not a ring of points ({reason})") from None
     dx, dy = x - circle.center_x, y - circle.center_y
-    coverage = np.degrees(_angular_extent(dx, dy))
+    coverage = np.degrees(angular_extent(dx, dy))
     if coverage < min_coverage_deg:
         raise DataError(
             f"{source}: the points cover only {coverage:.0f}° of the ring about its centre, "

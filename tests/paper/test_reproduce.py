@@ -8,17 +8,11 @@ from pathlib import Path
 
 import pytest
 
-from jointwear.reproduce import (
-    CALIBRATION_CASE,
-    PAPER_ROWS,
-    case_config,
-    case_names,
-    check_trends,
-    reproduce,
-    run_cases,
-)
+from jointwear.paper.calibration import CALIBRATION_CASE
+from jointwear.paper.cases import PAPER_ROWS, case_config, case_names
+from jointwear.paper.reproduce import check_trends, reproduce, run_cases
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 
 
 def test_every_paper_row_has_a_case_and_the_examples_are_the_cases() -> None:
@@ -50,7 +44,11 @@ def test_case_configs_say_what_their_names_say(name: str) -> None:
 
 def test_paper_tables_show_their_own_trends() -> None:
     paper = {n: {"peak": r.peak, "width": r.width, "mass": r.mass} for n, r in PAPER_ROWS.items()}
-    verdicts = {t["statement"]: t["holds"] for t in check_trends(paper)}
+    trends = check_trends(paper)
+    verdicts = {t["statement"]: t["holds"] for t in trends}
+    # the numbers carry the report's units: the paper's 1.003e-5 mm, not 1.003e-8 (m)
+    assert "peak 1.003e-05 mm → 1.22e-05 mm" in trends[0]["detail"]
+    assert "mass 3.381e-06 g → 4.357e-06 g" in trends[0]["detail"]
     assert verdicts["faster crank (120 -> 240 rpm) -> larger peak, width and mass"]
     # the paper's text says mass grows with clearance; its Table 4 says it falls
     assert not verdicts["larger clearance (0.05 -> 0.2 mm, 240 rpm) -> larger mass"]
@@ -80,6 +78,16 @@ def test_reproduce_single_revolution_rows(tmp_path: Path) -> None:
     text = (tmp_path / "report.md").read_text()
     assert "| `table3_winkler_240rpm` |" in text
     assert "calibrated" in text
+    # the calibration row is marked as fitted, not given an agreement it has by construction
+    lines = text.splitlines()
+    row_line = next(line for line in lines if line.startswith(f"| `{CALIBRATION_CASE}`"))
+    assert "fitted (3 parameters, 3 targets)" in row_line
+    assert "%" not in row_line
+    # the tables show a peak in mm and a mass in g (the paper's units; the trends too)
+    assert "peak ours [mm]" in text
+    assert "mass ours [g]" in text
+    # each row names the command that reproduces it
+    assert f"`jointwear run examples/paper/{CALIBRATION_CASE}.toml --json`" in row_line
     assert (tmp_path / "results" / f"{CALIBRATION_CASE}.nc").exists()
     # Fig. 8 overlays NLCP and Winkler at 120 rpm, both in this subset; Fig. 9 needs NLCP 240
     assert (tmp_path / "figures" / "fig08_120rpm_0.05mm.png").exists()
@@ -128,10 +136,10 @@ def test_wear_mass_falls_with_clearance_under_continuous_contact(model: str) -> 
 
 
 def test_sensitivity_variants_resolve_and_nlcp_stiffness_leaves_winkler_alone() -> None:
-    from jointwear.reproduce import SENSITIVITY, _eq2_stiffness_over_pi
+    from jointwear.paper.reproduce import SENSITIVITY, eq2_stiffness_over_pi
 
     config = case_config(CALIBRATION_CASE)
-    assert _eq2_stiffness_over_pi(config) == pytest.approx(config.nlcp_stiffness / math.pi)
+    assert eq2_stiffness_over_pi(config) == pytest.approx(config.nlcp_stiffness / math.pi)
     variant = next(v for k, v in SENSITIVITY.items() if k.startswith("NLCP stiffness"))
     stiffness = variant["contact.stiffness"](config)
     soft = {**CALIBRATED, "contact.stiffness": stiffness}

@@ -8,7 +8,9 @@ from typing import Any
 import numpy as np
 
 from jointwear.io import atomic_write
-from jointwear.plots import depth_unit, new_figure, save_figure
+from jointwear.paper.calibration import CALIBRATION_CASE
+from jointwear.paper.cases import DISPLAY_UNITS, PAPER_ROWS, deviation
+from jointwear.plots import depth_unit, new_figure, polar_magnification, save_figure
 
 __all__ = ["figures", "write_report"]
 
@@ -64,8 +66,6 @@ def _polar_and_linear(
     directory: Path,
     name: str,
 ) -> list[Path]:
-    from jointwear.plots import polar_magnification
-
     peak = max(float(depth.max()) for _, depth in curves.values())
     mag = polar_magnification(peak, radius)
     scale, unit = depth_unit(peak)
@@ -128,10 +128,22 @@ def _pct(x: float) -> str:
     return f"{x * 100:+.1f} %"
 
 
+def _value(key: str, value: float) -> str:
+    """A metric [SI] as a table cell, in the unit of its column (:data:`DISPLAY_UNITS`)."""
+    return f"{value * DISPLAY_UNITS[key][0]:.4g}"
+
+
+def _fitted(calibration: dict[str, Any]) -> str:
+    """What the calibration row's deviations are: fitted, by how many parameters to how many."""
+    return f"fitted ({len(calibration['values'])} parameters, {len(calibration['labels'])} targets)"
+
+
+def _command(case: str) -> str:
+    return f"`jointwear run examples/paper/{case}.toml --json`"
+
+
 def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Path]) -> None:
     """Write the markdown report."""
-    from jointwear.reproduce import CALIBRATION_CASE, PAPER_ROWS, deviation
-
     lines = ["# jointwear: reproduction of the NLCP paper", ""]
     lines += [
         "Every row below is computed by `jointwear reproduce`. The paper's units are read as "
@@ -151,8 +163,9 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
         lines += [
             f"The parameters the paper does not give were fitted on **one** row, "
             f"`{cal['case']}` (Table 3, Winkler, 120 rpm, 0.05 mm, one revolution), to its wear "
-            f"peak, width and mass by least squares ({cal['evaluations']} model evaluations). "
-            "Every other row is a prediction with these values.",
+            f"peak, width and mass by least squares ({cal['evaluations']} model evaluations): "
+            f"{_fitted(cal)}, so that row agrees by construction. Every other row is a "
+            "prediction with these values.",
             "",
             "| parameter | calibrated value |",
             "|---|---|",
@@ -175,36 +188,39 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
             "",
         ]
 
+    fitted = "" if cal is None else _fitted(cal)
+    peak_unit, mass_unit = DISPLAY_UNITS["peak"][1], DISPLAY_UNITS["mass"][1]
     lines += [
         "## Tables 3-5: paper vs ours",
         "",
-        "Each row is reproduced on its own by `jointwear run examples/paper/CASE.toml --json` "
-        "(the shipped configs carry the calibrated values above; the packaged copies are "
-        "`jointwear/paper_cases/CASE.toml`).",
+        "Each row is reproduced on its own by the command in its last column (the shipped "
+        "configs carry the calibrated values above; `examples/paper` is the package's "
+        "`jointwear/paper/configs`). The calibration row is fitted, not predicted: its "
+        "deviations are zero by construction.",
         "",
-        "| case | table | peak paper [mm] | peak ours [mm] | dev. | width paper [°] | "
-        "width ours [°] | dev. | mass paper [g] | mass ours [g] | dev. | time paper [s] | "
-        "time ours [s] |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        f"| case | table | peak paper [{peak_unit}] | peak ours [{peak_unit}] | dev. | "
+        f"width paper [°] | width ours [°] | dev. | mass paper [{mass_unit}] | "
+        f"mass ours [{mass_unit}] | dev. | time paper [s] | time ours [s] | "
+        "command that reproduces this row |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     worst: list[tuple[float, str]] = []
     for name, row in PAPER_ROWS.items():
         if name not in report["cases"]:
             continue
         s = report["cases"][name]
-        d = [
-            deviation(s["peak"], row.peak),
-            deviation(s["width"], row.width),
-            deviation(s["mass"], row.mass),
-        ]
-        tag = " (calibrated)" if name == CALIBRATION_CASE and cal else ""
+        d = [deviation(s[key], getattr(row, key)) for key in ("peak", "width", "mass")]
+        calibrated = name == CALIBRATION_CASE and cal is not None
+        dev = ["fitted" if calibrated else _pct(x) for x in d]
+        tag = f" (calibration row: {fitted})" if calibrated else ""
         lines.append(
-            f"| `{name}`{tag} | {row.table} | {row.peak * 1e3:.4g} | {s['peak'] * 1e3:.4g} | "
-            f"{_pct(d[0])} | {row.width:.4g} | {s['width']:.4g} | {_pct(d[1])} | "
-            f"{row.mass * 1e3:.4g} | {s['mass'] * 1e3:.4g} | {_pct(d[2])} | {row.time:.3g} | "
-            f"{s['runtime_s']:.3g} |"
+            f"| `{name}`{tag} | {row.table} | {_value('peak', row.peak)} | "
+            f"{_value('peak', s['peak'])} | {dev[0]} | {_value('width', row.width)} | "
+            f"{_value('width', s['width'])} | {dev[1]} | {_value('mass', row.mass)} | "
+            f"{_value('mass', s['mass'])} | {dev[2]} | {row.time:.3g} | {s['runtime_s']:.3g} | "
+            f"{_command(name)} |"
         )
-        if name != CALIBRATION_CASE:
+        if not calibrated:
             worst += [
                 (abs(x), f"{name} {m}") for x, m in zip(d, ("peak", "width", "mass"), strict=True)
             ]
@@ -250,14 +266,20 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
         lines += [
             "## Figure cases (no table values in the paper)",
             "",
-            "| case | peak [mm] | width [°] | mass [g] | contour updates | time [s] |",
-            "|---|---|---|---|---|---|",
+            "Contour updates: how often the worn contour was updated and the pressure solved "
+            "again; a run without update computes one revolution and scales it.",
+            "",
+            f"| case | peak [{peak_unit}] | width [°] | mass [{mass_unit}] | contour updates | "
+            "time [s] | command that reproduces this row |",
+            "|---|---|---|---|---|---|---|",
         ]
         for name in others:
             s = report["cases"][name]
+            updates = s["contour_updates"] if s.get("contour_update", True) else "none"
             lines.append(
-                f"| `{name}` | {s['peak'] * 1e3:.4g} | {s['width']:.4g} | "
-                f"{s['mass'] * 1e3:.4g} | {s['contour_updates']} | {s['runtime_s']:.3g} |"
+                f"| `{name}` | {_value('peak', s['peak'])} | {_value('width', s['width'])} | "
+                f"{_value('mass', s['mass'])} | {updates} | {s['runtime_s']:.3g} | "
+                f"{_command(name)} |"
             )
         lines.append("")
 
@@ -282,19 +304,21 @@ def _feedback_lines(feedback: dict[str, Any] | None) -> list[str]:
         "",
         "Table 5's NLCP case run on to 10^5 revolutions, with the load of the unworn joint "
         "throughout (the paper's procedure) and with the dynamics solved again on the worn "
-        "joint (`simulation.dynamics_update = \"adaptive\"`). The pulling spring keeps the "
+        'joint (`simulation.dynamics_update = "adaptive"`). The pulling spring keeps the '
         "pin on the wall, so the worn joint's load hardly moves: "
         f"peak {_pct(b['peak_wear_depth_m'] / a['peak_wear_depth_m'] - 1)}, "
         f"mass {_pct(b['wear_mass_kg'] / a['wear_mass_kg'] - 1)} "
         f"({b['dynamics_updates']} solves of the dynamics).",
         "",
-        "| run | peak [mm] | width [°] | mass [g] | dynamics solves |",
+        f"| run | peak [{DISPLAY_UNITS['peak'][1]}] | width [°] | "
+        f"mass [{DISPLAY_UNITS['mass'][1]}] | dynamics solves |",
         "|---|---|---|---|---|",
     ]
     for name, s in (("load of the unworn joint", a), ("coupled (adaptive)", b)):
         lines.append(
-            f"| {name} | {s['peak_wear_depth_m'] * 1e3:.4g} | {s['wear_width_deg']:.4g} | "
-            f"{s['wear_mass_kg'] * 1e3:.4g} | {s['dynamics_updates']} |"
+            f"| {name} | {_value('peak', s['peak_wear_depth_m'])} | "
+            f"{_value('width', s['wear_width_deg'])} | {_value('mass', s['wear_mass_kg'])} | "
+            f"{s['dynamics_updates']} |"
         )
     clearances = None
     rows = []
@@ -302,16 +326,17 @@ def _feedback_lines(feedback: dict[str, Any] | None) -> list[str]:
         clearances = data["clearance_m"]
         for model in ("massless-link", "contact-impact"):
             cells = " | ".join(
-                f"{m * 1e9:.4g} ({int(h)})"
+                f"{_value('mass', m)} ({int(h)})"
                 for m, h in zip(data[f"{model}_mass_kg"], data[f"{model}_impacts"], strict=True)
             )
             rows.append(f"| {spring} | {model} | {cells} |")
     lines += [
         "",
         "The paper's claim that a larger clearance wears more mass (240 rpm, one revolution), "
-        "revisited with the contact-impact dynamics: worn mass in µg, impacts per revolution "
-        "in brackets. Under continuous contact Archard's law gives slightly *less* mass at a "
-        "larger clearance (the contact arc narrows); only impacts can reverse that.",
+        f"revisited with the contact-impact dynamics: worn mass in {DISPLAY_UNITS['mass'][1]}, "
+        "impacts per revolution in brackets. Under continuous contact Archard's law gives "
+        "slightly *less* mass at a larger clearance (the contact arc narrows); only impacts "
+        "can reverse that.",
         "",
         "| spring | dynamics | " + " | ".join(f"{c * 1e3:g} mm" for c in clearances or []) + " |",
         "|---|---|" + "---|" * len(clearances or []),
@@ -322,8 +347,6 @@ def _feedback_lines(feedback: dict[str, Any] | None) -> list[str]:
 
 
 def _sensitivity_lines(report: dict[str, Any]) -> list[str]:
-    from jointwear.reproduce import CALIBRATION_CASE
-
     variants = list(report.get("sensitivity") or [])
     if not variants:
         return []

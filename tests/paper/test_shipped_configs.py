@@ -9,9 +9,10 @@ import pytest
 
 import jointwear as jw
 from jointwear.errors import WearFeedbackWarning
-from jointwear.reproduce import PAPER_ROWS, reproduce
+from jointwear.paper.cases import PAPER_ROWS
+from jointwear.paper.reproduce import reproduce
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")

@@ -14,104 +14,34 @@ import platform
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
-from importlib.resources import files
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from jointwear.calibration import CalibrationResult, Parameter, calibrate_metrics
-from jointwear.config import Config, load_config
+from jointwear.config import Config
+from jointwear.io import json_ready, write_json
+from jointwear.paper.calibration import (
+    CALIBRATION_CASE,
+    CALIBRATION_PARAMETERS,
+    calibrate_paper_row,
+)
+from jointwear.paper.cases import PAPER_ROWS, case_config, case_names, deviation, shown
 
 __all__ = [
-    "CALIBRATION_CASE",
-    "CALIBRATION_PARAMETERS",
-    "PAPER_ROWS",
+    "FEEDBACK_CLEARANCES",
+    "SENSITIVITY",
     "TRENDS",
-    "PaperRow",
-    "calibrate_on_paper",
-    "case_config",
-    "case_names",
+    "Trend",
     "check_trends",
-    "deviation",
+    "eq2_stiffness_over_pi",
+    "feedback_study",
     "reproduce",
     "run_cases",
     "sensitivity",
     "variant_record",
     "wear_budget",
 ]
-
-
-@dataclass(frozen=True)
-class PaperRow:
-    """One row of the paper's Tables 3-5, in SI.
-
-    Parameters
-    ----------
-    table : str
-        Table of the paper.
-    peak : float
-        Wear peak [m].
-    width : float
-        Wear width [deg].
-    mass : float
-        Wear mass [kg].
-    time : float
-        The paper's run time [s].
-    """
-
-    table: str
-    peak: float
-    width: float
-    mass: float
-    time: float
-
-
-#: the paper prints mm and g; converted here (1e-5 mm = 1e-8 m, 1e-6 g = 1e-9 kg)
-PAPER_ROWS: dict[str, PaperRow] = {
-    "table3_nlcp_120rpm": PaperRow("Table 3", 1.003e-8, 130, 3.381e-9, 2.11),
-    "table3_nlcp_240rpm": PaperRow("Table 3", 1.22e-8, 134, 4.357e-9, 1.81),
-    "table3_winkler_120rpm": PaperRow("Table 3", 1.056e-8, 115, 3.355e-9, 2.12),
-    "table3_winkler_240rpm": PaperRow("Table 3", 1.26e-8, 118, 4.326e-9, 1.61),
-    "table4_nlcp_clearance_0.2mm": PaperRow("Table 4", 1.44e-8, 102, 4.23e-9, 1.68),
-    "table4_winkler_clearance_0.2mm": PaperRow("Table 4", 1.46e-8, 90, 4.21e-9, 1.34),
-    "table5_nlcp_10000r": PaperRow("Table 5", 0.062e-3, 169, 0.0354e-3, 19.81),
-    "table5_nlcp_15000r": PaperRow("Table 5", 0.0875e-3, 178, 0.0539e-3, 29.03),
-    "table5_winkler_10000r": PaperRow("Table 5", 0.061e-3, 165, 0.0353e-3, 14.12),
-    "table5_winkler_15000r": PaperRow("Table 5", 0.0859e-3, 176, 0.0538e-3, 21.09),
-}
-
-CALIBRATION_CASE = "table3_winkler_120rpm"
-CALIBRATION_PARAMETERS = (
-    Parameter("joint.axial_length", 5e-3, 80e-3),
-    Parameter("joint.bushing_thickness", 0.3e-3, 10e-3),
-    Parameter("mechanism.spring_preload", 0.0, 400.0),
-)
-
-
-def case_names() -> list[str]:
-    """Names of the paper cases shipped with the package (``examples/paper``)."""
-    return sorted(
-        p.name.removesuffix(".toml")
-        for p in files("jointwear.paper_cases").iterdir()
-        if p.name.endswith(".toml")
-    )
-
-
-def case_config(name: str, overrides: dict[str, Any] | None = None) -> Config:
-    """The config of a paper case, with optional dotted-key overrides."""
-    from jointwear.errors import ConfigError
-    from jointwear.registry import suggest
-
-    names = case_names()
-    if name not in names:
-        raise ConfigError(f"case: unknown paper case {name!r}{suggest(name, names)}")
-    path = files("jointwear.paper_cases") / f"{name}.toml"
-    return load_config(Path(str(path)), overrides or {})
-
-
-def _metrics(summary: dict[str, Any]) -> tuple[float, float, float]:
-    return summary["peak_wear_depth_m"], summary["wear_width_deg"], summary["wear_mass_kg"]
 
 
 # ---------------------------------------------------------------- trends
@@ -134,7 +64,7 @@ def _grows(results, low, high, keys=("peak", "width", "mass"), shrink=()):
         a, b = results[low][key], results[high][key]
         good = b < a if key in shrink else b > a
         ok &= good
-        parts.append(f"{key} {a:.4g} → {b:.4g}")
+        parts.append(f"{key} {shown(key, a)} → {shown(key, b)}")
     return ok, ", ".join(parts)
 
 
@@ -148,6 +78,17 @@ def _both_models(fn):
         return all(oks), "; ".join(texts)
 
     return check
+
+
+def _nlcp_beside_winkler(results, key, larger):
+    """Is NLCP's ``key`` larger (or smaller) than Winkler's at 120 and 240 rpm, one revolution?"""
+    pairs = [
+        (speed, results[f"table3_nlcp_{speed}"][key], results[f"table3_winkler_{speed}"][key])
+        for speed in ("120rpm", "240rpm")
+    ]
+    ok = all(nlcp > winkler if larger else nlcp < winkler for _, nlcp, winkler in pairs)
+    text = ", ".join(f"{s}: {shown(key, n)} vs {shown(key, w)}" for s, n, w in pairs)
+    return ok, text
 
 
 TRENDS = (
@@ -190,31 +131,11 @@ TRENDS = (
     ),
     Trend(
         "NLCP -> wider zone than Winkler (one revolution, 120 and 240 rpm)",
-        lambda r: (
-            all(
-                r[f"table3_nlcp_{s}"]["width"] > r[f"table3_winkler_{s}"]["width"]
-                for s in ("120rpm", "240rpm")
-            ),
-            ", ".join(
-                f"{s}: {r[f'table3_nlcp_{s}']['width']:.4g} vs "
-                f"{r[f'table3_winkler_{s}']['width']:.4g} deg"
-                for s in ("120rpm", "240rpm")
-            ),
-        ),
+        lambda r: _nlcp_beside_winkler(r, "width", larger=True),
     ),
     Trend(
         "NLCP -> lower peak than Winkler (one revolution, 120 and 240 rpm)",
-        lambda r: (
-            all(
-                r[f"table3_nlcp_{s}"]["peak"] < r[f"table3_winkler_{s}"]["peak"]
-                for s in ("120rpm", "240rpm")
-            ),
-            ", ".join(
-                f"{s}: {r[f'table3_nlcp_{s}']['peak']:.4g} vs "
-                f"{r[f'table3_winkler_{s}']['peak']:.4g} m"
-                for s in ("120rpm", "240rpm")
-            ),
-        ),
+        lambda r: _nlcp_beside_winkler(r, "peak", larger=False),
     ),
     Trend(
         "larger clearance (0.05 -> 0.2 mm, 120 rpm, 10000 r, NLCP) -> larger peak, smaller width",
@@ -296,24 +217,7 @@ def _budget_ratios(
 
 
 # ---------------------------------------------------------------- driver
-def calibrate_on_paper(
-    base_overrides: dict[str, Any] | None = None,
-    parameters: list[Parameter] | tuple[Parameter, ...] = CALIBRATION_PARAMETERS,
-) -> CalibrationResult:
-    """Calibrate ``parameters`` (default all three) on the calibration row.
-
-    With fewer free parameters than the row's three metrics (peak, width, mass),
-    only as many metrics are fitted, in the order mass, width, peak: the mass
-    pins the load, the width the foundation stiffness.
-    """
-    row = PAPER_ROWS[CALIBRATION_CASE]
-    config = case_config(CALIBRATION_CASE, base_overrides)
-    metrics = {"wear_mass_kg": row.mass, "wear_width_deg": row.width, "peak_wear_depth_m": row.peak}
-    targets = dict(list(metrics.items())[: len(parameters)])
-    return calibrate_metrics(config, targets, parameters)
-
-
-def _eq2_stiffness_over_pi(config: Config) -> float:
+def eq2_stiffness_over_pi(config: Config) -> float:
     """NLCP ``K`` of eq. (2) read with ``sigma = (1 - nu^2) / E`` (no pi) [N/m^1.5].
 
     Eq. (3) defines ``sigma = (1 - nu^2) / (pi E)``, which cancels the ``pi`` of
@@ -321,6 +225,11 @@ def _eq2_stiffness_over_pi(config: Config) -> float:
     ``sigma = (1 - nu^2) / E`` and no ``pi`` in ``K``. Mixing the two conventions
     gives ``K / pi``: a slip an implementation can make, and one that reproduces the
     paper's NLCP wear widths (docs/reproduction.md).
+
+    Parameters
+    ----------
+    config : Config
+        A case's configuration (its own ``contact.stiffness`` is ignored).
     """
     return config.replace({"contact.stiffness": None}).nlcp_stiffness / math.pi
 
@@ -341,7 +250,7 @@ SENSITIVITY: dict[str, dict[str, Any]] = {
     # NLCP's K does not enter the (Winkler) calibration row: the calibrated values are
     # the default's, and only the NLCP predictions change
     "NLCP stiffness K / pi (eq. 2 with sigma = (1 - nu^2) / E)": {
-        "contact.stiffness": _eq2_stiffness_over_pi,
+        "contact.stiffness": eq2_stiffness_over_pi,
     },
 }
 
@@ -357,7 +266,9 @@ def run_cases(
     -------
     summaries : dict
         Per case, the ``run --json`` summary plus ``peak`` [m], ``width`` [deg],
-        ``mass`` [kg] and ``budget`` (:func:`wear_budget`).
+        ``mass`` [kg], ``contour_update`` (whether the contour was updated; without,
+        ``contour_updates`` counts the saved profiles of the scaled revolution) and
+        ``budget`` (:func:`wear_budget`).
     results : dict
         Per case, the :class:`~jointwear.simulation.WearResult`.
     """
@@ -370,7 +281,10 @@ def run_cases(
             progress(name, i, len(names))
         result = Simulation(case_config(name, overrides)).run()
         summary = result.summary()
-        summary.update(zip(("peak", "width", "mass"), _metrics(summary), strict=True))
+        summary["peak"] = summary["peak_wear_depth_m"]
+        summary["width"] = summary["wear_width_deg"]
+        summary["mass"] = summary["wear_mass_kg"]
+        summary["contour_update"] = bool(result.config.simulation.update_contour)
         summary["budget"] = wear_budget(result)
         summaries[name] = summary
         results[name] = result
@@ -466,7 +380,7 @@ def sensitivity(
         resolved = {k: v(base_config) if callable(v) else v for k, v in variant.items()}
         base = {**(overrides or {}), **resolved}
         free = [p for p in CALIBRATION_PARAMETERS if p.key not in resolved]
-        calibration = calibrate_on_paper(base, free)
+        calibration = calibrate_paper_row(parameters=free, overrides=base, metrics=len(free))
         summaries, _ = run_cases(names, {**base, **calibration.values})
         out.append(variant_record(label, resolved, calibration.values, summaries))
     return out
@@ -575,7 +489,7 @@ def reproduce(
     overrides_in = dict(overrides)
     calibration = None
     if calibrate:
-        calibration = calibrate_on_paper(overrides)
+        calibration = calibrate_paper_row(overrides=overrides)
         overrides.update(calibration.values)
     names = cases or case_names()
     summaries, results = run_cases(names, overrides, progress)
@@ -597,7 +511,7 @@ def reproduce(
         )
         variants = [default, *sensitivity(overrides_in, names)]
     feedback = feedback_study(overrides) if with_sensitivity else None
-    from jointwear.report import figures, write_report
+    from jointwear.paper.report import figures, write_report
 
     figure_paths = figures(datasets, out / "figures")
     report = {
@@ -619,24 +533,5 @@ def reproduce(
         f"Python {platform.python_version()}",
     }
     write_report(report, out / "report.md", figure_paths)
-    from jointwear.io import write_json
-
-    write_json(out / "report.json", _jsonable(report))
+    write_json(out / "report.json", json_ready(report))
     return report
-
-
-def _jsonable(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {k: _jsonable(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_jsonable(v) for v in value]
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    if isinstance(value, np.generic):
-        return value.item()
-    return value
-
-
-def deviation(ours: float, paper: float) -> float:
-    """Relative deviation ``ours / paper - 1`` [-]."""
-    return ours / paper - 1.0
