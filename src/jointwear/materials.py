@@ -44,6 +44,7 @@ __all__ = [
     "WEAR_FORMS",
     "Material",
     "check_wear_forms",
+    "display_unit",
     "get_material",
     "library",
     "merge_material",
@@ -85,7 +86,7 @@ PROPERTY_KEYS: tuple[str, ...] = tuple(KINDS)
 DISPLAY_UNITS: dict[str, str] = {
     "youngs_modulus": "GPa",
     "poisson_ratio": "",
-    "density": "kg/m^3",
+    "density": "g/cm^3",
     "wear_coefficient": "m^2/N",
     "specific_wear_rate": "mm^3/(N*m)",
     "wear_factor_k": "",
@@ -149,15 +150,29 @@ class Material:
             "sources": dict(self.sources),
         }
 
-    def display(self, key: str) -> str:
-        """A value in its display unit, e.g. ``"100 GPa"`` (``""`` if not given)."""
+    def display(self, key: str, unit: bool = True) -> str:
+        """A value in its display unit, e.g. ``"100 GPa"`` (``""`` if not given).
+
+        Parameters
+        ----------
+        key : str
+            A key of :data:`PROPERTY_KEYS`.
+        unit : bool
+            Append the unit.
+        """
         value = self.si(key)
         if value is None:
             return ""
-        unit = DISPLAY_UNITS[key]
-        if not unit:
+        display = DISPLAY_UNITS[key]
+        if not display:
             return f"{value:.3g}"
-        return format_quantity(value, unit, digits=3).replace("*", " ").replace("^", "")
+        text = format_quantity(value, display, digits=3)
+        return text if unit else text.split(" ", 1)[0]
+
+
+def display_unit(key: str) -> str:
+    """The display unit of a material key as plain text (``"MPa m/s"``)."""
+    return DISPLAY_UNITS[key].replace("*", " ").replace("^", "")
 
 
 def _read_library() -> dict[str, Material]:
