@@ -393,33 +393,29 @@ class MaterialConfig(_Section):
         return self
 
 
-#: a material: a library name, or a table (optionally naming a base material)
+#: marks a section that is also set as a whole: a library name, or a table
 _NAMED = {"material": "a library name or a table"}
+
+
+def _material(part: str) -> BeforeValidator:
+    """Resolve a library name (``"bronze"``, or a table with ``name``) into the table."""
+
+    def resolve(value: Any) -> Any:
+        from jointwear.materials import resolve_material
+
+        try:
+            return resolve_material(value, f"materials.{part}", wear=part == "bushing")
+        except ConfigError as exc:
+            raise ValueError(str(exc)) from None
+
+    return BeforeValidator(resolve)
 
 
 class MaterialsConfig(_Section):
     """The pin's and the bushing's material (a library name or a table each)."""
 
-    pin: MaterialConfig = Field(json_schema_extra=_NAMED)
-    bushing: MaterialConfig = Field(json_schema_extra=_NAMED)
-
-    @model_validator(mode="before")
-    @classmethod
-    def _named(cls, data: Any) -> Any:
-        if not isinstance(data, Mapping):
-            return data
-        from jointwear.materials import resolve_material
-
-        out = dict(data)
-        for part in ("pin", "bushing"):
-            if part in out:
-                try:
-                    out[part] = resolve_material(
-                        out[part], f"materials.{part}", wear=part == "bushing"
-                    )
-                except ConfigError as exc:
-                    raise ValueError(str(exc)) from None
-        return out
+    pin: Annotated[MaterialConfig, _material("pin"), Field(json_schema_extra=_NAMED)]
+    bushing: Annotated[MaterialConfig, _material("bushing"), Field(json_schema_extra=_NAMED)]
 
     @model_validator(mode="after")
     def _bushing_complete(self) -> MaterialsConfig:

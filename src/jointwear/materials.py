@@ -166,8 +166,8 @@ class Material:
         display = DISPLAY_UNITS[key]
         if not display:
             return f"{value:.3g}"
-        text = format_quantity(value, display, digits=3)
-        return text if unit else text.split(" ", 1)[0]
+        number = format_quantity(value, display, digits=3).split(" ", 1)[0]
+        return f"{number} {display_unit(key)}" if unit else number
 
 
 def display_unit(key: str) -> str:
@@ -339,7 +339,8 @@ def resolve_material(raw: Any, key: str, wear: bool = True) -> Any:
     wear : bool
         Take the library's wear coefficient (the bushing). A named pin takes its elastic
         data only: a wear coefficient belongs to a pair of materials, and the pin wears
-        only where its table gives one.
+        only where its table gives a wear key (``wear_factor_k`` then takes the library's
+        ``hardness``).
 
     Raises
     ------
@@ -359,9 +360,9 @@ def resolve_material(raw: Any, key: str, wear: bool = True) -> Any:
     else:
         material = get_material(name, where)
         base = dict(material.values)
-        if not wear:
-            base = {k: v for k, v in base.items() if k not in WEAR_KEYS}
         overrides = {k: v for k, v in raw.items() if k != "name" and v is not None}
+        if not wear and not wear_forms(overrides):
+            base = {k: v for k, v in base.items() if k not in WEAR_KEYS}
         table = {"name": name, **merge_material(base, overrides)}
     check_wear_forms(table, key)
     return table

@@ -42,8 +42,9 @@ def materials(
     if name is not None:
         material = entries[0]
         table = Table(title=escape(f"{material.name}: {material.description}"))
-        for column in ("key", "value", "as given", "source"):
-            table.add_column(column)
+        for column in ("key", "value", "as given"):
+            table.add_column(column, no_wrap=True)
+        table.add_column("source")
         for key, value in material.values.items():
             table.add_row(key, material.display(key), str(value), material.sources[key])
         if "wear_coefficient" not in material.values:
@@ -52,7 +53,7 @@ def materials(
         console.print(table)
         return
     table = Table(title=escape('materials library ([materials] bushing = "NAME")'))
-    table.add_column("name")
+    table.add_column("name", no_wrap=True)
     for key, header in COLUMNS:
         unit = display_unit(key)
         table.add_column(escape(f"{header} [{unit}]" if unit else header), justify="right")
