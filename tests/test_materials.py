@@ -22,8 +22,17 @@ from jointwear.materials import (
 from jointwear.parameter_sets import get_parameter_set
 from jointwear.sweep import expand_sweep
 
-REQUIRED = {"ptfe", "ptfe-glass", "ptfe-fabric", "pom", "pa66", "uhmwpe", "bronze", "steel",
-            "alumina"}
+REQUIRED = {
+    "ptfe",
+    "ptfe-glass",
+    "ptfe-fabric",
+    "pom",
+    "pa66",
+    "uhmwpe",
+    "bronze",
+    "steel",
+    "alumina",
+}
 
 
 def raw_library() -> dict:
@@ -35,7 +44,7 @@ def raw_library() -> dict:
 
 
 def test_library_has_the_materials_a_designer_expects():
-    assert REQUIRED <= set(library())
+    assert set(library()) >= REQUIRED
 
 
 def test_every_value_has_a_source():
@@ -77,10 +86,13 @@ def test_bearing_datasheet_values_are_the_published_ones():
     assert get_material("bronze").si("max_pv") == pytest.approx(2.625e6)
     assert get_material("pa66").si("max_pv") == pytest.approx(0.105e6)
     # polymers are two orders softer than metals; PTFE wears far faster than filled PTFE
-    assert get_material("ptfe").si("youngs_modulus") < get_material("bronze").si(
-        "youngs_modulus") / 100
+    assert (
+        get_material("ptfe").si("youngs_modulus")
+        < get_material("bronze").si("youngs_modulus") / 100
+    )
     assert get_material("ptfe").si("wear_coefficient") > 10 * get_material("ptfe-glass").si(
-        "wear_coefficient")
+        "wear_coefficient"
+    )
 
 
 def test_ptfe_is_the_papers_default_bushing_exactly():
@@ -128,10 +140,11 @@ def test_name_with_overrides_and_no_defaults_leaking_in(tmp_path):
     [
         ({"materials.bushing.specific_wear_rate": "1e-6 mm^3/(N m)"}, 1e-15),
         ({"materials.bushing.specific_wear_rate": "1e-6 mm**3/(N*m)"}, 1e-15),
-        ({"materials.bushing.wear_factor_k": 1e-4, "materials.bushing.hardness": "200 MPa"},
-         5e-13),
-        ({"materials.bushing": "bronze", "materials.bushing.wear_coefficient": "3e-15 m^2/N"},
-         3e-15),
+        ({"materials.bushing.wear_factor_k": 1e-4, "materials.bushing.hardness": "200 MPa"}, 5e-13),
+        (
+            {"materials.bushing": "bronze", "materials.bushing.wear_coefficient": "3e-15 m^2/N"},
+            3e-15,
+        ),
     ],
 )
 def test_wear_forms_convert_to_k_d(paper_config_path, overrides, expected):
@@ -141,8 +154,9 @@ def test_wear_forms_convert_to_k_d(paper_config_path, overrides, expected):
 
 
 def test_the_pin_wears_only_where_its_table_gives_a_wear_form(paper_config_path):
-    cfg = load_config(paper_config_path, {"materials.pin": "steel",
-                                          "materials.pin.wear_factor_k": 1e-6})
+    cfg = load_config(
+        paper_config_path, {"materials.pin": "steel", "materials.pin.wear_factor_k": 1e-6}
+    )
     assert cfg.materials.pin.wear_coefficient == pytest.approx(1e-6 / 7.5e9)
 
 
@@ -160,8 +174,10 @@ def test_two_wear_forms_in_one_table_are_refused(tmp_path):
 @pytest.mark.parametrize(
     ("override", "message"),
     [
-        ("materials.bushing=bronz", "materials.bushing: unknown material 'bronz'; did you mean "
-                                    "'bronze'?"),
+        (
+            "materials.bushing=bronz",
+            "materials.bushing: unknown material 'bronz'; did you mean 'bronze'?",
+        ),
         ("materials.bushing.name=pomm", "materials.bushing.name: unknown material 'pomm'"),
         ("materials.bushing.wear_factor_k=1e-4", "materials.bushing.hardness: missing"),
         ("materials.bushing.hardness=1e9", "materials.bushing.wear_factor_k: missing"),
@@ -187,8 +203,14 @@ def test_keys_resolve_for_set_sweeps_and_calibration():
 
 
 def test_to_toml_round_trips_named_and_overridden_materials(paper_config_path):
-    cfg = load_config(paper_config_path, ["materials.bushing=bronze", "materials.pin=steel",
-                                          "materials.bushing.youngs_modulus=105 GPa"])
+    cfg = load_config(
+        paper_config_path,
+        [
+            "materials.bushing=bronze",
+            "materials.pin=steel",
+            "materials.bushing.youngs_modulus=105 GPa",
+        ],
+    )
     again = config_from_dict(tomllib.loads(cfg.to_toml()))
     assert again.materials == cfg.materials
     assert again.to_dict() == cfg.to_dict()
@@ -209,7 +231,9 @@ def test_merge_material_rules():
     assert merge_material(base, {"name": "pom"}) == {"name": "pom"}
     assert merge_material("pom", {"density": 3}) == {"name": "pom", "density": 3}
     assert merge_material(base, {"specific_wear_rate": 3.0}) == {
-        "youngs_modulus": 1.0, "specific_wear_rate": 3.0}
+        "youngs_modulus": 1.0,
+        "specific_wear_rate": 3.0,
+    }
     # the two keys of k/H keep each other
     both = merge_material(merge_material(base, {"wear_factor_k": 1e-4}), {"hardness": 1e9})
     assert both == {"youngs_modulus": 1.0, "wear_factor_k": 1e-4, "hardness": 1e9}

@@ -379,8 +379,10 @@ class MaterialConfig(_Section):
     def _one_wear_form(self) -> MaterialConfig:
         from jointwear.materials import wear_coefficient
 
-        values = {k: getattr(self, k) for k in ("wear_coefficient", "specific_wear_rate",
-                                                "wear_factor_k", "hardness")}
+        values = {
+            k: getattr(self, k)
+            for k in ("wear_coefficient", "specific_wear_rate", "wear_factor_k", "hardness")
+        }
         try:
             coefficient = wear_coefficient(values, "§")
         except ConfigError as exc:

@@ -143,8 +143,13 @@ class Material:
             "description": self.description,
             **{
                 key: self.si(key)
-                for key in ("youngs_modulus", "poisson_ratio", "density", "wear_coefficient",
-                            *LIMIT_KEYS)
+                for key in (
+                    "youngs_modulus",
+                    "poisson_ratio",
+                    "density",
+                    "wear_coefficient",
+                    *LIMIT_KEYS,
+                )
             },
             "values": dict(self.values),
             "sources": dict(self.sources),
@@ -185,10 +190,15 @@ def _read_library() -> dict[str, Material]:
         for key, entry in table.items():
             if key == "description":
                 continue
-            if key not in KINDS or not isinstance(entry, Mapping) or set(entry) != {
-                "value",
-                "source",
-            }:
+            if (
+                key not in KINDS
+                or not isinstance(entry, Mapping)
+                or set(entry)
+                != {
+                    "value",
+                    "source",
+                }
+            ):
                 raise ConfigError(
                     f"materials library: {name}.{key}: expected a known key with "
                     "{ value = ..., source = ... }"
@@ -196,7 +206,9 @@ def _read_library() -> dict[str, Material]:
             values[key] = entry["value"]
             sources[key] = str(entry["source"])
         material = Material(
-            name, str(table.get("description", "")), MappingProxyType(values),
+            name,
+            str(table.get("description", "")),
+            MappingProxyType(values),
             MappingProxyType(sources),
         )
         for key in values:

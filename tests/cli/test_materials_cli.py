@@ -43,8 +43,18 @@ def test_run_reports_pv_against_the_bronze_limit(paper_config_path, capsys):
 
 
 def test_run_warns_in_one_line_when_a_limit_is_exceeded(paper_config_path, capsys):
-    main(["run", str(paper_config_path), *FAST, "--set", "materials.bushing=ptfe",
-          "--set", "materials.bushing.max_pv=0.001 MPa*m/s", "--json"])
+    main(
+        [
+            "run",
+            str(paper_config_path),
+            *FAST,
+            "--set",
+            "materials.bushing=ptfe",
+            "--set",
+            "materials.bushing.max_pv=0.001 MPa*m/s",
+            "--json",
+        ]
+    )
     captured = capsys.readouterr()
     assert json.loads(captured.out)["checks"]["pv"]["ok"] is False
     lines = captured.err.splitlines()

@@ -35,8 +35,11 @@ CASES: list[Bad] = [
         "material-two-wear-forms",
         "config",
         ["run", "{tmp}/two.toml"],
-        ["materials.bushing", "give one of wear_coefficient, specific_wear_rate",
-         "not wear_coefficient and specific_wear_rate"],
+        [
+            "materials.bushing",
+            "give one of wear_coefficient, specific_wear_rate",
+            "not wear_coefficient and specific_wear_rate",
+        ],
         {"two.toml": TWO_FORMS},
     ),
     Bad(
@@ -60,8 +63,14 @@ CASES: list[Bad] = [
     Bad(
         "material-misspelt-key",
         "config",
-        ["run", "{paper}", "--set", "materials.bushing=bronze",
-         "--set", "materials.bushing.specifc_wear_rate=1e-15"],
+        [
+            "run",
+            "{paper}",
+            "--set",
+            "materials.bushing=bronze",
+            "--set",
+            "materials.bushing.specifc_wear_rate=1e-15",
+        ],
         ["materials.bushing.specifc_wear_rate", "did you mean 'specific_wear_rate'"],
     ),
     Bad(
@@ -75,8 +84,10 @@ CASES: list[Bad] = [
         "sweep",
         ["sweep", "{tmp}/s.toml", "--out", "{out}"],
         ["s.toml", "materials.bushing = 'brnze'", "did you mean 'bronze'"],
-        {"s.toml": sweep_toml('[grid]\n"materials.bushing" = ["bronze", "brnze"]\n'),
-         "tiny.toml": "@tiny"},
+        {
+            "s.toml": sweep_toml('[grid]\n"materials.bushing" = ["bronze", "brnze"]\n'),
+            "tiny.toml": "@tiny",
+        },
     ),
 ]
 

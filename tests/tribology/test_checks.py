@@ -46,12 +46,18 @@ def oscillating():
     # sinusoidal swing A sin(2 pi f t) under a constant load F (steps a multiple of 4, so
     # the turning points are step boundaries and the sliding per cycle is exactly 4 A R_p)
     load, amplitude, frequency = 1500.0, math.radians(25), 0.25
-    cfg = load_config(overrides={
-        "mechanism.type": "oscillating", "mechanism.load": load,
-        "mechanism.amplitude": amplitude, "mechanism.frequency": frequency,
-        "contact.model": "winkler", "contact.nodes": 120,
-        "simulation.steps_per_revolution": 400, "materials.bushing": "ptfe-fabric",
-    })
+    cfg = load_config(
+        overrides={
+            "mechanism.type": "oscillating",
+            "mechanism.load": load,
+            "mechanism.amplitude": amplitude,
+            "mechanism.frequency": frequency,
+            "contact.model": "winkler",
+            "contact.nodes": 120,
+            "simulation.steps_per_revolution": 400,
+            "materials.bushing": "ptfe-fabric",
+        }
+    )
     result = Simulation(cfg).run()
     return cfg, result, (load, amplitude, frequency)
 
@@ -63,9 +69,11 @@ def test_oscillating_bearing_pv_is_the_closed_form(oscillating):
     # mean PV = F / (2 R_p b) * 4 A f R_p = 2 F A f / b; largest = F / (2 R_p b) * 2 pi f A R_p
     assert checks["pv"]["value"] == pytest.approx(2 * load * amplitude * frequency / b, rel=1e-9)
     assert checks["pv_max"]["value"] == pytest.approx(
-        math.pi * load * amplitude * frequency / b, rel=2e-4)
+        math.pi * load * amplitude * frequency / b, rel=2e-4
+    )
     assert checks["sliding_speed"]["value"] == pytest.approx(
-        2 * math.pi * frequency * amplitude * cfg.joint.pin_radius, rel=2e-4)
+        2 * math.pi * frequency * amplitude * cfg.joint.pin_radius, rel=2e-4
+    )
     # the local peak carries the load on less than the projected area
     assert checks["peak_pressure"]["value"] >= checks["nominal_pressure"]["value"]
     assert checks["pv_peak_local"]["value"] >= checks["pv"]["value"]
@@ -79,8 +87,14 @@ def material(**limits):
     return SimpleNamespace(name="bronze", **{k: limits.get(k) for k in keys})
 
 
-VALUES = {"nominal_pressure": 1e6, "peak_pressure": 5e6, "sliding_speed": 0.1,
-          "pv": 1e5, "pv_max": 2e5, "pv_peak_local": 5e5}
+VALUES = {
+    "nominal_pressure": 1e6,
+    "peak_pressure": 5e6,
+    "sliding_speed": 0.1,
+    "pv": 1e5,
+    "pv_max": 2e5,
+    "pv_peak_local": 5e5,
+}
 
 
 def test_warns_once_per_exceeded_limit():

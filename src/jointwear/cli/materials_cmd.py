@@ -35,9 +35,7 @@ def materials(
 
     entries = [get_material(name, "NAME")] if name is not None else list(library().values())
     if json_:
-        emit_json(
-            {"units": material_units(), "materials": {m.name: m.summary() for m in entries}}
-        )
+        emit_json({"units": material_units(), "materials": {m.name: m.summary() for m in entries}})
         return
     if name is not None:
         material = entries[0]
@@ -48,8 +46,12 @@ def materials(
         for key, value in material.values.items():
             table.add_row(key, material.display(key), str(value), material.sources[key])
         if "wear_coefficient" not in material.values:
-            table.add_row("wear_coefficient", material.display("wear_coefficient"), "",
-                          "from the wear form above")
+            table.add_row(
+                "wear_coefficient",
+                material.display("wear_coefficient"),
+                "",
+                "from the wear form above",
+            )
         console.print(table)
         return
     table = Table(title=escape('materials library ([materials] bushing = "NAME")'))
