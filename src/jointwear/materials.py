@@ -136,6 +136,10 @@ class Material:
             return None
         return to_si(self.values[key], KINDS[key], f"materials library: {self.name}.{key}")
 
+    def limits(self) -> dict[str, float | None]:
+        """The datasheet limits [SI], ``None`` where not published."""
+        return {key: self.si(key) for key in LIMIT_KEYS}
+
     def summary(self) -> dict[str, Any]:
         """Plain data: SI values (``K_d`` resolved), limits, and the sources."""
         return {

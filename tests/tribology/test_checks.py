@@ -84,7 +84,7 @@ def test_oscillating_bearing_pv_is_the_closed_form(oscillating):
 
 def material(**limits):
     keys = ("max_static_pressure", "max_dynamic_pressure", "max_pv", "max_sliding_speed")
-    return SimpleNamespace(name="bronze", **{k: limits.get(k) for k in keys})
+    return SimpleNamespace(**{k: limits.get(k) for k in keys})
 
 
 VALUES = {
@@ -99,7 +99,9 @@ VALUES = {
 
 def test_warns_once_per_exceeded_limit():
     with pytest.warns(MaterialLimitWarning, match=r"materials\.bushing\.max_pv: .*PV") as record:
-        checks = compare_with_limits(VALUES, material(max_pv=0.9e5, max_sliding_speed=1.0))
+        checks = compare_with_limits(
+            VALUES, material(max_pv=0.9e5, max_sliding_speed=1.0), "bronze"
+        )
     assert len(record) == 1
     assert "'bronze'" in str(record[0].message)
     assert checks["pv"]["ok"] is False
@@ -110,7 +112,7 @@ def test_no_warning_within_the_limits_or_without_limits():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         within = compare_with_limits(VALUES, material(max_pv=1e5, max_static_pressure=5e6))
-        unknown = compare_with_limits(VALUES, material())
+        unknown = compare_with_limits(VALUES, {})
     assert within["pv"]["ok"] is True  # the limit itself is allowed
     assert within["peak_pressure"]["ok"] is True
     assert all(entry["ok"] is None for entry in unknown.values())

@@ -19,11 +19,14 @@ from __future__ import annotations
 
 import math
 import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
+
+from jointwear.materials import LIMIT_KEYS
 
 __all__ = [
     "CHECKS",
@@ -419,7 +422,11 @@ def _display(value: float, unit: str) -> str:
 
 
 def compare_with_limits(
-    values: dict[str, float], material: Any, where: str = "", warn: bool = True
+    values: dict[str, float],
+    limits: Any,
+    name: str | None = None,
+    where: str = "",
+    warn: bool = True,
 ) -> dict[str, dict[str, Any]]:
     """The ``checks`` object: each value with its limit, unit and verdict.
 
@@ -427,8 +434,10 @@ def compare_with_limits(
     ----------
     values : dict
         :func:`operating_values` (SI).
-    material : jointwear.config.MaterialConfig
-        The bushing material; its ``max_*`` keys are the limits (``None``: none known).
+    limits : mapping or jointwear.config.MaterialConfig
+        The bushing material's ``max_*`` values [SI] (missing or ``None``: none known).
+    name : str, optional
+        The material's library name, for warnings.
     where : str
         Names the joint in warnings (e.g. ``"joint 'rod-slider': "``).
     warn : bool
@@ -442,11 +451,12 @@ def compare_with_limits(
     """
     from jointwear.errors import MaterialLimitWarning
 
-    name = getattr(material, "name", None)
+    if not isinstance(limits, Mapping):
+        limits = {key: getattr(limits, key, None) for key in LIMIT_KEYS}
     out: dict[str, dict[str, Any]] = {}
     for key, check in CHECKS.items():
         value = values[key]
-        limit = getattr(material, check.limit_key, None) if check.limit_key else None
+        limit = limits.get(check.limit_key) if check.limit_key else None
         ok = None if limit is None or not math.isfinite(value) else bool(value <= limit)
         out[key] = {
             "value": value,
@@ -470,7 +480,13 @@ def compare_with_limits(
     return out
 
 
-def engineering_checks(dataset: Any, config: Any, warn: bool = True) -> dict[str, dict[str, Any]]:
+def engineering_checks(
+    dataset: Any,
+    config: Any,
+    warn: bool = True,
+    limits: Mapping[str, float | None] | None = None,
+    name: str | None = None,
+) -> dict[str, dict[str, Any]]:
     """The :data:`CHECKS` of a single-joint result dataset against the bushing's limits.
 
     Parameters
@@ -481,6 +497,10 @@ def engineering_checks(dataset: Any, config: Any, warn: bool = True) -> dict[str
         Uses ``joint.pin_radius``, ``joint.axial_length`` and ``materials.bushing``.
     warn : bool
         Warn for each exceeded limit.
+    limits : mapping, optional
+        ``max_*`` values [SI] to compare with instead of ``materials.bushing``'s.
+    name : str, optional
+        The material named in warnings (default ``materials.bushing.name``).
     """
     time = np.asarray(dataset["time"].values, dtype=float)
     period = float(dataset.attrs["period_s"])
@@ -500,4 +520,7 @@ def engineering_checks(dataset: Any, config: Any, warn: bool = True) -> dict[str
     )
     joint = dataset.attrs.get("joint")
     where = f"joint {joint!r}: " if joint and len(config.joints) > 1 else ""
-    return compare_with_limits(values, config.materials.bushing, where, warn)
+    bushing = config.materials.bushing
+    return compare_with_limits(
+        values, bushing if limits is None else limits, name or bushing.name, where, warn
+    )
