@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import tomllib
 from importlib.resources import files
+from pathlib import Path
 
 import pytest
 from pydantic.fields import FieldInfo
@@ -17,6 +18,7 @@ from jointwear.materials import (
     WEAR_FORMS,
     get_material,
     library,
+    markdown,
     merge_material,
 )
 from jointwear.parameter_sets import get_parameter_set
@@ -104,6 +106,13 @@ def test_ptfe_is_the_papers_default_bushing_exactly():
     default = load_config().materials.bushing
     for key in ("youngs_modulus", "poisson_ratio", "density", "wear_coefficient"):
         assert getattr(named, key) == getattr(default, key)
+
+
+def test_docs_page_shows_the_library_as_it_is():
+    page = Path(__file__).resolve().parents[1] / "docs" / "materials.md"
+    assert markdown() in page.read_text(encoding="utf-8"), (
+        "docs/materials.md is out of date: paste jointwear.materials.markdown() into it"
+    )
 
 
 # ---------------------------------------------------------------- config

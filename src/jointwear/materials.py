@@ -384,6 +384,41 @@ def resolve_material(raw: Any, key: str, wear: bool = True) -> Any:
     return table
 
 
+#: the overview columns of the library: key, header
+OVERVIEW: tuple[tuple[str, str], ...] = (
+    ("youngs_modulus", "E"),
+    ("poisson_ratio", "ν"),
+    ("density", "ρ"),
+    ("wear_coefficient", "K_d"),
+    ("max_static_pressure", "p static"),
+    ("max_dynamic_pressure", "p max"),
+    ("max_pv", "PV max"),
+    ("max_sliding_speed", "v max"),
+)
+
+
+def markdown() -> str:
+    """The library as markdown: an overview table, then every value with its source."""
+
+    def header(key: str, text: str) -> str:
+        unit = display_unit(key)
+        return f"{text} [{unit}]" if unit else text
+
+    lines = [
+        "| name | " + " | ".join(header(k, h) for k, h in OVERVIEW) + " |",
+        "|---|" + "---|" * len(OVERVIEW),
+    ]
+    for m in library().values():
+        cells = [m.display(k, unit=False) or "—" for k, _ in OVERVIEW]
+        lines.append(f"| `{m.name}` | " + " | ".join(cells) + " |")
+    for m in library().values():
+        lines += ["", f"**`{m.name}`**: {m.description}", ""]
+        for key, value in m.values.items():
+            shown = f'"{value}"' if isinstance(value, str) else value
+            lines.append(f"- `{key} = {shown}`: {m.sources[key]}")
+    return "\n".join(lines) + "\n"
+
+
 def material_units() -> dict[str, str]:
     """SI unit of each material value (``units.DIMENSIONS`` spelling)."""
     return {key: DIMENSIONS[kind] for key, kind in KINDS.items()}

@@ -10,17 +10,6 @@ from rich.table import Table
 
 from jointwear.cli.common import JsonOpt, app, console, emit_json
 
-#: columns of the overview: key, header
-COLUMNS: tuple[tuple[str, str], ...] = (
-    ("youngs_modulus", "E"),
-    ("poisson_ratio", "ν"),
-    ("density", "ρ"),
-    ("wear_coefficient", "K_d"),
-    ("max_dynamic_pressure", "p max"),
-    ("max_pv", "PV max"),
-    ("max_sliding_speed", "v max"),
-)
-
 
 @app.command()
 def materials(
@@ -31,7 +20,7 @@ def materials(
     json_: JsonOpt = False,
 ) -> None:
     """List the materials library ([materials] bushing = "NAME"): values, limits, sources."""
-    from jointwear.materials import display_unit, get_material, library, material_units
+    from jointwear.materials import OVERVIEW, display_unit, get_material, library, material_units
 
     entries = [get_material(name, "NAME")] if name is not None else list(library().values())
     if json_:
@@ -56,12 +45,12 @@ def materials(
         return
     table = Table(title=escape('materials library ([materials] bushing = "NAME")'))
     table.add_column("name", no_wrap=True)
-    for key, header in COLUMNS:
+    for key, header in OVERVIEW:
         unit = display_unit(key)
         table.add_column(escape(f"{header} [{unit}]" if unit else header), justify="right")
     table.add_column("description")
     for material in entries:
-        cells = [material.display(key, unit=False) for key, _ in COLUMNS]
+        cells = [material.display(key, unit=False) for key, _ in OVERVIEW]
         table.add_row(material.name, *cells, material.description)
     console.print(table)
     console.print("Sources of every value: `jointwear materials NAME` (or --json).")
