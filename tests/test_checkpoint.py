@@ -24,6 +24,7 @@ from jointwear.checkpoint import (
     write_state,
 )
 from jointwear.cli import main
+from jointwear.cli.run_cmd import add_checks
 from jointwear.errors import DataError
 from jointwear.results import read_result
 from jointwear.state import Log
@@ -270,6 +271,7 @@ def test_sigkill_then_resume_gives_the_uninterrupted_numbers(tmp_path, capsys):
 
     reference = Simulation(load_config(UPDATE_CONFIG, overrides)).run()
     expected = reference.summary()
+    add_checks(expected, reference)  # `run --json` adds the material checks
     for key in ("runtime_s",):
         expected.pop(key), summary.pop(key)
     assert summary == expected

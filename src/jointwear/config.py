@@ -84,6 +84,7 @@ Acceleration = Annotated[float, _si("acceleration"), Field(ge=0)]
 Density = Annotated[float, _si("density"), Field(gt=0)]
 WearCoefficient = Annotated[float, _si("wear_coefficient"), Field(ge=0)]
 PoissonRatio = Annotated[float, _si("dimensionless"), Field(gt=-1.0, lt=0.5)]
+OptionalPressure = Annotated[Annotated[float, Field(gt=0)] | None, _si("pressure")]
 Inertia = Annotated[Annotated[float, Field(ge=0)] | None, _si("moment_of_inertia")]
 
 
@@ -346,17 +347,77 @@ class JointConfig(_Section):
 
 
 class MaterialConfig(_Section):
-    """Elastic (and, for the bushing, wear) properties of one body."""
+    """Elastic (and, for the bushing, wear) properties of one body, and its datasheet limits.
 
+    ``name`` is a material of the library (:mod:`jointwear.materials`) whose values the
+    other keys override. Wear comes as ``wear_coefficient`` (``K_d`` [m^2/N]),
+    ``specific_wear_rate`` ([mm^3/(N m)], the same dimension) or ``wear_factor_k`` with
+    ``hardness`` (``K_d = k / H``), one of them; the last three are read into
+    ``wear_coefficient`` and not written back out.
+    """
+
+    name: str | None = None
     youngs_modulus: Pressure
     poisson_ratio: PoissonRatio
     density: Density | None = None
     wear_coefficient: WearCoefficient | None = None
+    specific_wear_rate: Annotated[
+        Annotated[float, Field(ge=0)] | None, _si("wear_coefficient"), Field(exclude=True)
+    ] = None
+    wear_factor_k: Annotated[
+        Annotated[float, Field(ge=0)] | None, _si("dimensionless"), Field(exclude=True)
+    ] = None
+    hardness: Annotated[
+        Annotated[float, Field(gt=0)] | None, _si("pressure"), Field(exclude=True)
+    ] = None
+    max_static_pressure: OptionalPressure = None
+    max_dynamic_pressure: OptionalPressure = None
+    max_pv: Annotated[Annotated[float, Field(gt=0)] | None, _si("pressure_velocity")] = None
+    max_sliding_speed: Annotated[Annotated[float, Field(gt=0)] | None, _si("velocity")] = None
+
+    @model_validator(mode="after")
+    def _one_wear_form(self) -> MaterialConfig:
+        from jointwear.materials import wear_coefficient
+
+        values = {
+            k: getattr(self, k)
+            for k in ("wear_coefficient", "specific_wear_rate", "wear_factor_k", "hardness")
+        }
+        try:
+            coefficient = wear_coefficient(values, "§")
+        except ConfigError as exc:
+            raise ValueError(str(exc).removeprefix("§: ").removeprefix("§.")) from None
+        # the other forms are read into K_d and not kept, so that a config equals the one
+        # read back from its TOML (the model is frozen once validated)
+        object.__setattr__(self, "wear_coefficient", coefficient)
+        for key in ("specific_wear_rate", "wear_factor_k", "hardness"):
+            object.__setattr__(self, key, None)
+        return self
+
+
+#: marks a section that is also set as a whole: a library name, or a table
+_NAMED = {"material": "a library name or a table"}
+
+
+def _material(part: str) -> BeforeValidator:
+    """Resolve a library name (``"bronze"``, or a table with ``name``) into the table."""
+
+    def resolve(value: Any) -> Any:
+        from jointwear.materials import resolve_material
+
+        try:
+            return resolve_material(value, f"materials.{part}", wear=part == "bushing")
+        except ConfigError as exc:
+            raise ValueError(str(exc)) from None
+
+    return BeforeValidator(resolve)
 
 
 class MaterialsConfig(_Section):
-    pin: MaterialConfig
-    bushing: MaterialConfig
+    """The pin's and the bushing's material (a library name or a table each)."""
+
+    pin: Annotated[MaterialConfig, _material("pin"), Field(json_schema_extra=_NAMED)]
+    bushing: Annotated[MaterialConfig, _material("bushing"), Field(json_schema_extra=_NAMED)]
 
     @model_validator(mode="after")
     def _bushing_complete(self) -> MaterialsConfig:
@@ -633,7 +694,8 @@ def key_field(dotted: str, mechanism: str | None = None) -> Any:
     Returns
     -------
     pydantic.fields.FieldInfo or type
-        The field of a key; the section model of a section.
+        The field of a key; the section model of a section (the field of a section
+        that can also be set as a whole, ``materials.bushing``).
 
     Raises
     ------
@@ -663,6 +725,8 @@ def key_field(dotted: str, mechanism: str | None = None) -> Any:
             raise ConfigError(f"{dotted}: {what}{suggest(part, known)}")
         info = fields[part]
         annotation = info.annotation
+        if i == len(parts) - 1 and _takes_a_name(info):
+            return info  # a section that is also set as a whole: materials.bushing = "bronze"
         if model is Config and part == "mechanism":
             model = _MECHANISM_UNION
         elif isinstance(annotation, type) and issubclass(annotation, BaseModel):
@@ -680,9 +744,15 @@ def is_section(dotted: str) -> bool:
     from pydantic.fields import FieldInfo
 
     try:
-        return not isinstance(key_field(dotted), FieldInfo)
+        found = key_field(dotted)
     except ConfigError:
         return False
+    return not isinstance(found, FieldInfo) or _takes_a_name(found)
+
+
+def _takes_a_name(info: Any) -> bool:
+    """True for a section field that also takes a value as a whole (a material name)."""
+    return isinstance(info.json_schema_extra, dict) and "material" in info.json_schema_extra
 
 
 # ---------------------------------------------------------------- loading
@@ -729,6 +799,8 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any] | Iterabl
     )
     for dotted, value in items:
         parts = dotted.split(".")
+        if _material_override(data, parts, value):
+            continue
         node = data
         for part in parts[:-1]:
             child = node.setdefault(part, {})
@@ -736,6 +808,39 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any] | Iterabl
                 raise ConfigError(f"{dotted}: {part!r} is a value, not a section")
             node = child
         node[parts[-1]] = value
+
+
+def _material_override(data: dict[str, Any], parts: list[str], value: Any) -> bool:
+    """Apply an override of ``materials.pin|bushing[.key]`` (True if it was one).
+
+    A name replaces the material's table; a key updates it (a named material becomes a
+    table naming it), and a wear form drops the others (:func:`materials.merge_material`).
+    """
+    if not (2 <= len(parts) <= 3 and parts[0] == "materials" and parts[1] in ("pin", "bushing")):
+        return False
+    from jointwear.materials import merge_material
+
+    materials = data.setdefault("materials", {})
+    if not isinstance(materials, dict):
+        raise ConfigError(f"{'.'.join(parts)}: 'materials' is a value, not a section")
+    update = value if len(parts) == 2 else {parts[2]: value}
+    materials[parts[1]] = merge_material(materials.get(parts[1], {}), update)
+    return True
+
+
+def _material_defaults(defaults: dict[str, Any], data: Mapping[str, Any]) -> dict[str, Any]:
+    """The parameter set's defaults under a config's materials: a named material drops
+    them, a wear form drops the defaults' other forms."""
+    given = data.get("materials")
+    if not isinstance(given, Mapping) or not isinstance(defaults.get("materials"), dict):
+        return defaults
+    from jointwear.materials import merge_material
+
+    out = copy.deepcopy(defaults)
+    for part in ("pin", "bushing"):
+        if part in given and part in out["materials"]:
+            out["materials"][part] = merge_material(out["materials"][part], given[part])
+    return out
 
 
 def _walk(loc: tuple[Any, ...]) -> tuple[tuple[Any, ...], Any]:
@@ -840,7 +945,7 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
         name = data.get("parameter_set", "nlcp-paper")
         if not isinstance(name, str):
             raise ConfigError(f"parameter_set: expected a name, got {name!r}")
-        data = _deep_merge(get_parameter_set(name, kind), data)
+        data = _deep_merge(_material_defaults(get_parameter_set(name, kind), data), data)
     try:
         return Config.model_validate(data)
     except ValidationError as exc:

@@ -14,6 +14,7 @@ __all__ = [
     "DataError",
     "GeometryError",
     "JointwearError",
+    "MaterialLimitWarning",
     "MechanismError",
     "WearFeedbackWarning",
     "WearThroughError",
@@ -61,6 +62,15 @@ class ContactLossWarning(UserWarning):
     The massless-link dynamics model assumes continuous contact; where the force
     reverses its results are not physical. ``dynamics.strict = true`` turns this
     warning into :class:`MechanismError`.
+    """
+
+
+class MaterialLimitWarning(UserWarning):
+    """The joint runs beyond a datasheet limit of its bushing material.
+
+    Nominal pressure, sliding speed or PV above the material's ``max_*`` values
+    (:mod:`jointwear.materials`): the wear coefficient measured below the limit does
+    not hold there (melting, creep, severe wear), so the predicted wear is optimistic.
     """
 
 

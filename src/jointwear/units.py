@@ -43,6 +43,7 @@ DIMENSIONS: dict[str, str] = {
     "angular_velocity": "rad/s",
     "angle": "rad",
     "velocity": "m/s",
+    "pressure_velocity": "Pa*m/s",
     "acceleration": "m/s**2",
     "density": "kg/m**3",
     "wear_coefficient": "1/Pa",

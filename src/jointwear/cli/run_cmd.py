@@ -112,6 +112,16 @@ def write_outputs(result, out: Path, plots: bool = True) -> None:
             plot_joints(result.dataset, staging / "plots")
 
 
+def add_checks(summary: dict, result) -> None:
+    """Add the engineering checks (PV, pressure, speed vs the bushing's limits) to a summary;
+    each exceeded limit warns once."""
+    from jointwear.tribology.metrics import engineering_checks
+
+    summary["checks"] = engineering_checks(result.joint_dataset(), result.config)
+    for joint, entry in summary.get("joints", {}).items():
+        entry["checks"] = engineering_checks(result.joint_dataset(joint), result.config)
+
+
 def summary_table(summary: dict, title: str) -> Table:
     table = Table(title=title)
     table.add_column("metric")
@@ -124,6 +134,10 @@ def summary_table(summary: dict, title: str) -> Table:
     table.add_row("revolutions", f"{summary['revolutions']}")
     table.add_row("contour updates", f"{summary['contour_updates']}")
     table.add_row("run time", f"{summary['runtime_s']:.3g} s")
+    pv = summary.get("checks", {}).get("pv")
+    if pv is not None:
+        limit = "no limit known" if pv["limit"] is None else f"limit {pv['limit'] / 1e6:.3g}"
+        table.add_row("PV (nominal, cycle mean)", f"{pv['value'] / 1e6:.3g} MPa m/s ({limit})")
     return table
 
 
@@ -242,6 +256,7 @@ def run(
     if checkpointer is not None:
         checkpointer.clear()
     summary = result.summary()
+    add_checks(summary, result)
     if json_:
         emit_json(summary)
     else:

@@ -289,9 +289,59 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
             rel = fig.relative_to(path.parent) if fig.is_relative_to(path.parent) else fig
             lines += [f"### {name}", "", f"![{name}]({rel.as_posix()})", ""]
 
+    lines += _material_check_lines(path.parent / "results")
     lines += ["## Notes", "", _NOTES]
     with atomic_write(path, encoding="utf-8") as handle:
         handle.write("\n".join(lines) + "\n")
+
+
+def _material_check_lines(results: Path) -> list[str]:
+    """The engineering checks of each case's results (``results/*.nc``) as a table.
+
+    Against the bushing's limits, or the library's ``ptfe`` where the config names no
+    limits (the paper's bushing is PTFE); an exceeded limit also warns.
+    """
+    from jointwear.materials import LIMIT_KEYS, get_material
+    from jointwear.results import config_of, read_result, select_joint
+    from jointwear.tribology.metrics import engineering_checks
+
+    paths = sorted(results.glob("*.nc")) if results.is_dir() else []
+    if not paths:
+        return []
+    lines = [
+        "## Engineering checks against the bushing material's limits",
+        "",
+        "Nominal pressure `F / (2 R_p b)`, sliding speed `R_p |dφ/dt|` and their product, the "
+        "datasheet PV, as a mean over the cycle; the limits are the bushing's "
+        "(`materials.bushing.max_*`), else the materials library's `ptfe` "
+        "(`jointwear materials ptfe`). The local peak pressure is shown for comparison.",
+        "",
+        "| case | nominal p max [MPa] | peak p [MPa] | v max [mm/s] | PV [MPa m/s] "
+        "| PV limit [MPa m/s] | within the limits |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for path in paths:
+        dataset = select_joint(read_result(path))
+        config = config_of(dataset)
+        bushing = config.materials.bushing
+        named = any(getattr(bushing, k) is not None for k in LIMIT_KEYS)
+        ptfe = get_material("ptfe")
+        checks = engineering_checks(
+            dataset,
+            config,
+            limits=None if named else ptfe.limits(),
+            name=bushing.name if named else ptfe.name,
+        )
+        verdicts = [c["ok"] for c in checks.values() if c["ok"] is not None]
+        limit = checks["pv"]["limit"]
+        lines.append(
+            f"| `{path.stem}` | {checks['nominal_pressure']['value'] / 1e6:.3g} "
+            f"| {checks['peak_pressure']['value'] / 1e6:.3g} "
+            f"| {checks['sliding_speed']['value'] * 1e3:.3g} | {checks['pv']['value'] / 1e6:.3g} "
+            f"| {'—' if limit is None else f'{limit / 1e6:.3g}'} "
+            f"| {('yes' if all(verdicts) else 'no') if verdicts else '—'} |"
+        )
+    return [*lines, ""]
 
 
 def _feedback_lines(feedback: dict[str, Any] | None) -> list[str]:

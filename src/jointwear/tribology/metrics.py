@@ -3,6 +3,12 @@
 All functions take a wear-depth profile on the equally spaced node grid
 ``theta_j = 2 pi j / N`` (radial growth of the bushing radius, [m]).
 
+:data:`CHECKS` are the engineering checks of a run against the bushing material's
+datasheet limits (:mod:`jointwear.materials`): nominal pressure, local peak pressure,
+sliding speed and PV; :func:`operating_values` computes them from a load cycle,
+:func:`engineering_checks` from a result dataset, warning
+(:class:`~jointwear.errors.MaterialLimitWarning`) where a limit is exceeded.
+
 :data:`WEAR_METRICS` is the one metric schema: the per-update record of a run,
 the result dataset, ``WearResult.summary()`` (``run --json``), the metrics CSV,
 sweeps and the life limits all take their names, units and descriptions from it,
@@ -12,18 +18,27 @@ and :func:`evaluate_metrics` computes every metric of a profile.
 from __future__ import annotations
 
 import math
+import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
+from jointwear.materials import LIMIT_KEYS
+
 __all__ = [
+    "CHECKS",
     "PIN_METRICS",
     "WEAR_METRICS",
+    "Check",
     "JointGeometry",
     "Metric",
+    "compare_with_limits",
+    "engineering_checks",
     "evaluate_metrics",
+    "operating_values",
     "pin_metrics",
     "removed_area",
     "wear_mass",
@@ -277,3 +292,237 @@ def wear_mass(removed_area: float, axial_length: float, density: float) -> float
         Density of the bushing material [kg/m^3].
     """
     return density * axial_length * removed_area
+
+
+# ---------------------------------------------------------------- engineering checks
+
+
+@dataclass(frozen=True)
+class Check:
+    """One engineering check of a run against a datasheet limit.
+
+    Attributes
+    ----------
+    label : str
+        Short name for tables and warnings.
+    limit_key : str or None
+        The material key (``materials.bushing.<key>``) it is compared with; ``None``
+        for a value reported but not compared.
+    unit : str
+        SI unit of the value.
+    display_unit : str
+        Unit for tables and warnings.
+    description : str
+        What the value is.
+    """
+
+    label: str
+    limit_key: str | None
+    unit: str
+    display_unit: str
+    description: str
+
+
+#: the engineering checks, in report order; the datasheet limits are nominal, so the
+#: nominal pressure and the nominal PV are compared, the local values only reported
+CHECKS: dict[str, Check] = {
+    "nominal_pressure": Check(
+        "nominal pressure", "max_dynamic_pressure", "Pa", "MPa",
+        "largest nominal pressure F / (2 R_p b) over the cycle",
+    ),
+    "peak_pressure": Check(
+        "peak pressure", "max_static_pressure", "Pa", "MPa",
+        "largest local contact pressure (stored pressure snapshots of the unworn and the "
+        "final contour)",
+    ),
+    "sliding_speed": Check(
+        "sliding speed", "max_sliding_speed", "m/s", "m/s",
+        "largest sliding speed R_p |d(phi_pin - phi_bushing)/dt| over the cycle",
+    ),
+    "pv": Check(
+        "nominal PV (cycle mean)", "max_pv", "Pa*m/s", "MPa*m/s",
+        "cycle mean of nominal pressure F / (2 R_p b) times sliding speed (the datasheet "
+        "PV, compared with the limit)",
+    ),
+    "pv_max": Check(
+        "PV (largest)", None, "Pa*m/s", "MPa*m/s",
+        "largest nominal pressure times sliding speed over the cycle (not compared)",
+    ),
+    "pv_peak_local": Check(
+        "PV (local peak)", None, "Pa*m/s", "MPa*m/s",
+        "largest local contact pressure times sliding speed at a node (stored pressure "
+        "snapshots; not compared)",
+    ),
+}
+
+
+def operating_values(
+    load: ArrayLike,
+    relative_rotation: ArrayLike,
+    step_duration: ArrayLike,
+    pin_radius: float,
+    axial_length: float,
+    pressure: ArrayLike | None = None,
+    pressure_steps: ArrayLike | None = None,
+) -> dict[str, float]:
+    """The values of :data:`CHECKS` over one load cycle (SI).
+
+    Step ``k`` carries the load ``F_k`` (at its start) for ``dt_k`` while the pin turns
+    by ``dphi_k`` relative to the bushing: nominal pressure ``p_k = F_k / (2 R_p b)``,
+    sliding speed ``v_k = R_p |dphi_k| / dt_k``. The datasheet PV is the cycle mean
+    ``sum p_k v_k dt_k / T`` (the mean frictional heat flux over the friction
+    coefficient); its largest value over the cycle is ``pv_max``.
+
+    Parameters
+    ----------
+    load : array_like, shape (M,)
+        Joint load at each step [N].
+    relative_rotation : array_like, shape (M,)
+        Rotation of the pin relative to the bushing over each step [rad].
+    step_duration : array_like, shape (M,)
+        Duration of each step [s].
+    pin_radius : float
+        Pin radius ``R_p`` [m].
+    axial_length : float
+        Axial length of the joint ``b`` [m].
+    pressure : array_like, shape (S, N), optional
+        Local contact pressure at ``S`` steps and ``N`` nodes [Pa]; without it the
+        local values are NaN.
+    pressure_steps : array_like of int, shape (S,), optional
+        The step of each row of ``pressure``.
+
+    Returns
+    -------
+    dict
+        ``nominal_pressure`` [Pa], ``peak_pressure`` [Pa], ``sliding_speed`` [m/s],
+        ``pv``, ``pv_max``, ``pv_peak_local`` [Pa m/s].
+    """
+    load = np.asarray(load, dtype=float)
+    duration = np.asarray(step_duration, dtype=float)
+    nominal = load / (2.0 * pin_radius * axial_length)
+    speed = pin_radius * np.abs(np.asarray(relative_rotation, dtype=float)) / duration
+    out = {
+        "nominal_pressure": float(nominal.max()),
+        "peak_pressure": math.nan,
+        "sliding_speed": float(speed.max()),
+        "pv": float(np.sum(nominal * speed * duration) / np.sum(duration)),
+        "pv_max": float(np.max(nominal * speed)),
+        "pv_peak_local": math.nan,
+    }
+    if pressure is not None:
+        local = np.asarray(pressure, dtype=float).max(axis=1)
+        out["peak_pressure"] = float(local.max())
+        steps = np.asarray(pressure_steps, dtype=int)
+        out["pv_peak_local"] = float(np.max(local * speed[steps]))
+    return out
+
+
+def _display(value: float, unit: str) -> str:
+    from jointwear.units import format_quantity
+
+    return format_quantity(value, unit, digits=3).replace("*", " ")
+
+
+def compare_with_limits(
+    values: dict[str, float],
+    limits: Any,
+    name: str | None = None,
+    where: str = "",
+    warn: bool = True,
+) -> dict[str, dict[str, Any]]:
+    """The ``checks`` object: each value with its limit, unit and verdict.
+
+    Parameters
+    ----------
+    values : dict
+        :func:`operating_values` (SI).
+    limits : mapping or jointwear.config.MaterialConfig
+        The bushing material's ``max_*`` values [SI] (missing or ``None``: none known).
+    name : str, optional
+        The material's library name, for warnings.
+    where : str
+        Names the joint in warnings (e.g. ``"joint 'rod-slider': "``).
+    warn : bool
+        Warn (:class:`~jointwear.errors.MaterialLimitWarning`) for each exceeded limit.
+
+    Returns
+    -------
+    dict
+        name -> ``{"value", "limit", "unit", "ok", "limit_key", "description"}``; ``ok``
+        is ``None`` where no limit is known or the value is not compared.
+    """
+    from jointwear.errors import MaterialLimitWarning
+
+    if not isinstance(limits, Mapping):
+        limits = {key: getattr(limits, key, None) for key in LIMIT_KEYS}
+    out: dict[str, dict[str, Any]] = {}
+    for key, check in CHECKS.items():
+        value = values[key]
+        limit = limits.get(check.limit_key) if check.limit_key else None
+        ok = None if limit is None or not math.isfinite(value) else bool(value <= limit)
+        out[key] = {
+            "value": value,
+            "limit": limit,
+            "unit": check.unit,
+            "ok": ok,
+            "limit_key": f"materials.bushing.{check.limit_key}" if check.limit_key else None,
+            "description": check.description,
+        }
+        if ok is False and warn:
+            of = f" of {name!r}" if name else ""
+            warnings.warn(
+                MaterialLimitWarning(
+                    f"materials.bushing.{check.limit_key}: {where}{check.label} "
+                    f"{_display(value, check.display_unit)} exceeds the limit "
+                    f"{_display(limit, check.display_unit)}{of}; the wear coefficient "
+                    "does not hold beyond it"
+                ),
+                stacklevel=3,
+            )
+    return out
+
+
+def engineering_checks(
+    dataset: Any,
+    config: Any,
+    warn: bool = True,
+    limits: Mapping[str, float | None] | None = None,
+    name: str | None = None,
+) -> dict[str, dict[str, Any]]:
+    """The :data:`CHECKS` of a single-joint result dataset against the bushing's limits.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A result without a ``joint`` dimension (``WearResult.joint_dataset()``).
+    config : jointwear.config.Config
+        Uses ``joint.pin_radius``, ``joint.axial_length`` and ``materials.bushing``.
+    warn : bool
+        Warn for each exceeded limit.
+    limits : mapping, optional
+        ``max_*`` values [SI] to compare with instead of ``materials.bushing``'s.
+    name : str, optional
+        The material named in warnings (default ``materials.bushing.name``).
+    """
+    time = np.asarray(dataset["time"].values, dtype=float)
+    period = float(dataset.attrs["period_s"])
+    phase = np.asarray(dataset["phase"].values, dtype=float)
+    snapshot_steps = np.searchsorted(phase, np.asarray(dataset["snapshot"].values, dtype=float))
+    pressure = np.concatenate(
+        [dataset["pressure_initial"].values, dataset["pressure_final"].values]
+    )
+    values = operating_values(
+        dataset["joint_load"].values,
+        dataset["relative_rotation"].values,
+        np.diff(np.append(time, period)),
+        config.joint.pin_radius,
+        config.joint.axial_length,
+        pressure,
+        np.concatenate([snapshot_steps, snapshot_steps]),
+    )
+    joint = dataset.attrs.get("joint")
+    where = f"joint {joint!r}: " if joint and len(config.joints) > 1 else ""
+    bushing = config.materials.bushing
+    return compare_with_limits(
+        values, bushing if limits is None else limits, name or bushing.name, where, warn
+    )

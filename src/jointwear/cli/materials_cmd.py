@@ -1,0 +1,56 @@
+"""``jointwear materials``: the materials library, its values, limits and sources."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+from rich.markup import escape
+from rich.table import Table
+
+from jointwear.cli.common import JsonOpt, app, console, emit_json
+
+
+@app.command()
+def materials(
+    name: Annotated[
+        str | None,
+        typer.Argument(help="One material: every value with its source.", show_default=False),
+    ] = None,
+    json_: JsonOpt = False,
+) -> None:
+    """List the materials library ([materials] bushing = "NAME"): values, limits, sources."""
+    from jointwear.materials import OVERVIEW, display_unit, get_material, library, material_units
+
+    entries = [get_material(name, "NAME")] if name is not None else list(library().values())
+    if json_:
+        emit_json({"units": material_units(), "materials": {m.name: m.summary() for m in entries}})
+        return
+    if name is not None:
+        material = entries[0]
+        table = Table(title=escape(f"{material.name}: {material.description}"))
+        for column in ("key", "value", "as given"):
+            table.add_column(column, no_wrap=True)
+        table.add_column("source")
+        for key, value in material.values.items():
+            table.add_row(key, material.display(key), str(value), material.sources[key])
+        if "wear_coefficient" not in material.values:
+            table.add_row(
+                "wear_coefficient",
+                material.display("wear_coefficient"),
+                "",
+                "from the wear form above",
+            )
+        console.print(table)
+        return
+    table = Table(title=escape('materials library ([materials] bushing = "NAME")'))
+    table.add_column("name", no_wrap=True)
+    for key, header in OVERVIEW:
+        unit = display_unit(key)
+        table.add_column(escape(f"{header} [{unit}]" if unit else header), justify="right")
+    table.add_column("description")
+    for material in entries:
+        cells = [material.display(key, unit=False) for key, _ in OVERVIEW]
+        table.add_row(material.name, *cells, material.description)
+    console.print(table)
+    console.print("Sources of every value: `jointwear materials NAME` (or --json).")

@@ -1,0 +1,258 @@
+"""The materials library and how a config names a material (jointwear.materials)."""
+
+from __future__ import annotations
+
+import tomllib
+from importlib.resources import files
+from pathlib import Path
+
+import pytest
+from pydantic.fields import FieldInfo
+
+from jointwear import load_config
+from jointwear.config import config_from_dict, is_section, key_field
+from jointwear.errors import ConfigError
+from jointwear.materials import (
+    KINDS,
+    LIMIT_KEYS,
+    WEAR_FORMS,
+    get_material,
+    library,
+    markdown,
+    merge_material,
+)
+from jointwear.parameter_sets import get_parameter_set
+from jointwear.sweep import expand_sweep
+
+REQUIRED = {
+    "ptfe",
+    "ptfe-glass",
+    "ptfe-fabric",
+    "pom",
+    "pa66",
+    "uhmwpe",
+    "bronze",
+    "steel",
+    "alumina",
+}
+
+
+def raw_library() -> dict:
+    text = files("jointwear").joinpath("data", "materials.toml").read_text(encoding="utf-8")
+    return tomllib.loads(text)
+
+
+# ---------------------------------------------------------------- the data file
+
+
+def test_library_has_the_materials_a_designer_expects():
+    assert set(library()) >= REQUIRED
+
+
+def test_every_value_has_a_source():
+    for name, table in raw_library().items():
+        assert table.get("description"), name
+        for key, entry in table.items():
+            if key == "description":
+                continue
+            assert key in KINDS, (name, key)
+            assert set(entry) == {"value", "source"}, (name, key)
+            assert len(entry["source"].strip()) > 10, (name, key)
+
+
+def test_every_material_is_complete_and_wear_coefficients_say_how_good_they_are():
+    for name, material in library().items():
+        for key in ("youngs_modulus", "poisson_ratio", "density", "wear_coefficient"):
+            assert material.si(key) is not None, (name, key)
+        forms = [f for f in WEAR_FORMS if any(k in material.values for k in f)]
+        assert len(forms) == 1, name
+        # a wear coefficient is a property of a pair, not of a material: never precise
+        for key in forms[0]:
+            source = material.sources[key]
+            assert "order of magnitude" in source or "NLCP paper" in source or key == "hardness"
+
+
+def test_values_lie_in_physical_ranges():
+    for name, material in library().items():
+        assert 1e8 < material.si("youngs_modulus") < 1e12, name
+        assert 0 < material.si("poisson_ratio") < 0.5, name
+        assert 500 < material.si("density") < 20000, name
+        assert 1e-18 < material.si("wear_coefficient") < 1e-11, name
+        limits = [material.si(k) for k in LIMIT_KEYS]
+        assert all(v is None or v > 0 for v in limits), name
+
+
+def test_bearing_datasheet_values_are_the_published_ones():
+    # PV limits in MPa m/s, from psi ft/min tables: 50 000 psi ft/min = 1.75 MPa m/s
+    assert get_material("bronze-sintered").si("max_pv") == pytest.approx(1.75e6)
+    assert get_material("bronze").si("max_pv") == pytest.approx(2.625e6)
+    assert get_material("pa66").si("max_pv") == pytest.approx(0.105e6)
+    # polymers are two orders softer than metals; PTFE wears far faster than filled PTFE
+    assert (
+        get_material("ptfe").si("youngs_modulus")
+        < get_material("bronze").si("youngs_modulus") / 100
+    )
+    assert get_material("ptfe").si("wear_coefficient") > 10 * get_material("ptfe-glass").si(
+        "wear_coefficient"
+    )
+
+
+def test_ptfe_is_the_papers_default_bushing_exactly():
+    defaults = get_parameter_set("nlcp-paper")["materials"]["bushing"]
+    ptfe = get_material("ptfe")
+    for key, value in defaults.items():
+        assert ptfe.si(key) == value, key
+    named = load_config(overrides={"materials.bushing": "ptfe"}).materials.bushing
+    default = load_config().materials.bushing
+    for key in ("youngs_modulus", "poisson_ratio", "density", "wear_coefficient"):
+        assert getattr(named, key) == getattr(default, key)
+
+
+def test_docs_page_shows_the_library_as_it_is():
+    page = Path(__file__).resolve().parents[1] / "docs" / "materials.md"
+    assert markdown() in page.read_text(encoding="utf-8"), (
+        "docs/materials.md is out of date: paste jointwear.materials.markdown() into it"
+    )
+
+
+# ---------------------------------------------------------------- config
+
+
+def test_a_name_gives_the_librarys_values_and_limits(paper_config_path):
+    bushing = load_config(paper_config_path, ["materials.bushing=bronze"]).materials.bushing
+    bronze = get_material("bronze")
+    assert bushing.name == "bronze"
+    assert bushing.youngs_modulus == 100e9
+    assert bushing.density == bronze.si("density")
+    assert bushing.wear_coefficient == pytest.approx(1e-6 / 640e6, rel=1e-12)
+    assert bushing.max_pv == pytest.approx(2.625e6)
+
+
+def test_name_with_overrides_and_no_defaults_leaking_in(tmp_path):
+    path = tmp_path / "c.toml"
+    path.write_text(
+        '[materials.bushing]\nname = "bronze"\nyoungs_modulus = "105 GPa"\n'
+        '[materials.pin]\nname = "steel"\n',
+        encoding="utf-8",
+    )
+    materials = load_config(path).materials
+    assert materials.bushing.youngs_modulus == 105e9
+    assert materials.bushing.poisson_ratio == 0.34  # bronze's, not the PTFE default's 0.38
+    assert materials.bushing.density == 8930.0
+    assert materials.pin.youngs_modulus == 210e9
+    # a named pin takes its elastic data only: it wears only if its table says so
+    assert materials.pin.wear_coefficient is None
+
+
+@pytest.mark.parametrize(
+    ("overrides", "expected"),
+    [
+        ({"materials.bushing.specific_wear_rate": "1e-6 mm^3/(N m)"}, 1e-15),
+        ({"materials.bushing.specific_wear_rate": "1e-6 mm**3/(N*m)"}, 1e-15),
+        ({"materials.bushing.wear_factor_k": 1e-4, "materials.bushing.hardness": "200 MPa"}, 5e-13),
+        (
+            {"materials.bushing": "bronze", "materials.bushing.wear_coefficient": "3e-15 m^2/N"},
+            3e-15,
+        ),
+    ],
+)
+def test_wear_forms_convert_to_k_d(paper_config_path, overrides, expected):
+    # the paper file gives wear_coefficient: a --set wear form replaces it
+    bushing = load_config(paper_config_path, overrides).materials.bushing
+    assert bushing.wear_coefficient == pytest.approx(expected, rel=1e-12)
+
+
+def test_the_pin_wears_only_where_its_table_gives_a_wear_form(paper_config_path):
+    cfg = load_config(
+        paper_config_path, {"materials.pin": "steel", "materials.pin.wear_factor_k": 1e-6}
+    )
+    assert cfg.materials.pin.wear_coefficient == pytest.approx(1e-6 / 7.5e9)
+
+
+def test_two_wear_forms_in_one_table_are_refused(tmp_path):
+    path = tmp_path / "c.toml"
+    path.write_text(
+        '[materials.bushing]\nyoungs_modulus = "1 GPa"\npoisson_ratio = 0.3\ndensity = 1000\n'
+        'wear_coefficient = 1e-15\nspecific_wear_rate = "1e-6 mm^3/(N m)"\n',
+        encoding="utf-8",
+    )
+    with pytest.raises(ConfigError, match=r"^materials\.bushing: give one of wear_coefficient"):
+        load_config(path)
+
+
+@pytest.mark.parametrize(
+    ("override", "message"),
+    [
+        (
+            "materials.bushing=bronz",
+            "materials.bushing: unknown material 'bronz'; did you mean 'bronze'?",
+        ),
+        ("materials.bushing.name=pomm", "materials.bushing.name: unknown material 'pomm'"),
+        ("materials.bushing.wear_factor_k=1e-4", "materials.bushing.hardness: missing"),
+        ("materials.bushing.hardness=1e9", "materials.bushing.wear_factor_k: missing"),
+        ("materials.bushing.max_pv=-1", "materials.bushing.max_pv"),
+        ("materials.bushing.max_pv=1 MPa", "materials.bushing.max_pv"),
+        ("materials.bushing.specifc_wear_rate=1", "did you mean 'specific_wear_rate'"),
+    ],
+)
+def test_bad_materials_name_the_key(paper_config_path, override, message):
+    with pytest.raises(ConfigError) as info:
+        load_config(paper_config_path, [override])
+    assert message in str(info.value)
+    assert "\n" not in str(info.value)
+
+
+def test_keys_resolve_for_set_sweeps_and_calibration():
+    assert isinstance(key_field("materials.bushing"), FieldInfo)
+    assert is_section("materials.bushing")  # [grid.materials.bushing] tables still flatten
+    assert is_section("materials")
+    assert not is_section("materials.bushing.max_pv")
+    for key in ("specific_wear_rate", "wear_factor_k", "hardness", "name", "max_pv"):
+        assert isinstance(key_field(f"materials.bushing.{key}"), FieldInfo)
+
+
+def test_to_toml_round_trips_named_and_overridden_materials(paper_config_path):
+    cfg = load_config(
+        paper_config_path,
+        [
+            "materials.bushing=bronze",
+            "materials.pin=steel",
+            "materials.bushing.youngs_modulus=105 GPa",
+        ],
+    )
+    again = config_from_dict(tomllib.loads(cfg.to_toml()))
+    assert again.materials == cfg.materials
+    assert again.to_dict() == cfg.to_dict()
+
+
+def test_replace_switches_material_by_name(paper_config_path):
+    cfg = load_config(paper_config_path, ["materials.bushing=bronze"])
+    pom = cfg.replace({"materials.bushing.name": "pom"}).materials.bushing
+    # a new name starts from the library, not from bronze's values
+    assert pom == cfg.replace({"materials.bushing": "pom"}).materials.bushing
+    assert pom.youngs_modulus == 2.8e9
+    assert pom.max_sliding_speed is None
+
+
+def test_merge_material_rules():
+    base = {"youngs_modulus": 1.0, "wear_coefficient": 2.0}
+    assert merge_material(base, "pom") == "pom"
+    assert merge_material(base, {"name": "pom"}) == {"name": "pom"}
+    assert merge_material("pom", {"density": 3}) == {"name": "pom", "density": 3}
+    assert merge_material(base, {"specific_wear_rate": 3.0}) == {
+        "youngs_modulus": 1.0,
+        "specific_wear_rate": 3.0,
+    }
+    # the two keys of k/H keep each other
+    both = merge_material(merge_material(base, {"wear_factor_k": 1e-4}), {"hardness": 1e9})
+    assert both == {"youngs_modulus": 1.0, "wear_factor_k": 1e-4, "hardness": 1e9}
+
+
+def test_a_sweep_over_the_bushing_material(paper_config_path):
+    base = load_config(paper_config_path)
+    plan = expand_sweep({"grid": {"materials.bushing": ["bronze", "pom", "ptfe"]}}, base)
+    configs = [plan.config(case) for case in plan.cases]
+    assert [c.materials.bushing.name for c in configs] == ["bronze", "pom", "ptfe"]
+    assert all(case.invalid is None for case in plan.cases)
+    with pytest.raises(ConfigError, match="did you mean 'bronze'"):
+        expand_sweep({"grid": {"materials.bushing": ["brnze"]}}, base)
