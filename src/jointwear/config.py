@@ -15,6 +15,8 @@ from __future__ import annotations
 import copy
 import math
 import tomllib
+import types
+import typing
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Annotated, Any, Literal
@@ -31,9 +33,12 @@ from pydantic import (
 )
 
 from jointwear.errors import ConfigError
-from jointwear.parameter_sets import get_parameter_set
+from jointwear.parameter_sets import PARAMETER_SETS, get_parameter_set
 from jointwear.registry import suggest
-from jointwear.units import to_si, to_si_unit
+from jointwear.units import MAX_MAGNITUDE, shown, to_si, to_si_unit
+
+#: largest count of revolutions, updates or checkpoints a config can ask for
+MAX_COUNT = 10**9
 
 __all__ = [
     "MECHANISM_TYPES",
@@ -87,8 +92,46 @@ PoissonRatio = Annotated[float, _si("dimensionless"), Field(gt=-1.0, lt=0.5)]
 Inertia = Annotated[Annotated[float, Field(ge=0)] | None, _si("moment_of_inertia")]
 
 
+def _scalar_types(annotation: Any) -> frozenset[type]:
+    """The scalar types a field annotation admits (through Annotated, unions, Literal)."""
+    origin = typing.get_origin(annotation)
+    if origin is typing.Annotated:
+        return _scalar_types(typing.get_args(annotation)[0])
+    if origin in (typing.Union, types.UnionType):
+        return frozenset().union(*(_scalar_types(a) for a in typing.get_args(annotation)))
+    if origin is typing.Literal:
+        return frozenset(type(a) for a in typing.get_args(annotation))
+    return frozenset({annotation}) if isinstance(annotation, type) else frozenset()
+
+
 class _Section(BaseModel):
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True)
+
+    @model_validator(mode="before")
+    @classmethod
+    def _plain_numbers(cls, data: Any) -> Any:
+        # pydantic reads true as 1 for a number field; and float() of an integer of
+        # hundreds of digits overflows: both are refused here, for every section
+        if not isinstance(data, Mapping):
+            return data
+        for name, value in data.items():
+            if not isinstance(value, int) or name not in cls.model_fields:
+                continue
+            accepted = _scalar_types(cls.model_fields[name].annotation)
+            if not accepted & {int, float}:
+                continue
+            if isinstance(value, bool) and bool not in accepted:
+                raise ValueError(f"{_FIELD}{name}: expected a number, got a boolean")
+            if not isinstance(value, bool) and abs(value) > MAX_MAGNITUDE:
+                raise ValueError(
+                    f"{_FIELD}{name}: {shown(value)} is beyond any physical value "
+                    f"(|value| <= {MAX_MAGNITUDE:g})"
+                )
+        return data
+
+
+#: marks a section validator's message that starts with the field's name
+_FIELD = "field "
 
 
 class SliderCrankConfig(_Section):
@@ -461,17 +504,19 @@ class SimulationConfig(_Section):
     """Time discretisation, number of revolutions and contour updates."""
 
     steps_per_revolution: Annotated[int, Field(ge=8, le=1_000_000)] = 360
-    revolutions: Annotated[int, Field(ge=1, le=10**9)] = 1
+    revolutions: Annotated[int, Field(ge=1, le=MAX_COUNT)] = 1
     update_contour: bool = False
-    update_every: Annotated[int, Field(ge=1)] | Literal["adaptive"] = 1
+    update_every: Annotated[int, Field(ge=1, le=MAX_COUNT)] | Literal["adaptive"] = 1
     adaptive_tolerance: Annotated[float, Field(gt=0, lt=1)] = 2e-3
     sliding: Literal["relative-rotation", "contact-azimuth"] = "relative-rotation"
     width_threshold: Annotated[float, Field(gt=0, lt=1)] = 0.01
     saved_profiles: Annotated[int, Field(ge=1, le=100_000)] = 11
-    checkpoint_every: Annotated[int, Field(ge=0)] = 0
+    checkpoint_every: Annotated[int, Field(ge=0, le=MAX_COUNT)] = 0
     #: re-solve the dynamics on the worn joint: never, every K contour updates, or
     #: whenever the load cycle would move by more than dynamics_tolerance
-    dynamics_update: Annotated[int, Field(ge=1)] | Literal["once", "adaptive"] = "once"
+    dynamics_update: Annotated[int, Field(ge=1, le=MAX_COUNT)] | Literal["once", "adaptive"] = (
+        "once"
+    )
     dynamics_tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.02
 
 
@@ -529,6 +574,15 @@ class Config(_Section):
     simulation: SimulationConfig = SimulationConfig()
     wear: WearConfig = WearConfig()
     life: LifeConfig = LifeConfig()
+
+    @field_validator("parameter_set")
+    @classmethod
+    def _known_parameter_set(cls, value: str) -> str:
+        # also where the defaults are not merged (Config.replace, a sweep's cases): the
+        # name is recorded with the results and must be one that exists
+        if value not in PARAMETER_SETS:
+            raise ValueError(f"unknown parameter set {value!r}{suggest(value, PARAMETER_SETS)}")
+        return value
 
     @model_validator(mode="after")
     def _life_limits_fit(self) -> Config:
@@ -717,6 +771,8 @@ def parse_override(text: str) -> tuple[str, Any]:
         value = tomllib.loads(f"v = {raw}")["v"]
     except tomllib.TOMLDecodeError:
         value = raw
+    except ValueError:  # an integer of thousands of digits (Python's conversion limit)
+        raise ConfigError(f"{key}: {shown(raw)} is beyond any physical value") from None
     return key, value
 
 
@@ -728,6 +784,8 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any] | Iterabl
         else (parse_override(o) for o in overrides)
     )
     for dotted, value in items:
+        if not isinstance(dotted, str) or not dotted:
+            raise ConfigError(f"{dotted!r}: a config key is a dotted name, e.g. 'joint.clearance'")
         parts = dotted.split(".")
         node = data
         for part in parts[:-1]:
@@ -805,6 +863,9 @@ def _message(error: Mapping[str, Any]) -> str:
     if kind == "missing":
         return f"{key}: missing"
     msg = error["msg"].removeprefix("Value error, ")
+    if msg.startswith(_FIELD):  # a section's check of one of its fields
+        field, _, reason = msg.removeprefix(_FIELD).partition(": ")
+        return f"{field if key == 'config' else f'{key}.{field}'}: {reason}"
     if kind == "literal_error":
         expected = error.get("ctx", {}).get("expected", "")
         options = [o.strip().strip("'") for o in expected.replace(" or ", ",").split(",")]
@@ -826,6 +887,8 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
     defaults : bool
         Merge the named parameter set's values underneath ``data``.
     """
+    if not isinstance(data, Mapping):
+        raise ConfigError(f"config: expected a mapping of sections, got {shown(data)}")
     data = dict(data)
     mechanism = data.get("mechanism", {})
     if not isinstance(mechanism, Mapping):
@@ -868,6 +931,8 @@ def read_toml(path: str | Path, error: type[Exception] = ConfigError) -> dict[st
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise error(f"{path}: not valid TOML ({exc})") from None
+    except ValueError as exc:  # an integer of thousands of digits
+        raise error(f"{path}: not readable TOML ({' '.join(str(exc).split()[:6])})") from None
 
 
 def load_config(
@@ -888,15 +953,50 @@ def load_config(
     if isinstance(mechanism, dict) and isinstance(mechanism.get("file"), str):
         # a data file named in a config is found next to the config, wherever it is run
         base = Path.cwd() if path is None else Path(path).parent
-        mechanism["file"] = str((base / mechanism["file"]).resolve())
+        try:
+            mechanism["file"] = str((base / mechanism["file"]).resolve())
+        except (OSError, ValueError) as exc:  # e.g. a NUL or a lone surrogate in the name
+            raise ConfigError(f"mechanism.file: {shown(mechanism['file'])}: {exc}") from None
     return config_from_dict(data)
+
+
+#: characters a TOML basic string must escape, besides the other control characters
+_TOML_ESCAPES = {
+    '"': '\\"',
+    "\\": "\\\\",
+    "\b": "\\b",
+    "\t": "\\t",
+    "\n": "\\n",
+    "\f": "\\f",
+    "\r": "\\r",
+}
+
+
+def _toml_string(text: str) -> str:
+    """``text`` as a TOML basic string: quotes, backslashes and control characters escaped."""
+    out = []
+    for char in text:
+        if char in _TOML_ESCAPES:
+            out.append(_TOML_ESCAPES[char])
+        elif ord(char) < 0x20 or ord(char) == 0x7F:
+            out.append(f"\\u{ord(char):04x}")
+        elif 0xD800 <= ord(char) <= 0xDFFF:  # a lone surrogate has no UTF-8 form
+            raise ConfigError(f"{shown(text)}: not a valid Unicode string")
+        else:
+            out.append(char)
+    return '"' + "".join(out) + '"'
+
+
+def _toml_key(key: str) -> str:
+    bare = key and all(c.isascii() and (c.isalnum() or c in "_-") for c in key)
+    return key if bare else _toml_string(key)
 
 
 def _toml_value(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
-        return f'"{value}"'
+        return _toml_string(value)
     if isinstance(value, float):
         return repr(value)
     if isinstance(value, list):
@@ -909,9 +1009,9 @@ def _dump_toml(data: Mapping[str, Any], prefix: str = "") -> str:
     tables: list[tuple[str, Mapping[str, Any]]] = []
     for key, value in data.items():
         if isinstance(value, Mapping):
-            tables.append((f"{prefix}{key}", value))
+            tables.append((f"{prefix}{_toml_key(key)}", value))
         elif value is not None:
-            lines.append(f"{key} = {_toml_value(value)}")
+            lines.append(f"{_toml_key(key)} = {_toml_value(value)}")
     out = "\n".join(lines)
     for name, table in tables:
         body = _dump_toml(table, prefix=f"{name}.")

@@ -15,6 +15,7 @@ __all__ = [
     "GeometryError",
     "JointwearError",
     "MechanismError",
+    "TimeLimitError",
     "WearFeedbackWarning",
     "WearThroughError",
 ]
@@ -49,6 +50,14 @@ class ConvergenceError(ContactError):
 
 class MechanismError(JointwearError):
     """The mechanism cannot assemble or its model assumptions are violated."""
+
+
+class TimeLimitError(JointwearError):
+    """The wall-clock limit (``--time-limit``) passed before the job finished.
+
+    A checkpointed run keeps its checkpoint and a sweep its finished cases; the
+    message names the command that continues.
+    """
 
 
 class WearThroughError(JointwearError):

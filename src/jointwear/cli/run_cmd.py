@@ -16,7 +16,9 @@ from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
+    MaxMemoryOpt,
     SetOpt,
+    TimeLimitOpt,
     app,
     console,
     emit_json,
@@ -170,12 +172,16 @@ def run(
     ] = True,
     checkpoint_every: CheckpointOpt = None,
     resume: ResumeOpt = None,
+    max_memory: MaxMemoryOpt = None,
+    time_limit: TimeLimitOpt = None,
 ) -> None:
     """Simulate wear over revolutions (dynamics -> pressure -> Archard -> contour update)."""
     from jointwear.checkpoint import Checkpointer, has_checkpoint, load_checkpoint
-    from jointwear.errors import ConfigError, DataError, JointwearError
+    from jointwear.errors import ConfigError, DataError, JointwearError, TimeLimitError
+    from jointwear.resources import Deadline, check_run, parse_time_limit
     from jointwear.simulation import Simulation
 
+    seconds = parse_time_limit(time_limit)
     state = None
     if resume is not None:
         if config is not None:
@@ -212,13 +218,23 @@ def run(
         every = cfg.simulation.checkpoint_every
         checkpointer = Checkpointer(out, cfg) if out is not None and every > 0 else None
         name = config.name
+    check_run(cfg, max_memory)
+    resume_command = f"jointwear run --resume {out}" if checkpointer is not None else None
+    deadline = Deadline(seconds, "revolutions", resume_command)
     simulation = Simulation(cfg)
     created = out is not None and not out.exists()
     if checkpointer is not None and state is None and resume is None:
         checkpointer.begin()
     try:
         with ProgressBar("revolutions", quiet=quiet) as bar:
-            result = simulation.run(progress=bar, state=state, on_step=checkpointer)
+
+            def tick(done: int, total: int) -> None:
+                bar(done, total)
+                deadline.check(done, total)
+
+            result = simulation.run(progress=tick, state=state, on_step=checkpointer)
+    except TimeLimitError:
+        raise  # a checkpoint stays for --resume
     except JointwearError:
         # the run cannot finish from this state: leave no checkpoint (or empty folder) behind
         if checkpointer is not None:
