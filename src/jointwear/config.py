@@ -39,6 +39,8 @@ from jointwear.units import MAX_MAGNITUDE, shown, to_si, to_si_unit
 
 #: largest count of revolutions, updates or checkpoints a config can ask for
 MAX_COUNT = 10**9
+#: most steps the contact-impact integrator may be forced to take by dynamics.max_step
+MAX_INTEGRATOR_STEPS = 10**7
 
 __all__ = [
     "MECHANISM_TYPES",
@@ -606,6 +608,24 @@ class Config(_Section):
                 f"dynamics.model: 'contact-impact' needs a mechanism with inertia "
                 f"({', '.join(repr(t) for t in DYNAMIC_TYPES)}); mechanism.type "
                 f"{self.mechanism.type!r} prescribes its load"
+            )
+        return self
+
+    @model_validator(mode="after")
+    def _integration_bounded(self) -> Config:
+        # the contact-impact integrator takes at least span / max_step steps: refused up
+        # front where that would run for hours instead of failing after them
+        dynamics = self.dynamics
+        if dynamics.model != "contact-impact" or dynamics.max_step is None:
+            return self
+        revolutions = dynamics.revolutions_settle + 1
+        span = revolutions * self.mechanism.period
+        steps = span / dynamics.max_step
+        if steps > MAX_INTEGRATOR_STEPS:
+            raise ValueError(
+                f"dynamics.max_step: {dynamics.max_step:g} s makes at least {steps:.3g} "
+                f"integrator steps over {revolutions} revolution(s) of {self.mechanism.period:g} s "
+                f"(at most {MAX_INTEGRATOR_STEPS:.0e}); give a larger step"
             )
         return self
 

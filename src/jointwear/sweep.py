@@ -910,8 +910,12 @@ def _probe(scheduler: str, timeout: float) -> None:
     try:
         protocol, location = parse_address(scheduler)
         if protocol not in ("tcp", "tls"):
-            return  # other transports (inproc, ucx): leave them to dask
+            # inproc needs a scheduler in this process (pass a Client); others are not
+            # installed: a Client would wait for them and fail at exit with a traceback
+            raise ValueError(f"protocol {protocol!r} is not supported; give tcp://host:port")
         host, port = parse_host_port(location)
+        if not 0 < int(port) < 65536:
+            raise ValueError(f"port {port} is not in 1..65535")
     except (ValueError, TypeError) as exc:
         raise ConfigError(f"--scheduler: cannot connect to {scheduler} ({exc})") from None
     try:

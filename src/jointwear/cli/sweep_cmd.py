@@ -54,6 +54,15 @@ SweepResumeOpt = Annotated[
 ]
 
 
+#: config keys that set the memory of a case
+SIZING_KEYS = {
+    "contact.nodes",
+    "simulation.steps_per_revolution",
+    "simulation.saved_profiles",
+    "mechanism.clearance_joint",
+}
+
+
 def limited(
     bar: ProgressBar,
     plan: SweepPlan,
@@ -64,10 +73,16 @@ def limited(
     command: str,
 ) -> Callable[[int, int], None]:
     """Check the plan's memory, then a progress callback that stops at the time limit."""
-    from jointwear.resources import Deadline, available_cpus, check_sweep
+    from jointwear.resources import Deadline, available_cpus, check_sweep, run_memory
 
     parallel = workers or min(available_cpus(), max(1, len(plan.cases)))
-    check_sweep(len(plan.cases), plan.base, f"{plan.source}: cases", max_memory, parallel)
+    largest = plan.base
+    if SIZING_KEYS & set(plan.keys):  # the cases differ in size: the largest counts
+        configs = [plan.config(case) for case in plan.cases if case.invalid is None]
+        largest = max(
+            configs, key=lambda c: sum(size for *_, size in run_memory(c)), default=plan.base
+        )
+    check_sweep(len(plan.cases), largest, f"{plan.source}: cases", max_memory, parallel)
     resume = f"jointwear sweep --resume {out}" if command == "sweep" else None
     deadline = Deadline(seconds, "cases", resume)
 
