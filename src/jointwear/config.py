@@ -59,6 +59,7 @@ __all__ = [
     "WearConfig",
     "apply_overrides",
     "config_from_dict",
+    "error_key",
     "is_section",
     "key_field",
     "load_config",
@@ -854,6 +855,19 @@ def _field_names(loc: tuple[Any, ...]) -> list[str]:
 def _key_loc(loc: tuple[Any, ...]) -> tuple[Any, ...]:
     """The config key of an error location (without pydantic's union-branch tags)."""
     return _walk(loc)[0]
+
+
+def error_key(error: Mapping[str, Any]) -> tuple[str, ...]:
+    """The config key a pydantic error of :class:`Config` is about, as its parts.
+
+    Without pydantic's union-branch tags, and with the field a section's own check
+    names in its message (booleans, hundred-digit integers).
+    """
+    loc = tuple(str(p) for p in _key_loc(tuple(error["loc"])))
+    msg = str(error.get("msg", "")).removeprefix("Value error, ")
+    if msg.startswith(_FIELD):
+        loc = (*loc, msg.removeprefix(_FIELD).partition(": ")[0])
+    return loc
 
 
 def _first_error(errors: list[Any]) -> Mapping[str, Any]:

@@ -86,7 +86,10 @@ def parse_size(text: str | float, key: str = "--max-memory") -> int:
 
     quantity = parse_quantity(str(text), key) if isinstance(text, str) else text
     try:
-        size = float(quantity.to("byte").magnitude) if hasattr(quantity, "to") else float(quantity)
+        if getattr(quantity, "unitless", True):  # a bare number: bytes
+            size = float(getattr(quantity, "magnitude", quantity))
+        else:
+            size = float(quantity.to("byte").magnitude)
     except Exception:
         raise ConfigError(
             f"{key}: {shown(text)} is not a memory size (e.g. '16 GiB', '500 MB')"

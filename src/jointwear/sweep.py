@@ -59,6 +59,7 @@ from jointwear.config import (
     Config,
     apply_overrides,
     config_from_dict,
+    error_key,
     is_section,
     key_field,
     load_config,
@@ -497,10 +498,7 @@ def _check_value(base: Config, dotted: str, value: Any, where: str) -> None:
         Config.model_validate(data)
     except ValidationError as exc:
         parts = tuple(dotted.split("."))
-        own = any(
-            tuple(p for p in error["loc"] if isinstance(p, str))[: len(parts)] == parts
-            for error in exc.errors()
-        )
+        own = any(error_key(error)[: len(parts)] == parts for error in exc.errors())
         if not own:
             return
         try:
@@ -909,9 +907,16 @@ def _probe(scheduler: str, timeout: float) -> None:
 
     try:
         protocol, location = parse_address(scheduler)
+        if protocol == "inproc":
+            # a scheduler in this very process (a LocalCluster without processes)
+            from distributed.comm.inproc import global_manager
+
+            if global_manager.get_listener_for(location) is None:
+                raise ValueError("no scheduler at this in-process address")
+            return
         if protocol not in ("tcp", "tls"):
-            # inproc needs a scheduler in this process (pass a Client); others are not
-            # installed: a Client would wait for them and fail at exit with a traceback
+            # a Client would wait for a transport that is not there and fail at exit
+            # with a traceback
             raise ValueError(f"protocol {protocol!r} is not supported; give tcp://host:port")
         host, port = parse_host_port(location)
         if not 0 < int(port) < 65536:
