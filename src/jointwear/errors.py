@@ -22,7 +22,14 @@ __all__ = [
 
 
 class JointwearError(Exception):
-    """Base class of all errors caused by input or by physics the model cannot handle."""
+    """Base class of all errors caused by input or by physics the model cannot handle.
+
+    The message is one line: a line break inside it (a file name with a newline,
+    a value pasted with one) is shown escaped, as ``\\n``.
+    """
+
+    def __str__(self) -> str:
+        return super().__str__().replace("\r", "\\r").replace("\n", "\\n")
 
 
 class ConfigError(JointwearError, ValueError):
