@@ -24,6 +24,14 @@ from jointwear.units import parse_quantity, parse_unit, to_si
 from tests.hostile.harness import GRID, PAPER, Bad, check_contract, run_cli, sweep_toml
 
 SWEEP = ["sweep", "{tmp}/s.toml", "--out", "{out}"]
+#: the page section of the tests below that are not one command (default: API)
+FREE_AREAS = {
+    "test_silent_scheduler_is_a_one_line_error": "network",
+    "test_a_server_that_is_no_scheduler_is_refused": "network",
+    "test_any_quantity_text_parses_or_is_refused": "units",
+    "test_unbounded_expressions_are_refused_before_pint": "units",
+    "test_bounded_expressions_still_read": "units",
+}
 SWEEP_FILES = {"s.toml": sweep_toml(GRID), "tiny.toml": "@tiny"}
 
 CASES: list[Bad] = [
