@@ -27,7 +27,9 @@ if TYPE_CHECKING:
     from jointwear.simulation import Simulation, SimulationState
 
 __all__ = [
+    "WEAR_VARIABLES",
     "build_dataset",
+    "check_result_content",
     "combine_joints",
     "config_of",
     "joint_datasets",

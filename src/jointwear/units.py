@@ -164,6 +164,9 @@ def to_angle(value: Any, key: str = "value", limit: float = MAX_TURN_ANGLE) -> f
 
 def shown(value: Any, width: int = 40) -> str:
     """``repr(value)``, shortened to about ``width`` characters for a one-line message."""
+    if isinstance(value, int) and value.bit_length() > 10_000:
+        # repr() of an integer beyond Python's conversion limit (4300 digits) raises
+        return f"an integer of about {value.bit_length() * math.log10(2):.0f} digits"
     text = repr(value)
     return text if len(text) <= width else f"{text[: width - 12]}...{text[-8:]} ({len(text)} chars)"
 

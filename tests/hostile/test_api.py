@@ -27,6 +27,7 @@ SWEEP = ["sweep", "{tmp}/s.toml", "--out", "{out}"]
 #: the page section of the tests below that are not one command (default: API)
 FREE_AREAS = {
     "test_silent_scheduler_is_a_one_line_error": "network",
+    "test_silent_scheduler_in_a_real_process": "network",
     "test_a_server_that_is_no_scheduler_is_refused": "network",
     "test_any_quantity_text_parses_or_is_refused": "units",
     "test_unbounded_expressions_are_refused_before_pint": "units",
@@ -239,6 +240,8 @@ def test_api_raises_only_config_errors():
     for overrides in bad:
         with pytest.raises(ConfigError):
             config.replace(overrides)
+    with pytest.raises(ConfigError, match="update_every: an integer of about 5000 digits"):
+        config.replace({"simulation.update_every": 10**5000})
     with pytest.raises(ConfigError, match="config: expected a mapping"):
         config_from_dict([1, 2])  # type: ignore[arg-type]
 
@@ -302,3 +305,27 @@ def test_unbounded_expressions_are_refused_before_pint(text, monkeypatch):
 def test_bounded_expressions_still_read(text, metres):
     """Powers within the bound, superscripts and parentheses read as before."""
     assert to_si(text, "length") == pytest.approx(metres)
+
+
+@pytest.mark.slow
+def test_silent_scheduler_in_a_real_process(silent_server, tmp_path):
+    """A real `jointwear sweep` against a silent server gives up after its 10 s, in one line."""
+    import subprocess
+    import sys
+
+    (tmp_path / "s.toml").write_text(sweep_toml(GRID), encoding="utf-8")
+    (tmp_path / "tiny.toml").write_text(PAPER.read_text(encoding="utf-8"), encoding="utf-8")
+    out = tmp_path / "out"
+    argv = ["sweep", str(tmp_path / "s.toml"), "--out", str(out), "--scheduler", silent_server]
+    done = subprocess.run(
+        [sys.executable, "-m", "jointwear", *argv],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=120,
+    )
+    assert done.returncode == 2, done.stderr
+    assert done.stderr == (
+        f"error: --scheduler: no dask scheduler answered at {silent_server} within 10 s\n"
+    )
+    assert not out.exists()

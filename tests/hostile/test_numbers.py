@@ -466,3 +466,32 @@ def test_integer_exactly_at_the_bound_is_accepted():
     assert config.simulation.revolutions == 10**9
     with pytest.raises(ConfigError, match="simulation.revolutions"):
         load_config(PAPER, {"simulation.revolutions": 10**9 + 1})
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    "case_id", ["power-tower-set", "integer-beyond-python-limit-set", "boolean-for-exponent"]
+)
+def test_bad_number_in_a_real_process(case_id, tmp_path, result_bytes):
+    """In a real process too: a power tower or a 5000-digit integer ends in one line, exit 2."""
+    import subprocess
+    import sys
+
+    from tests.hostile.harness import expand, files_in, materialise
+
+    case = next(c for c in CASES if c.id == case_id)
+    materialise(tmp_path, case.files, result_bytes)
+    out = tmp_path / "out"
+    done = subprocess.run(
+        [sys.executable, "-m", "jointwear", *expand(case.argv, tmp_path, out)],
+        capture_output=True,
+        text=True,
+        check=False,
+        timeout=120,
+    )
+    assert done.returncode == 2, done.stderr
+    lines = done.stderr.splitlines()
+    assert len(lines) == 1
+    assert lines[0].startswith("error: ")
+    assert all(fragment in lines[0] for fragment in case.expect)
+    assert files_in(out) == []
