@@ -903,9 +903,10 @@ def _message(error: Mapping[str, Any]) -> str:
     if kind == "literal_error":
         expected = error.get("ctx", {}).get("expected", "")
         options = [o.strip().strip("'") for o in expected.replace(" or ", ",").split(",")]
-        return f"{key}: {error['input']!r} is not allowed{suggest(str(error['input']), options)}"
+        given = shown(error["input"])
+        return f"{key}: {given} is not allowed{suggest(given.strip(chr(39)), options)}"
     if kind in {"finite_number"}:
-        return f"{key}: must be finite, got {error['input']!r}"
+        return f"{key}: must be finite, got {shown(error['input'])}"
     if msg.startswith(key + ":") or (msg.split(":")[0].count(".") and ":" in msg):
         return msg
     return f"{key}: {msg}"
@@ -930,7 +931,8 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
     kind = mechanism.get("type", "slider-crank")
     if not isinstance(kind, str) or kind not in MECHANISM_TYPES:
         raise ConfigError(
-            f"mechanism.type: {kind!r} is not a mechanism type{suggest(str(kind), MECHANISM_TYPES)}"
+            f"mechanism.type: {shown(kind)} is not a mechanism type"
+            f"{suggest(shown(kind).strip(chr(39)), MECHANISM_TYPES)}"
         )
     data["mechanism"] = {**mechanism, "type": kind}
     if defaults:

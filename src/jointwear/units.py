@@ -167,7 +167,10 @@ def shown(value: Any, width: int = 40) -> str:
     if isinstance(value, int) and value.bit_length() > 10_000:
         # repr() of an integer beyond Python's conversion limit (4300 digits) raises
         return f"an integer of about {value.bit_length() * math.log10(2):.0f} digits"
-    text = repr(value)
+    try:
+        text = repr(value)
+    except ValueError:  # e.g. a list holding such an integer
+        return f"a {type(value).__name__} too large to show"
     return text if len(text) <= width else f"{text[: width - 12]}...{text[-8:]} ({len(text)} chars)"
 
 

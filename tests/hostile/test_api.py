@@ -329,3 +329,50 @@ def test_silent_scheduler_in_a_real_process(silent_server, tmp_path):
         f"error: --scheduler: no dask scheduler answered at {silent_server} within 10 s\n"
     )
     assert not out.exists()
+
+
+def _config_keys() -> list[str]:
+    from jointwear.config import Config, SliderCrankConfig
+
+    keys: list[str] = []
+
+    def walk(model, prefix: str) -> None:
+        for name, field in model.model_fields.items():
+            if hasattr(field.annotation, "model_fields"):
+                walk(field.annotation, f"{prefix}{name}.")
+            elif f"{prefix}{name}" != "mechanism":
+                keys.append(f"{prefix}{name}")
+
+    walk(Config, "")
+    return keys + [f"mechanism.{name}" for name in SliderCrankConfig.model_fields]
+
+
+HOSTILE_VALUES = [
+    True,
+    10**400,
+    10**5000,
+    [10**5000],
+    float("nan"),
+    -float("inf"),
+    1e308,
+    "9**9**9",
+    "1e400 m",
+    "\x00",
+    "1" * 300,
+    {"a": 1},
+    None,
+    1j,
+]
+
+
+@pytest.mark.parametrize("key", _config_keys())
+def test_every_key_takes_hostile_values_with_config_errors_only(key):
+    """Every config key given any hostile value: a ConfigError with a one-line message."""
+    config = load_config(PAPER)
+    for value in HOSTILE_VALUES:
+        try:
+            config.replace({key: value}).to_toml()
+        except ConfigError as exc:
+            message = str(exc)
+            assert "\n" not in message
+            assert len(message) < 1000
