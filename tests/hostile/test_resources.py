@@ -167,6 +167,13 @@ CASES: list[Bad] = [
         {"ring.csv": CSV_HEADER + "7.5,0\n"},
     ),
     Bad(
+        "calibrate-run-beyond-memory",
+        "resources",
+        ["calibrate", "{paper}", "{tmp}/ring.csv", "--fit", "wear_coefficient", *HUGE_RUN],
+        ["contact.nodes, simulation.steps_per_revolution", LIMIT_HINT],
+        {"ring.csv": CSV_HEADER + "7.5,0\n"},
+    ),
+    Bad(
         "life-cases-too-many",
         "resources",
         ["life", "{paper}", *SAMPLE, "--cases", "10000000", "--out", "{out}"],
