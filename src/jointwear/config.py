@@ -15,6 +15,8 @@ from __future__ import annotations
 import copy
 import math
 import tomllib
+import types
+import typing
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Annotated, Any, Literal
@@ -31,9 +33,14 @@ from pydantic import (
 )
 
 from jointwear.errors import ConfigError
-from jointwear.parameter_sets import get_parameter_set
+from jointwear.parameter_sets import PARAMETER_SETS, get_parameter_set
 from jointwear.registry import suggest
-from jointwear.units import to_si, to_si_unit
+from jointwear.units import MAX_MAGNITUDE, shown, to_si, to_si_unit
+
+#: largest count of revolutions, updates or checkpoints a config can ask for
+MAX_COUNT = 10**9
+#: most steps the contact-impact integrator may be forced to take by dynamics.max_step
+MAX_INTEGRATOR_STEPS = 10**7
 
 __all__ = [
     "MECHANISM_TYPES",
@@ -52,6 +59,7 @@ __all__ = [
     "WearConfig",
     "apply_overrides",
     "config_from_dict",
+    "error_key",
     "is_section",
     "key_field",
     "load_config",
@@ -88,8 +96,46 @@ OptionalPressure = Annotated[Annotated[float, Field(gt=0)] | None, _si("pressure
 Inertia = Annotated[Annotated[float, Field(ge=0)] | None, _si("moment_of_inertia")]
 
 
+def _scalar_types(annotation: Any) -> frozenset[type]:
+    """The scalar types a field annotation admits (through Annotated, unions, Literal)."""
+    origin = typing.get_origin(annotation)
+    if origin is typing.Annotated:
+        return _scalar_types(typing.get_args(annotation)[0])
+    if origin in (typing.Union, types.UnionType):
+        return frozenset().union(*(_scalar_types(a) for a in typing.get_args(annotation)))
+    if origin is typing.Literal:
+        return frozenset(type(a) for a in typing.get_args(annotation))
+    return frozenset({annotation}) if isinstance(annotation, type) else frozenset()
+
+
 class _Section(BaseModel):
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True)
+
+    @model_validator(mode="before")
+    @classmethod
+    def _plain_numbers(cls, data: Any) -> Any:
+        # pydantic reads true as 1 for a number field; and float() of an integer of
+        # hundreds of digits overflows: both are refused here, for every section
+        if not isinstance(data, Mapping):
+            return data
+        for name, value in data.items():
+            if not isinstance(value, int) or name not in cls.model_fields:
+                continue
+            accepted = _scalar_types(cls.model_fields[name].annotation)
+            if not accepted & {int, float}:
+                continue
+            if isinstance(value, bool) and bool not in accepted:
+                raise ValueError(f"{_FIELD}{name}: expected a number, got a boolean")
+            if not isinstance(value, bool) and abs(value) > MAX_MAGNITUDE:
+                raise ValueError(
+                    f"{_FIELD}{name}: {shown(value)} is beyond any physical value "
+                    f"(|value| <= {MAX_MAGNITUDE:g})"
+                )
+        return data
+
+
+#: marks a section validator's message that starts with the field's name
+_FIELD = "field "
 
 
 class SliderCrankConfig(_Section):
@@ -522,17 +568,19 @@ class SimulationConfig(_Section):
     """Time discretisation, number of revolutions and contour updates."""
 
     steps_per_revolution: Annotated[int, Field(ge=8, le=1_000_000)] = 360
-    revolutions: Annotated[int, Field(ge=1, le=10**9)] = 1
+    revolutions: Annotated[int, Field(ge=1, le=MAX_COUNT)] = 1
     update_contour: bool = False
-    update_every: Annotated[int, Field(ge=1)] | Literal["adaptive"] = 1
+    update_every: Annotated[int, Field(ge=1, le=MAX_COUNT)] | Literal["adaptive"] = 1
     adaptive_tolerance: Annotated[float, Field(gt=0, lt=1)] = 2e-3
     sliding: Literal["relative-rotation", "contact-azimuth"] = "relative-rotation"
     width_threshold: Annotated[float, Field(gt=0, lt=1)] = 0.01
     saved_profiles: Annotated[int, Field(ge=1, le=100_000)] = 11
-    checkpoint_every: Annotated[int, Field(ge=0)] = 0
+    checkpoint_every: Annotated[int, Field(ge=0, le=MAX_COUNT)] = 0
     #: re-solve the dynamics on the worn joint: never, every K contour updates, or
     #: whenever the load cycle would move by more than dynamics_tolerance
-    dynamics_update: Annotated[int, Field(ge=1)] | Literal["once", "adaptive"] = "once"
+    dynamics_update: Annotated[int, Field(ge=1, le=MAX_COUNT)] | Literal["once", "adaptive"] = (
+        "once"
+    )
     dynamics_tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.02
 
 
@@ -591,6 +639,15 @@ class Config(_Section):
     wear: WearConfig = WearConfig()
     life: LifeConfig = LifeConfig()
 
+    @field_validator("parameter_set")
+    @classmethod
+    def _known_parameter_set(cls, value: str) -> str:
+        # also where the defaults are not merged (Config.replace, a sweep's cases): the
+        # name is recorded with the results and must be one that exists
+        if value not in PARAMETER_SETS:
+            raise ValueError(f"unknown parameter set {value!r}{suggest(value, PARAMETER_SETS)}")
+        return value
+
     @model_validator(mode="after")
     def _life_limits_fit(self) -> Config:
         life, joint = self.life, self.joint
@@ -613,6 +670,24 @@ class Config(_Section):
                 f"dynamics.model: 'contact-impact' needs a mechanism with inertia "
                 f"({', '.join(repr(t) for t in DYNAMIC_TYPES)}); mechanism.type "
                 f"{self.mechanism.type!r} prescribes its load"
+            )
+        return self
+
+    @model_validator(mode="after")
+    def _integration_bounded(self) -> Config:
+        # the contact-impact integrator takes at least span / max_step steps: refused up
+        # front where that would run for hours instead of failing after them
+        dynamics = self.dynamics
+        if dynamics.model != "contact-impact" or dynamics.max_step is None:
+            return self
+        revolutions = dynamics.revolutions_settle + 1
+        span = revolutions * self.mechanism.period
+        steps = span / dynamics.max_step
+        if steps > MAX_INTEGRATOR_STEPS:
+            raise ValueError(
+                f"dynamics.max_step: {dynamics.max_step:g} s makes at least {steps:.3g} "
+                f"integrator steps over {revolutions} revolution(s) of {self.mechanism.period:g} s "
+                f"(at most {MAX_INTEGRATOR_STEPS:.0e}); give a larger step"
             )
         return self
 
@@ -787,6 +862,8 @@ def parse_override(text: str) -> tuple[str, Any]:
         value = tomllib.loads(f"v = {raw}")["v"]
     except tomllib.TOMLDecodeError:
         value = raw
+    except ValueError:  # an integer of thousands of digits (Python's conversion limit)
+        raise ConfigError(f"{key}: {shown(raw)} is beyond any physical value") from None
     return key, value
 
 
@@ -798,6 +875,8 @@ def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any] | Iterabl
         else (parse_override(o) for o in overrides)
     )
     for dotted, value in items:
+        if not isinstance(dotted, str) or not dotted:
+            raise ConfigError(f"{dotted!r}: a config key is a dotted name, e.g. 'joint.clearance'")
         parts = dotted.split(".")
         if _material_override(data, parts, value):
             continue
@@ -883,6 +962,19 @@ def _key_loc(loc: tuple[Any, ...]) -> tuple[Any, ...]:
     return _walk(loc)[0]
 
 
+def error_key(error: Mapping[str, Any]) -> tuple[str, ...]:
+    """The config key a pydantic error of :class:`Config` is about, as its parts.
+
+    Without pydantic's union-branch tags, and with the field a section's own check
+    names in its message (booleans, hundred-digit integers).
+    """
+    loc = tuple(str(p) for p in _key_loc(tuple(error["loc"])))
+    msg = str(error.get("msg", "")).removeprefix("Value error, ")
+    if msg.startswith(_FIELD):
+        loc = (*loc, msg.removeprefix(_FIELD).partition(": ")[0])
+    return loc
+
+
 def _first_error(errors: list[Any]) -> Mapping[str, Any]:
     """The error to report; for text given to an ``int | Literal`` key, the Literal one.
 
@@ -910,12 +1002,16 @@ def _message(error: Mapping[str, Any]) -> str:
     if kind == "missing":
         return f"{key}: missing"
     msg = error["msg"].removeprefix("Value error, ")
+    if msg.startswith(_FIELD):  # a section's check of one of its fields
+        field, _, reason = msg.removeprefix(_FIELD).partition(": ")
+        return f"{field if key == 'config' else f'{key}.{field}'}: {reason}"
     if kind == "literal_error":
         expected = error.get("ctx", {}).get("expected", "")
         options = [o.strip().strip("'") for o in expected.replace(" or ", ",").split(",")]
-        return f"{key}: {error['input']!r} is not allowed{suggest(str(error['input']), options)}"
+        given = shown(error["input"])
+        return f"{key}: {given} is not allowed{suggest(given.strip(chr(39)), options)}"
     if kind in {"finite_number"}:
-        return f"{key}: must be finite, got {error['input']!r}"
+        return f"{key}: must be finite, got {shown(error['input'])}"
     if msg.startswith(key + ":") or (msg.split(":")[0].count(".") and ":" in msg):
         return msg
     return f"{key}: {msg}"
@@ -931,6 +1027,8 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
     defaults : bool
         Merge the named parameter set's values underneath ``data``.
     """
+    if not isinstance(data, Mapping):
+        raise ConfigError(f"config: expected a mapping of sections, got {shown(data)}")
     data = dict(data)
     mechanism = data.get("mechanism", {})
     if not isinstance(mechanism, Mapping):
@@ -938,7 +1036,8 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
     kind = mechanism.get("type", "slider-crank")
     if not isinstance(kind, str) or kind not in MECHANISM_TYPES:
         raise ConfigError(
-            f"mechanism.type: {kind!r} is not a mechanism type{suggest(str(kind), MECHANISM_TYPES)}"
+            f"mechanism.type: {shown(kind)} is not a mechanism type"
+            f"{suggest(shown(kind).strip(chr(39)), MECHANISM_TYPES)}"
         )
     data["mechanism"] = {**mechanism, "type": kind}
     if defaults:
@@ -970,6 +1069,8 @@ def read_toml(path: str | Path, error: type[Exception] = ConfigError) -> dict[st
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise error(f"{path}: not valid TOML ({exc})") from None
+    except ValueError as exc:  # an integer of thousands of digits
+        raise error(f"{path}: not readable TOML ({' '.join(str(exc).split()[:6])})") from None
     except RecursionError:
         data = None
     if data is None or _depth(data) > MAX_TOML_DEPTH:
@@ -1009,15 +1110,50 @@ def load_config(
         # a data file named in a config is found next to the config, wherever it is run
         base = Path.cwd() if path is None else Path(path).parent
         # absolute, but a link keeps its name (messages name the file the user wrote)
-        mechanism["file"] = str(Path.absolute(base / mechanism["file"]))
+        try:
+            mechanism["file"] = str(Path.absolute(base / mechanism["file"]))
+        except (OSError, ValueError) as exc:  # e.g. a NUL or a lone surrogate in the name
+            raise ConfigError(f"mechanism.file: {shown(mechanism['file'])}: {exc}") from None
     return config_from_dict(data)
+
+
+#: characters a TOML basic string must escape, besides the other control characters
+_TOML_ESCAPES = {
+    '"': '\\"',
+    "\\": "\\\\",
+    "\b": "\\b",
+    "\t": "\\t",
+    "\n": "\\n",
+    "\f": "\\f",
+    "\r": "\\r",
+}
+
+
+def _toml_string(text: str) -> str:
+    """``text`` as a TOML basic string: quotes, backslashes and control characters escaped."""
+    out = []
+    for char in text:
+        if char in _TOML_ESCAPES:
+            out.append(_TOML_ESCAPES[char])
+        elif ord(char) < 0x20 or ord(char) == 0x7F:
+            out.append(f"\\u{ord(char):04x}")
+        elif 0xD800 <= ord(char) <= 0xDFFF:  # a lone surrogate has no UTF-8 form
+            raise ConfigError(f"{shown(text)}: not a valid Unicode string")
+        else:
+            out.append(char)
+    return '"' + "".join(out) + '"'
+
+
+def _toml_key(key: str) -> str:
+    bare = key and all(c.isascii() and (c.isalnum() or c in "_-") for c in key)
+    return key if bare else _toml_string(key)
 
 
 def _toml_value(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
-        return f'"{value}"'
+        return _toml_string(value)
     if isinstance(value, float):
         return repr(value)
     if isinstance(value, list):
@@ -1030,9 +1166,9 @@ def _dump_toml(data: Mapping[str, Any], prefix: str = "") -> str:
     tables: list[tuple[str, Mapping[str, Any]]] = []
     for key, value in data.items():
         if isinstance(value, Mapping):
-            tables.append((f"{prefix}{key}", value))
+            tables.append((f"{prefix}{_toml_key(key)}", value))
         elif value is not None:
-            lines.append(f"{key} = {_toml_value(value)}")
+            lines.append(f"{_toml_key(key)} = {_toml_value(value)}")
     out = "\n".join(lines)
     for name, table in tables:
         body = _dump_toml(table, prefix=f"{name}.")

@@ -16,13 +16,21 @@ __all__ = [
     "JointwearError",
     "MaterialLimitWarning",
     "MechanismError",
+    "TimeLimitError",
     "WearFeedbackWarning",
     "WearThroughError",
 ]
 
 
 class JointwearError(Exception):
-    """Base class of all errors caused by input or by physics the model cannot handle."""
+    """Base class of all errors caused by input or by physics the model cannot handle.
+
+    The message is one line: a line break inside it (a file name with a newline,
+    a value pasted with one) is shown escaped, as ``\\n``.
+    """
+
+    def __str__(self) -> str:
+        return super().__str__().replace("\r", "\\r").replace("\n", "\\n")
 
 
 class ConfigError(JointwearError, ValueError):
@@ -50,6 +58,14 @@ class ConvergenceError(ContactError):
 
 class MechanismError(JointwearError):
     """The mechanism cannot assemble or its model assumptions are violated."""
+
+
+class TimeLimitError(JointwearError):
+    """The wall-clock limit (``--time-limit``) passed before the job finished.
+
+    A checkpointed run keeps its checkpoint and a sweep its finished cases; the
+    message names the command that continues.
+    """
 
 
 class WearThroughError(JointwearError):

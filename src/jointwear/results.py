@@ -29,7 +29,9 @@ if TYPE_CHECKING:
     from jointwear.simulation import Simulation, SimulationState
 
 __all__ = [
+    "WEAR_VARIABLES",
     "build_dataset",
+    "check_result_content",
     "combine_joints",
     "config_of",
     "joint_datasets",
@@ -322,7 +324,59 @@ def read_result(path: str | Path) -> xr.Dataset:
     for required in ("wear_depth", "peak_wear_depth"):
         if required not in dataset:
             raise DataError(f"{path}: not a jointwear result (no {required!r} variable)")
+    check_result_content(dataset, path)
     return dataset
+
+
+#: variables of a result whose values are wear depths: present, in metres, finite, >= 0
+WEAR_VARIABLES = ("wear_depth", "peak_wear_depth")
+
+
+def check_result_content(dataset: xr.Dataset, path: str | Path) -> None:
+    """Refuse a result whose wear variables are not finite, non-negative depths in metres.
+
+    A file edited or written by another program can carry the right names with
+    wrong content; every command that reads results (``plot``, ``compare``) sees
+    it refused here, naming the file and the variable.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        The result, loaded.
+    path : path-like
+        The file, for the message.
+
+    Raises
+    ------
+    DataError
+        Wrong dimensions or units, a non-numeric, non-finite or negative wear value.
+    """
+    depth = dataset["wear_depth"]
+    if "theta" not in depth.dims or "revolution" not in depth.dims:
+        raise DataError(
+            f"{path}: variable 'wear_depth' has dimensions {depth.dims}, "
+            "expected ('revolution', 'theta')"
+        )
+    if "theta" not in dataset.coords or dataset.sizes["theta"] < 3:
+        raise DataError(f"{path}: no 'theta' coordinate with at least 3 nodes")
+    for name in WEAR_VARIABLES:
+        variable = dataset[name]
+        units = variable.attrs.get("units")
+        if units != "m":
+            raise DataError(f"{path}: variable {name!r} is in {units!r}, expected 'm'")
+        if not np.issubdtype(variable.dtype, np.number) or np.issubdtype(
+            variable.dtype, np.complexfloating
+        ):
+            raise DataError(f"{path}: variable {name!r} holds {variable.dtype}, not real numbers")
+        values = np.asarray(variable.values, dtype=float)
+        if not np.all(np.isfinite(values)):
+            bad = int(np.count_nonzero(~np.isfinite(values)))
+            raise DataError(f"{path}: variable {name!r} has {bad} non-finite value(s) (nan or inf)")
+        if values.size and values.min() < 0:
+            raise DataError(
+                f"{path}: variable {name!r} has negative wear (down to {values.min():.3g} m); "
+                "a wear depth is >= 0"
+            )
 
 
 def config_of(dataset: xr.Dataset) -> Config:

@@ -33,6 +33,7 @@ cluster, writes one record per case atomically as it finishes
 
 from __future__ import annotations
 
+import asyncio
 import csv
 import itertools
 import json
@@ -58,6 +59,7 @@ from jointwear.config import (
     Config,
     apply_overrides,
     config_from_dict,
+    error_key,
     is_section,
     key_field,
     load_config,
@@ -66,6 +68,7 @@ from jointwear.config import (
 from jointwear.errors import ConfigError, DataError, JointwearError
 from jointwear.io import atomic_write, check_out, check_tree, read_input, write_json
 from jointwear.registry import suggest
+from jointwear.resources import check_case_count
 from jointwear.tribology.metrics import WEAR_METRICS
 from jointwear.units import DIMENSIONS, to_si
 
@@ -117,6 +120,8 @@ PLAN_FILE = "sweep-plan.json"
 CASES_DIR = "cases"
 CASES_CSV = "cases.csv"
 DATASET_FILE = "sweep.nc"
+#: seconds a dask scheduler has to answer the connection probe [s]
+CONNECT_TIMEOUT = 10.0
 #: statuses of a case record; "error" (internal error, lost worker) reruns on resume
 FINISHED = ("ok", "failed")
 
@@ -385,6 +390,8 @@ def expand_sweep(spec: Mapping[str, Any], base: Config, source: str = "sweep") -
         for value in values:
             _check_value(base, dotted, value, f"{source}: [grid] {dotted}")
         grid_axes.append([(dotted, v) for v in values])
+    grid_count = math.prod(len(axis) for axis in grid_axes)
+    check_case_count(grid_count, f"{source}: [grid]")
     grid_points = [dict(point) for point in itertools.product(*grid_axes)]
 
     zip_rows: list[dict[str, Any]] = [{}]
@@ -413,6 +420,9 @@ def expand_sweep(spec: Mapping[str, Any], base: Config, source: str = "sweep") -
             raise ConfigError(f"{source}: samples: missing (how many random samples to draw)")
         if isinstance(samples, bool) or not isinstance(samples, int) or samples < 1:
             raise ConfigError(f"{source}: samples: expected a positive integer, got {samples!r}")
+        check_case_count(
+            grid_count * len(zip_rows) * samples, f"{source}: samples ({samples}) x [grid] x [zip]"
+        )
         if seed is None:
             seed = 0
         if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
@@ -426,6 +436,7 @@ def expand_sweep(spec: Mapping[str, Any], base: Config, source: str = "sweep") -
     elif seed is not None:
         raise ConfigError(f"{source}: seed: given without a [sample] table")
 
+    check_case_count(grid_count * len(zip_rows), f"{source}: [grid] x [zip]")
     if not (tables["grid"] or tables["zip"] or tables["sample"]):
         raise ConfigError(f"{source}: nothing to sweep; give a [grid], [zip] or [sample] table")
 
@@ -487,10 +498,7 @@ def _check_value(base: Config, dotted: str, value: Any, where: str) -> None:
         Config.model_validate(data)
     except ValidationError as exc:
         parts = tuple(dotted.split("."))
-        own = any(
-            tuple(p for p in error["loc"] if isinstance(p, str))[: len(parts)] == parts
-            for error in exc.errors()
-        )
+        own = any(error_key(error)[: len(parts)] == parts for error in exc.errors())
         if not own:
             return
         try:
@@ -705,7 +713,7 @@ def run_sweep(
     workers: int | None = None,
     resume: bool = False,
     progress: Callable[[int, int], None] | None = None,
-    connect_timeout: float = 10.0,
+    connect_timeout: float | None = None,
 ) -> SweepResult:
     """Run every case of ``plan``, writing results into ``out``.
 
@@ -726,8 +734,9 @@ def run_sweep(
         Keep the finished cases already in ``out``; run the others.
     progress : callable, optional
         ``progress(cases_done, cases_total)``.
-    connect_timeout : float
-        Seconds to wait for the dask scheduler [s].
+    connect_timeout : float, optional
+        Seconds to wait for the dask scheduler to answer [s]; default
+        :data:`CONNECT_TIMEOUT`.
     """
     start = time.perf_counter()
     # a link or special file planted inside must never redirect a write or a cleanup
@@ -744,7 +753,9 @@ def run_sweep(
         )
     own_client = client is None and scheduler is not None
     if own_client:  # connect before anything is written
-        client = _connect(scheduler, connect_timeout)
+        client = _connect(
+            scheduler, CONNECT_TIMEOUT if connect_timeout is None else connect_timeout
+        )
     try:
         return _run(plan, out, client, workers, resume, progress, start)
     finally:
@@ -888,11 +899,13 @@ def _connect(scheduler: str, timeout: float) -> Any:
 
 
 def _probe(scheduler: str, timeout: float) -> None:
-    """Check that a TCP scheduler address parses and accepts connections.
+    """Check that a TCP address is a dask scheduler that answers within ``timeout`` [s].
 
     A ``Client`` that fails to connect is half built: at interpreter exit its
-    destructor waits for a loop that never ran and prints a traceback. Probing
-    first keeps a wrong address a one-line error.
+    destructor waits for a loop that never ran and prints a traceback; and a
+    server that accepts the connection but never answers would keep it waiting.
+    So first the address is parsed, a TCP connection opened, and the scheduler
+    asked for its identity (dask's own handshake), all within ``timeout``.
     """
     import socket
 
@@ -900,9 +913,20 @@ def _probe(scheduler: str, timeout: float) -> None:
 
     try:
         protocol, location = parse_address(scheduler)
+        if protocol == "inproc":
+            # a scheduler in this very process (a LocalCluster without processes)
+            from distributed.comm.inproc import global_manager
+
+            if global_manager.get_listener_for(location) is None:
+                raise ValueError("no scheduler at this in-process address")
+            return
         if protocol not in ("tcp", "tls"):
-            return  # other transports (inproc, ucx): leave them to dask
+            # a Client would wait for a transport that is not there and fail at exit
+            # with a traceback
+            raise ValueError(f"protocol {protocol!r} is not supported; give tcp://host:port")
         host, port = parse_host_port(location)
+        if not 0 < int(port) < 65536:
+            raise ValueError(f"port {port} is not in 1..65535")
     except (ValueError, TypeError) as exc:
         raise ConfigError(f"--scheduler: cannot connect to {scheduler} ({exc})") from None
     try:
@@ -911,6 +935,41 @@ def _probe(scheduler: str, timeout: float) -> None:
     except OSError as exc:
         why = _one_line(str(exc)) or type(exc).__name__
         raise ConfigError(f"--scheduler: cannot connect to {scheduler} ({why})") from None
+    if protocol != "tcp":
+        return  # TLS needs the cluster's certificates: the Client will handshake
+    silent = ConfigError(
+        f"--scheduler: no dask scheduler answered at {scheduler} within {timeout:g} s"
+    )
+    from concurrent.futures import ThreadPoolExecutor
+    from concurrent.futures import TimeoutError as FutureTimeout
+
+    # in a thread of its own: the caller may be inside an event loop (a notebook)
+    executor = ThreadPoolExecutor(1, thread_name_prefix="jointwear-probe")
+    try:
+        reply = executor.submit(asyncio.run, _identity(scheduler, timeout)).result(timeout + 5)
+    except (FutureTimeout, TimeoutError, OSError) as exc:
+        raise silent from exc
+    except Exception as exc:  # the comm's own errors: closed, bad handshake ...
+        raise silent from exc
+    finally:
+        executor.shutdown(wait=False)
+    if not isinstance(reply, Mapping) or reply.get("type") != "Scheduler":
+        raise ConfigError(f"--scheduler: {scheduler} answered, but is not a dask scheduler")
+
+
+async def _identity(address: str, timeout: float) -> Any:
+    """The ``identity`` reply of the dask server at ``address`` (within ``timeout`` [s])."""
+    from distributed.comm import connect
+
+    async def ask() -> Any:
+        comm = await connect(address, timeout=timeout)
+        try:
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    return await asyncio.wait_for(ask(), timeout)
 
 
 def _run_dask(

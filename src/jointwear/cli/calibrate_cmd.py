@@ -9,7 +9,16 @@ from typing import Annotated, Any
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, SetOpt, UnitsOpt, app, console, emit_json, load
+from jointwear.cli.common import (
+    JsonOpt,
+    MaxMemoryOpt,
+    SetOpt,
+    UnitsOpt,
+    app,
+    console,
+    emit_json,
+    load,
+)
 from jointwear.errors import ConfigError
 
 CalConfigArg = Annotated[
@@ -103,6 +112,7 @@ def calibrate(
     reference: ReferenceOpt = None,
     loads: LoadsOpt = "50 N,100 N,200 N,400 N",
     json_: JsonOpt = False,
+    max_memory: MaxMemoryOpt = None,
 ) -> None:
     """Fit model parameters to measured wear profiles by least squares.
 
@@ -130,12 +140,14 @@ def calibrate(
     from jointwear.measurement.compare import CIRCLE_FITS, PROFILE_CHOICES
     from jointwear.measurement.io import length_unit_factor
     from jointwear.registry import suggest
+    from jointwear.resources import check_run
 
     if config is None:
         raise ConfigError("CONFIG: missing; give the config of the measured runs (or --paper-row)")
     if config.suffix.lower() != ".toml" and config.suffix.lower() in {".csv", ".txt", ".dat"}:
         raise ConfigError(f"CONFIG: {config} looks like a measurement; give the config first")
     base = load(config, set_)
+    check_run(base, max_memory)  # every trial is a run of this size
     if not fit:
         raise ConfigError("--fit: name at least one parameter, e.g. --fit wear_coefficient")
     parameters = [parse_fit(text, base) for text in fit]

@@ -17,7 +17,9 @@ __all__ = [
     "ConfigArg",
     "DebugOpt",
     "JsonOpt",
+    "MaxMemoryOpt",
     "SetOpt",
+    "TimeLimitOpt",
     "UnitsOpt",
     "app",
     "console",
@@ -63,6 +65,25 @@ UnitsOpt = Annotated[
     typer.Option("--units", help="Length unit of columns without one (default m), e.g. mm."),
 ]
 DebugOpt = Annotated[bool, typer.Option("--debug", help="Show tracebacks.")]
+MaxMemoryOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--max-memory",
+        help='Refuse work whose arrays would need more memory than this, e.g. "16 GiB" '
+        "(default: JOINTWEAR_MAX_MEMORY, else half the RAM, at most 8 GiB).",
+        show_default=False,
+    ),
+]
+TimeLimitOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--time-limit",
+        help='Stop with exit status 2 after this wall-clock time, e.g. "2 h" (a bare number '
+        "is seconds); checked between revolutions (run) or cases (sweep, life). A "
+        "checkpointed run or a sweep can continue with --resume.",
+        show_default=False,
+    ),
+]
 
 
 @app.callback()

@@ -73,11 +73,11 @@ RevolutionOpt = Annotated[
 
 def parse_align(text: str) -> str | float:
     """``"best"`` or an angle with units (``"12 deg"``; a bare number is radians)."""
-    from jointwear.units import to_si
+    from jointwear.units import to_angle
 
     if text.strip().lower() == "best":
         return "best"
-    return to_si(text, "angle", "--align")
+    return to_angle(text, "--align")
 
 
 def simulated_profile(dataset: Any, path: Path, revolution: int | None) -> tuple[np.ndarray, int]:

@@ -11,7 +11,7 @@ from rich.table import Table
 from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json, load
 from jointwear.contact import CONTACT_MODELS, MODEL_DESCRIPTIONS, ContactParameters, solve
 from jointwear.geometry import BushingContour, Pin
-from jointwear.units import to_si
+from jointwear.units import to_angle, to_si
 
 
 @app.command()
@@ -33,7 +33,7 @@ def contact(
         overrides.append(f"contact.model={model}")
     cfg = load(config, overrides)
     force = to_si(load_, "force", "--load")
-    angle = to_si(azimuth, "angle", "--azimuth")
+    angle = to_angle(azimuth, "--azimuth")
     if force < 0:
         from jointwear.errors import ConfigError
 

@@ -8,9 +8,19 @@ from typing import Annotated
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json, load
+from jointwear.cli.common import (
+    ConfigArg,
+    JsonOpt,
+    MaxMemoryOpt,
+    SetOpt,
+    TimeLimitOpt,
+    app,
+    console,
+    emit_json,
+    load,
+)
 from jointwear.cli.run_cmd import ProgressBar, QuietOpt
-from jointwear.cli.sweep_cmd import SchedulerOpt, WorkersOpt
+from jointwear.cli.sweep_cmd import SchedulerOpt, WorkersOpt, limited
 from jointwear.errors import ConfigError
 
 SampleOpt = Annotated[
@@ -41,6 +51,8 @@ def life(
     workers: WorkersOpt = None,
     json_: JsonOpt = False,
     quiet: QuietOpt = False,
+    max_memory: MaxMemoryOpt = None,
+    time_limit: TimeLimitOpt = None,
 ) -> None:
     """Life to the first [life] limit as a distribution: median, 5 % and 95 % life.
 
@@ -49,7 +61,10 @@ def life(
     """
     from jointwear.io import atomic_path, check_out, check_tree
     from jointwear.life import life_plan, parse_distribution, plot_life, run_life
+    from jointwear.resources import check_case_count, parse_time_limit
 
+    seconds = parse_time_limit(time_limit)
+    check_case_count(cases, "--cases")
     if out is None:
         raise ConfigError("--out: missing; the life study needs a directory for its cases")
     out = check_out(out, files=("life.json", "life.png", "cases.csv", "sweep.nc"), dirs=("cases",))
@@ -58,7 +73,8 @@ def life(
     samples = dict(parse_distribution(text) for text in sample or [])
     plan = life_plan(base, samples, cases, seed)
     with ProgressBar("cases", quiet=quiet, delay=0.0) as bar:
-        result = run_life(plan, out, scheduler=scheduler, workers=workers, progress=bar)
+        progress = limited(bar, plan, out, seconds, workers, max_memory, "life")
+        result = run_life(plan, out, scheduler=scheduler, workers=workers, progress=progress)
     with atomic_path(out / "life.png") as tmp:
         plot_life(result).savefig(tmp, format="png", dpi=120)
     summary = result.summary()

@@ -10,6 +10,7 @@ from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
+    MaxMemoryOpt,
     MeasuredArg,
     ThresholdOpt,
     UnitsOpt,
@@ -25,7 +26,8 @@ from jointwear.measurement.profile import (
     measured_wear_profile,
     wear_metrics,
 )
-from jointwear.units import to_si
+from jointwear.resources import check_nodes
+from jointwear.units import to_angle, to_si
 
 RadiusOpt = Annotated[
     str,
@@ -71,6 +73,7 @@ def measure(
     axial_length: AxialLengthOpt = None,
     density: DensityOpt = None,
     json_: JsonOpt = False,
+    max_memory: MaxMemoryOpt = None,
 ) -> None:
     """Fit the centre of a measured worn bushing and report its wear.
 
@@ -83,6 +86,7 @@ def measure(
         raise ConfigError(f"--radius: must be > 0, got {radius!r}")
     if nodes < 16:
         raise ConfigError(f"--nodes: must be >= 16, got {nodes}")
+    check_nodes(nodes, 0, "--nodes", max_memory)
     if not 0 <= threshold < 1:
         raise ConfigError(f"--threshold: must be in [0, 1), got {threshold:g}")
     if profile not in PROFILE_METHODS:
@@ -91,7 +95,7 @@ def measure(
     depth_floor = to_si(floor, "length", "--floor")
     if depth_floor < 0:
         raise ConfigError(f"--floor: must be >= 0, got {floor!r}")
-    offset = to_si(angle_offset, "angle", "--angle-offset")
+    offset = to_angle(angle_offset, "--angle-offset")
     length = None if axial_length is None else to_si(axial_length, "length", "--axial-length")
     rho = None if density is None else to_si(density, "density", "--density")
     for key, value in (("--axial-length", length), ("--density", rho)):

@@ -14,7 +14,9 @@ from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
+    MaxMemoryOpt,
     SetOpt,
+    TimeLimitOpt,
     app,
     console,
     emit_json,
@@ -180,6 +182,8 @@ def run(
     ] = True,
     checkpoint_every: CheckpointOpt = None,
     resume: ResumeOpt = None,
+    max_memory: MaxMemoryOpt = None,
+    time_limit: TimeLimitOpt = None,
 ) -> None:
     """Simulate wear over revolutions (dynamics -> pressure -> Archard -> contour update)."""
     from jointwear.checkpoint import (
@@ -188,11 +192,13 @@ def run(
         has_checkpoint,
         load_checkpoint,
     )
-    from jointwear.errors import ConfigError, JointwearError
+    from jointwear.errors import ConfigError, JointwearError, TimeLimitError
     from jointwear.interrupts import Interrupted
     from jointwear.io import check_out
+    from jointwear.resources import Deadline, check_run, parse_time_limit
     from jointwear.simulation import Simulation
 
+    seconds = parse_time_limit(time_limit)
     state = None
     if resume is not None:
         if config is not None:
@@ -229,13 +235,23 @@ def run(
         every = cfg.simulation.checkpoint_every
         checkpointer = Checkpointer(out, cfg) if out is not None and every > 0 else None
         name = config.name
+    check_run(cfg, max_memory)
+    resume_command = f"jointwear run --resume {out}" if checkpointer is not None else None
+    deadline = Deadline(seconds, "revolutions", resume_command)
     simulation = Simulation(cfg)
     created = out is not None and not out.exists()
     if checkpointer is not None and state is None and resume is None:
         checkpointer.begin()
     try:
         with ProgressBar("revolutions", quiet=quiet) as bar:
-            result = simulation.run(progress=bar, state=state, on_step=checkpointer)
+
+            def tick(done: int, total: int) -> None:
+                bar(done, total)
+                deadline.check(done, total)
+
+            result = simulation.run(progress=tick, state=state, on_step=checkpointer)
+    except TimeLimitError:
+        raise  # a checkpoint stays for --resume
     except JointwearError as exc:
         # the run cannot finish from this state: leave no checkpoint (or empty folder) behind;
         # a checkpoint that could not be written (full disk) keeps the previous one

@@ -2,15 +2,19 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, app, console, emit_json
+from jointwear.cli.common import JsonOpt, MaxMemoryOpt, TimeLimitOpt, app, console, emit_json
 from jointwear.cli.run_cmd import ProgressBar, QuietOpt
 from jointwear.errors import ConfigError
+
+if TYPE_CHECKING:
+    from jointwear.sweep import SweepPlan
 
 SweepArg = Annotated[
     Path | None,
@@ -49,6 +53,46 @@ SweepResumeOpt = Annotated[
     ),
 ]
 
+
+#: config keys that set the memory of a case
+SIZING_KEYS = {
+    "contact.nodes",
+    "simulation.steps_per_revolution",
+    "simulation.saved_profiles",
+    "mechanism.clearance_joint",
+}
+
+
+def limited(
+    bar: ProgressBar,
+    plan: SweepPlan,
+    out: Path,
+    seconds: float | None,
+    workers: int | None,
+    max_memory: str | None,
+    command: str,
+) -> Callable[[int, int], None]:
+    """Check the plan's memory, then a progress callback that stops at the time limit."""
+    from jointwear.resources import Deadline, available_cpus, check_sweep, run_memory
+
+    parallel = workers or min(available_cpus(), max(1, len(plan.cases)))
+    largest = plan.base
+    if SIZING_KEYS & set(plan.keys):  # the cases differ in size: the largest counts
+        configs = [plan.config(case) for case in plan.cases if case.invalid is None]
+        largest = max(
+            configs, key=lambda c: sum(size for *_, size in run_memory(c)), default=plan.base
+        )
+    check_sweep(len(plan.cases), largest, f"{plan.source}: cases", max_memory, parallel)
+    resume = f"jointwear sweep --resume {out}" if command == "sweep" else None
+    deadline = Deadline(seconds, "cases", resume)
+
+    def progress(done: int, total: int) -> None:
+        bar(done, total)
+        deadline.check(done, total)
+
+    return progress
+
+
 #: failed cases listed in the human-readable summary
 SHOWN_FAILURES = 10
 
@@ -62,10 +106,14 @@ def sweep(
     resume: SweepResumeOpt = None,
     json_: JsonOpt = False,
     quiet: QuietOpt = False,
+    max_memory: MaxMemoryOpt = None,
+    time_limit: TimeLimitOpt = None,
 ) -> None:
     """Run a parameter sweep (grid, zipped lists, random samples) and collect the metrics."""
+    from jointwear.resources import parse_time_limit
     from jointwear.sweep import load_plan, load_sweep, run_sweep
 
+    seconds = parse_time_limit(time_limit)
     if workers is not None and workers < 1:
         raise ConfigError(f"--workers: must be >= 1, got {workers}")
     if scheduler is not None and workers is not None:
@@ -95,7 +143,7 @@ def sweep(
                 scheduler=scheduler,
                 workers=workers,
                 resume=resume is not None,
-                progress=bar,
+                progress=limited(bar, plan, out, seconds, workers, max_memory, "sweep"),
             )
     except KeyboardInterrupt as exc:
         from jointwear.interrupts import Interrupted

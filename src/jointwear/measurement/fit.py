@@ -70,6 +70,7 @@ __all__ = [
     "CircleFit",
     "angular_extent",
     "circle_residuals",
+    "coordinate_resolution",
     "fit_circle_kasa",
     "fit_circle_least_squares",
     "fit_circle_robust",
@@ -100,6 +101,9 @@ class CircleFit:
         True if the radius was given, not fitted.
     inliers : ndarray of bool, optional
         Which points the final fit used (``None`` means all of them).
+    resolution : float
+        Smallest distance the points' coordinates resolve [m]
+        (:func:`coordinate_resolution`): depths within it are round-off, not wear.
     """
 
     center_x: float
@@ -110,6 +114,7 @@ class CircleFit:
     points_used: int = 0
     radius_fixed: bool = False
     inliers: NDArray[np.bool_] | None = field(default=None, repr=False, compare=False)
+    resolution: float = 0.0
 
     @property
     def center(self) -> tuple[float, float]:
@@ -141,6 +146,32 @@ def circle_residuals(
         ``hypot(x - center_x, y - center_y) - radius`` [m].
     """
     return np.hypot(np.asarray(x, float) - center_x, np.asarray(y, float) - center_y) - radius
+
+
+#: round-off of a coordinate, in units in the last place of the largest one
+_RESOLUTION_ULPS = 8
+
+
+def coordinate_resolution(x: ArrayLike, y: ArrayLike) -> float:
+    """Smallest distance that coordinates as large as these resolve [m].
+
+    A double carries about 16 significant digits: a ring of 7.5 mm measured in a
+    frame 10 km from the origin has coordinates resolved to ~2e-12 m only, and
+    distances from any centre scatter by that much however the fit is done.
+    Depths within this resolution are round-off and must not count as wear.
+
+    Parameters
+    ----------
+    x, y : array_like
+        Point coordinates [m].
+
+    Returns
+    -------
+    float
+        ``8`` units in the last place of the largest coordinate magnitude [m].
+    """
+    largest = max(float(np.max(np.abs(x), initial=0.0)), float(np.max(np.abs(y), initial=0.0)))
+    return float(_RESOLUTION_ULPS * np.spacing(largest))
 
 
 def _as_points(x: ArrayLike, y: ArrayLike, minimum: int = 3) -> tuple[FloatArray, FloatArray]:
@@ -209,7 +240,9 @@ def fit_circle_kasa(x: ArrayLike, y: ArrayLike) -> CircleFit:
     x, y = _as_points(x, y)
     cx, cy, r = _kasa(x, y)
     residual = circle_residuals(x, y, cx, cy, r)
-    return CircleFit(cx, cy, r, _rms(residual), "kasa", x.size, False, None)
+    return CircleFit(
+        cx, cy, r, _rms(residual), "kasa", x.size, False, None, coordinate_resolution(x, y)
+    )
 
 
 def _geometric_fit(
@@ -290,7 +323,10 @@ def fit_circle_least_squares(x: ArrayLike, y: ArrayLike) -> CircleFit:
     start = _kasa(x, y)
     cx, cy, r = _geometric_fit(x, y, start, radius=None)
     residual = circle_residuals(x, y, cx, cy, r)
-    return CircleFit(cx, cy, r, _rms(residual), "least_squares", x.size, False, None)
+    return CircleFit(
+        cx, cy, r, _rms(residual), "least_squares", x.size, False, None,
+        coordinate_resolution(x, y),
+    )
 
 
 def fit_circle_robust(
@@ -500,7 +536,7 @@ def fit_circle_robust(
     residual = circle_residuals(x[kept], y[kept], cx, cy, radius)
     return CircleFit(
         float(cx), float(cy), float(radius), _rms(residual), "robust",
-        int(np.count_nonzero(kept)), fixed, kept,
+        int(np.count_nonzero(kept)), fixed, kept, coordinate_resolution(x, y),
     )
 
 

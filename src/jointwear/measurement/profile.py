@@ -116,6 +116,8 @@ def measured_wear_profile(
     # angle in the bushing frame
     angle = np.mod(np.arctan2(dy, dx) - angle_offset, 2 * np.pi)
     depth = np.hypot(dx, dy) - original_radius
+    # depths within the coordinates' round-off are no wear (a ring far from the origin)
+    depth = np.where(np.abs(depth) <= fit.resolution, 0.0, depth)
     theta = node_angles(nodes)
     if method == "bin":
         nearest = np.rint(angle / (2 * np.pi / nodes)).astype(int) % nodes
