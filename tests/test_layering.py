@@ -42,7 +42,11 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "jointwear.solvers",
             "jointwear.state",
             "jointwear.parameter_sets",
+            # the materials library: named materials that configs refer to
+            "jointwear.materials",
             "jointwear.config",
+            # memory and time budgets checked before a run or sweep starts
+            "jointwear.resources",
             # the bushing contour and the pin: the data every stage works on
             "jointwear.geometry",
         ),

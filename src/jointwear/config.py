@@ -1111,6 +1111,8 @@ def load_config(
         base = Path.cwd() if path is None else Path(path).parent
         # absolute, but a link keeps its name (messages name the file the user wrote)
         try:
+            if "\x00" in mechanism["file"]:
+                raise ValueError("embedded null byte")
             mechanism["file"] = str(Path.absolute(base / mechanism["file"]))
         except (OSError, ValueError) as exc:  # e.g. a NUL or a lone surrogate in the name
             raise ConfigError(f"mechanism.file: {shown(mechanism['file'])}: {exc}") from None

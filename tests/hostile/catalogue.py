@@ -174,8 +174,9 @@ naming the checkpoint file (never a config key), a state that
 If the disk fills up while a run writes a checkpoint, the run stops (exit 2) with one
 line, `error: DIR/checkpoint.npz: cannot write the checkpoint (no space left on device);
 the previous checkpoint is kept: make room, then ...` followed by the resume command, and
-the previous checkpoint stays usable. The refused checkpoint is left in place. A checkpoint written by an older jointwear
-(without a checksum) is refused naming its format; start that run again.
+the previous checkpoint stays usable. The refused checkpoint is left in place. A checkpoint
+written by an older jointwear (without a checksum) is refused naming its format;
+start that run again.
 
 ## Warnings
 
