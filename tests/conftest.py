@@ -6,10 +6,17 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import settings
 
 from jointwear.config import Config, load_config
 from jointwear.contact import ContactParameters
 from jointwear.geometry import BushingContour, Pin
+
+# The default run draws the same examples every time, so CI cannot fail on a lucky draw;
+# `python -m pytest --hypothesis-profile=explore` draws fresh ones to look for new failures.
+settings.register_profile("default", derandomize=True)
+settings.register_profile("explore", derandomize=False)
+settings.load_profile("default")
 
 REPO = Path(__file__).resolve().parents[1]
 PAPER_CONFIG = REPO / "tests" / "data" / "paper_joint.toml"
