@@ -106,6 +106,7 @@ def main(argv: list[str] | None = None) -> None:
 def _main(args: list[str], debug: bool) -> None:
     from jointwear.interrupts import exit_code, last, note
 
+    earlier = last()  # an interrupt of an earlier in-process call is not this one's
     empty = _empty_path_option(args)
     if empty is not None:
         _say(f"error: {empty}: empty path")
@@ -146,7 +147,33 @@ def _main(args: list[str], debug: bool) -> None:
         _say(note(exc))
         sys.exit(exit_code(exc))
     except Exception as exc:
+        interrupt = _interrupt_behind(exc, earlier)
+        if interrupt is not None:  # a signal arrived inside code that wrapped it (an import)
+            _say(note(interrupt))
+            sys.exit(exit_code(interrupt))
         if debug:
             raise
         _say(f"internal error: {type(exc).__name__}: {exc} (rerun with --debug for the traceback)")
         sys.exit(1)
+
+
+def _interrupt_behind(exc: BaseException, earlier: object) -> KeyboardInterrupt | None:
+    """The interrupt an exception wraps (e.g. a signal during a class definition), if any.
+
+    Parameters
+    ----------
+    exc : BaseException
+        The exception that ended the command.
+    earlier : Interrupted or None
+        The latest interrupt before the command started (not counted).
+    """
+    from jointwear.interrupts import last
+
+    seen: set[int] = set()
+    while exc is not None and id(exc) not in seen:
+        if isinstance(exc, KeyboardInterrupt):
+            return exc
+        seen.add(id(exc))
+        exc = exc.__cause__ or exc.__context__
+    latest = last()
+    return latest if latest is not earlier else None
