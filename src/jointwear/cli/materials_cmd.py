@@ -5,6 +5,8 @@ from __future__ import annotations
 from typing import Annotated
 
 import typer
+from rich import box
+from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
@@ -43,14 +45,21 @@ def materials(
             )
         console.print(table)
         return
-    table = Table(title=escape('materials library ([materials] bushing = "NAME")'))
+    # numbers only (units under the headers): the table fits 80 columns; the description
+    # and the source of every value are on `jointwear materials NAME`
+    table = Table(
+        title=escape('materials library ([materials] bushing = "NAME")'),
+        box=box.SIMPLE_HEAD,
+        pad_edge=False,
+    )
     table.add_column("name", no_wrap=True)
     for key, header in OVERVIEW:
         unit = display_unit(key)
-        table.add_column(escape(f"{header} [{unit}]" if unit else header), justify="right")
-    table.add_column("description")
+        label = f"{header}\n[{unit}]" if unit else header
+        table.add_column(escape(label), justify="right", no_wrap=True)
     for material in entries:
         cells = [material.display(key, unit=False) for key, _ in OVERVIEW]
-        table.add_row(material.name, *cells, material.description)
-    console.print(table)
-    console.print("Sources of every value: `jointwear materials NAME` (or --json).")
+        table.add_row(material.name, *cells)
+    # never cut a number: wider than the terminal wraps, which a pipe or a log does not
+    Console(width=max(console.width, 104), highlight=False).print(table)
+    console.print("Description and source of every value: `jointwear materials NAME` (or --json).")
