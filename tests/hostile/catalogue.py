@@ -184,10 +184,9 @@ Warnings (the physics ones, such as contact loss or wear past the clearance, and
 library's) are printed as one line each, `warning: ...`, never with a source line, and
 each message once per command; this also holds for a warning raised while the command
 line is still importing. Warnings of the cases of a sweep are recorded with each case
-(`cases/<case>.json`) instead of being printed. Progress bars (`run`, `sweep`, `life`)
-only appear on a terminal and are erased when the command ends, so a failing command
-leaves its `error:` line as the last line on stderr (`reproduce` also prints one
-`[i/n] case` line per case unless `--quiet` or `--json`).
+(`cases/<case>.json`) instead of being printed. Progress bars (`run`, `sweep`, `life`,
+`reproduce`) only appear on a terminal and are erased when the command ends, so a failing
+command leaves its `error:` line as the only line on stderr.
 
 ## Numbers, units, memory and time
 

@@ -7,7 +7,8 @@ from typing import Annotated
 
 import typer
 
-from jointwear.cli.common import JsonOpt, SetOpt, app, console, emit_json, err_console
+from jointwear.cli.common import JsonOpt, SetOpt, app, console, emit_json
+from jointwear.cli.run_cmd import ProgressBar
 from jointwear.config import parse_override
 
 
@@ -49,13 +50,17 @@ def reproduce(
                 raise ConfigError(f"--case: unknown paper case {name!r}{suggest(name, known)}")
     overrides = dict(parse_override(o) for o in (set_ or []))
 
-    def progress(name: str, done: int, total: int) -> None:
-        if not quiet and not json_ and name != "done":
-            err_console.print(f"[{done + 1}/{total}] {name}", highlight=False)
-
-    with staged_output(out, files=files, dirs=dirs) as staging:  # appears when complete
+    # a bar on a terminal, erased at the end: an error stays the only line on stderr
+    with (
+        ProgressBar("paper cases", quiet=quiet or json_, delay=0.0) as bar,
+        staged_output(out, files=files, dirs=dirs) as staging,  # appears when complete
+    ):
         report = run_reproduction(
-            staging, progress=progress, calibrate=calibrate, cases=case, overrides=overrides
+            staging,
+            progress=lambda name, done, total: bar(done, total),
+            calibrate=calibrate,
+            cases=case,
+            overrides=overrides,
         )
     if json_:
         emit_json(report)
