@@ -108,6 +108,13 @@ def _scalar_types(annotation: Any) -> frozenset[type]:
     return frozenset({annotation}) if isinstance(annotation, type) else frozenset()
 
 
+def _one_of(value: str, names: Iterable[str], what: str) -> str:
+    """``value`` if it is one of ``names``, else a ValueError with the best match."""
+    if value not in names:
+        raise ValueError(f"unknown {what} {value!r}{suggest(value, names)}")
+    return value
+
+
 class _Section(BaseModel):
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False, frozen=True)
 
@@ -511,9 +518,7 @@ class ContactConfig(_Section):
     def _known_model(cls, value: str) -> str:
         from jointwear.contact import CONTACT_MODELS
 
-        if value not in CONTACT_MODELS:
-            raise ValueError(f"unknown contact model {value!r}{suggest(value, CONTACT_MODELS)}")
-        return value
+        return _one_of(value, CONTACT_MODELS, "contact model")
 
 
 class DynamicsConfig(_Section):
@@ -559,9 +564,7 @@ class DynamicsConfig(_Section):
     def _known_model(cls, value: str) -> str:
         from jointwear.mechanism import DYNAMICS_MODELS
 
-        if value not in DYNAMICS_MODELS:
-            raise ValueError(f"unknown dynamics model {value!r}{suggest(value, DYNAMICS_MODELS)}")
-        return value
+        return _one_of(value, DYNAMICS_MODELS, "dynamics model")
 
 
 class SimulationConfig(_Section):
@@ -598,9 +601,7 @@ class WearConfig(_Section):
     def _known_law(cls, value: str) -> str:
         from jointwear.tribology.wear_laws import WEAR_LAWS
 
-        if value not in WEAR_LAWS:
-            raise ValueError(f"unknown wear law {value!r}{suggest(value, WEAR_LAWS)}")
-        return value
+        return _one_of(value, WEAR_LAWS, "wear law")
 
     @model_validator(mode="after")
     def _energy_complete(self) -> WearConfig:
@@ -644,9 +645,7 @@ class Config(_Section):
     def _known_parameter_set(cls, value: str) -> str:
         # also where the defaults are not merged (Config.replace, a sweep's cases): the
         # name is recorded with the results and must be one that exists
-        if value not in PARAMETER_SETS:
-            raise ValueError(f"unknown parameter set {value!r}{suggest(value, PARAMETER_SETS)}")
-        return value
+        return _one_of(value, PARAMETER_SETS, "parameter set")
 
     @model_validator(mode="after")
     def _life_limits_fit(self) -> Config:

@@ -18,7 +18,7 @@ import threading
 from collections.abc import Iterator
 from types import FrameType
 
-__all__ = ["Interrupted", "exit_code", "handling_signals", "last", "note"]
+__all__ = ["Interrupted", "exit_code", "handling_signals", "last", "note", "with_resume"]
 
 _SIGNALS = (signal.SIGINT, signal.SIGTERM)
 _NOTES = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated"}
@@ -64,6 +64,21 @@ def note(exc: BaseException) -> str:
     text = _NOTES.get(getattr(exc, "signum", signal.SIGINT), "interrupted")
     resume = getattr(exc, "resume", None)
     return f"{text}; continue with `{resume}`" if resume else text
+
+
+def with_resume(exc: KeyboardInterrupt, command: str) -> Interrupted:
+    """The interrupt ``exc`` carrying the command that continues the interrupted job.
+
+    Parameters
+    ----------
+    exc : KeyboardInterrupt
+        An :class:`Interrupted`, or a plain ``KeyboardInterrupt`` (counted as SIGINT).
+    command : str
+        E.g. ``jointwear run --resume DIR``, printed on the CLI's one line.
+    """
+    interrupt = exc if isinstance(exc, Interrupted) else Interrupted()
+    interrupt.resume = command
+    return interrupt
 
 
 def last() -> Interrupted | None:

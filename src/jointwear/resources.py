@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 import os
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from jointwear.errors import ConfigError, TimeLimitError
@@ -352,3 +352,18 @@ class Deadline:
         if self.resume:
             message += f"; continue with `{self.resume}`"
         raise TimeLimitError(message)
+
+    def watching(self, progress: Callable[[int, int], None]) -> Callable[[int, int], None]:
+        """A progress callback that reports to ``progress``, then checks the limit.
+
+        Parameters
+        ----------
+        progress : callable
+            ``progress(done, total)``, e.g. a progress bar [-].
+        """
+
+        def report_and_check(done: int, total: int) -> None:
+            progress(done, total)
+            self.check(done, total)
+
+        return report_and_check

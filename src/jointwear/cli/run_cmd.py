@@ -193,7 +193,7 @@ def run(
         load_checkpoint,
     )
     from jointwear.errors import ConfigError, JointwearError, TimeLimitError
-    from jointwear.interrupts import Interrupted
+    from jointwear.interrupts import with_resume
     from jointwear.io import check_out
     from jointwear.resources import Deadline, check_run, parse_time_limit
     from jointwear.simulation import Simulation
@@ -244,12 +244,8 @@ def run(
         checkpointer.begin()
     try:
         with ProgressBar("revolutions", quiet=quiet) as bar:
-
-            def tick(done: int, total: int) -> None:
-                bar(done, total)
-                deadline.check(done, total)
-
-            result = simulation.run(progress=tick, state=state, on_step=checkpointer)
+            progress = deadline.watching(bar)
+            result = simulation.run(progress=progress, state=state, on_step=checkpointer)
     except TimeLimitError:
         raise  # a checkpoint stays for --resume
     except JointwearError as exc:
@@ -264,9 +260,7 @@ def run(
     except KeyboardInterrupt as exc:
         if checkpointer is None or not checkpointer.config_path.exists():
             raise
-        interrupt = exc if isinstance(exc, Interrupted) else Interrupted()
-        interrupt.resume = f"jointwear run --resume {out}"  # on the CLI's one line
-        raise interrupt from None
+        raise with_resume(exc, f"jointwear run --resume {out}") from None
     if out is not None:
         write_outputs(result, out, plots=plots)
     if checkpointer is not None:

@@ -84,13 +84,7 @@ def limited(
         )
     check_sweep(len(plan.cases), largest, f"{plan.source}: cases", max_memory, parallel)
     resume = f"jointwear sweep --resume {out}" if command == "sweep" else None
-    deadline = Deadline(seconds, "cases", resume)
-
-    def progress(done: int, total: int) -> None:
-        bar(done, total)
-        deadline.check(done, total)
-
-    return progress
+    return Deadline(seconds, "cases", resume).watching(bar)
 
 
 #: failed cases listed in the human-readable summary
@@ -146,14 +140,12 @@ def sweep(
                 progress=limited(bar, plan, out, seconds, workers, max_memory, "sweep"),
             )
     except KeyboardInterrupt as exc:
-        from jointwear.interrupts import Interrupted
+        from jointwear.interrupts import with_resume
         from jointwear.sweep import PLAN_FILE
 
         if not (out / PLAN_FILE).is_file():
             raise
-        interrupt = exc if isinstance(exc, Interrupted) else Interrupted()
-        interrupt.resume = f"jointwear sweep --resume {out}"  # finished cases are kept
-        raise interrupt from None
+        raise with_resume(exc, f"jointwear sweep --resume {out}") from None  # cases are kept
     summary = result.summary()
     if json_:
         emit_json(summary)

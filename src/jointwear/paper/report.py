@@ -289,24 +289,16 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
             rel = fig.relative_to(path.parent) if fig.is_relative_to(path.parent) else fig
             lines += [f"### {name}", "", f"![{name}]({rel.as_posix()})", ""]
 
-    lines += _material_check_lines(path.parent / "results")
+    lines += _material_check_lines(report["cases"])
     lines += ["## Notes", "", _NOTES]
     with atomic_write(path, encoding="utf-8") as handle:
         handle.write("\n".join(lines) + "\n")
 
 
-def _material_check_lines(results: Path) -> list[str]:
-    """The engineering checks of each case's results (``results/*.nc``) as a table.
-
-    Against the bushing's limits, or the library's ``ptfe`` where the config names no
-    limits (the paper's bushing is PTFE); an exceeded limit also warns.
-    """
-    from jointwear.materials import LIMIT_KEYS, get_material
-    from jointwear.results import config_of, read_result, select_joint
-    from jointwear.tribology.metrics import engineering_checks
-
-    paths = sorted(results.glob("*.nc")) if results.is_dir() else []
-    if not paths:
+def _material_check_lines(cases: dict[str, dict]) -> list[str]:
+    """The engineering checks of each case (its summary's ``checks``) as a table."""
+    checked = {name: cases[name]["checks"] for name in sorted(cases) if "checks" in cases[name]}
+    if not checked:
         return []
     lines = [
         "## Engineering checks against the bushing material's limits",
@@ -320,22 +312,11 @@ def _material_check_lines(results: Path) -> list[str]:
         "| PV limit [MPa m/s] | within the limits |",
         "|---|---|---|---|---|---|---|",
     ]
-    for path in paths:
-        dataset = select_joint(read_result(path))
-        config = config_of(dataset)
-        bushing = config.materials.bushing
-        named = any(getattr(bushing, k) is not None for k in LIMIT_KEYS)
-        ptfe = get_material("ptfe")
-        checks = engineering_checks(
-            dataset,
-            config,
-            limits=None if named else ptfe.limits(),
-            name=bushing.name if named else ptfe.name,
-        )
+    for name, checks in checked.items():
         verdicts = [c["ok"] for c in checks.values() if c["ok"] is not None]
         limit = checks["pv"]["limit"]
         lines.append(
-            f"| `{path.stem}` | {checks['nominal_pressure']['value'] / 1e6:.3g} "
+            f"| `{name}` | {checks['nominal_pressure']['value'] / 1e6:.3g} "
             f"| {checks['peak_pressure']['value'] / 1e6:.3g} "
             f"| {checks['sliding_speed']['value'] * 1e3:.3g} | {checks['pv']['value'] / 1e6:.3g} "
             f"| {'—' if limit is None else f'{limit / 1e6:.3g}'} "

@@ -291,6 +291,30 @@ def run_cases(
     return summaries, results
 
 
+def material_checks(result: Any) -> dict[str, dict[str, Any]]:
+    """The engineering checks of a paper case against its bushing's limits.
+
+    The paper's bushing is PTFE but its configs name no limits: without limits of its
+    own the bushing is checked against the materials library's ``ptfe`` (an exceeded
+    limit warns).
+
+    Parameters
+    ----------
+    result : jointwear.simulation.WearResult
+        A single-joint run.
+    """
+    from jointwear.materials import LIMIT_KEYS, get_material
+    from jointwear.tribology.metrics import engineering_checks
+
+    bushing = result.config.materials.bushing
+    if any(getattr(bushing, key) is not None for key in LIMIT_KEYS):
+        return engineering_checks(result.joint_dataset(), result.config)
+    ptfe = get_material("ptfe")
+    return engineering_checks(
+        result.joint_dataset(), result.config, limits=ptfe.limits(), name=ptfe.name
+    )
+
+
 def wear_budget(result: Any) -> dict[str, float]:
     """What a run's wear volume is made of, by Archard's law summed over the bushing.
 
@@ -493,6 +517,8 @@ def reproduce(
         overrides.update(calibration.values)
     names = cases or case_names()
     summaries, results = run_cases(names, overrides, progress)
+    for name, result in results.items():
+        summaries[name]["checks"] = material_checks(result)
     datasets = {name: result.dataset for name, result in results.items()}
     for name, result in results.items():
         result.to_netcdf(out / "results" / f"{name}.nc")
