@@ -38,6 +38,8 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "jointwear.units",
             "jointwear.registry",
             "jointwear.tables",
+            # signals as one exception (standard library only), used by io and the CLI
+            "jointwear.interrupts",
             "jointwear.io",
             "jointwear.solvers",
             "jointwear.state",

@@ -18,11 +18,21 @@ import threading
 from collections.abc import Iterator
 from types import FrameType
 
-__all__ = ["Interrupted", "exit_code", "handling_signals", "last", "note", "with_resume"]
+__all__ = [
+    "Interrupted",
+    "exit_code",
+    "handling_signals",
+    "last",
+    "note",
+    "raise_pending",
+    "with_resume",
+]
 
 _SIGNALS = (signal.SIGINT, signal.SIGTERM)
 _NOTES = {signal.SIGINT: "interrupted", signal.SIGTERM: "terminated"}
 _last: list[Interrupted] = []
+#: the interrupt a signal raised, until the command line has reported it
+_pending: list[Interrupted] = []
 
 
 class Interrupted(KeyboardInterrupt):
@@ -90,7 +100,20 @@ def _raise(signum: int, frame: FrameType | None) -> None:
     # a second signal while the first one is being cleaned up is ignored
     for each in _SIGNALS:
         signal.signal(each, signal.SIG_IGN)
-    raise Interrupted(signum)
+    interrupt = Interrupted(signum)
+    _pending[:] = [interrupt]
+    raise interrupt
+
+
+def raise_pending() -> None:
+    """Raise the interrupt of a signal whose exception was swallowed on the way.
+
+    A handler's exception raised inside a weakref callback or a ``__del__`` is printed
+    and dropped by Python, and the work would go on. Called where work continues (a
+    progress report, before publishing output), this stops it there instead.
+    """
+    if _pending:
+        raise _pending.pop()
 
 
 @contextlib.contextmanager
@@ -105,6 +128,7 @@ def handling_signals() -> Iterator[None]:
         return
     previous = {each: signal.getsignal(each) for each in _SIGNALS}
     _last.clear()
+    _pending.clear()
     for each, handler in previous.items():
         if handler is not signal.SIG_IGN:
             signal.signal(each, _raise)

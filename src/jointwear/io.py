@@ -32,6 +32,7 @@ from pathlib import Path
 from typing import IO, Any
 
 from jointwear.errors import ConfigError, DataError
+from jointwear.interrupts import raise_pending
 
 __all__ = [
     "MAX_INPUT_BYTES",
@@ -435,6 +436,7 @@ def staged_output(
             raise DataError(f"{flag}: {shown}: {os_reason(exc)}") from None
         try:
             yield staging
+            raise_pending()  # a signal that arrived meanwhile publishes nothing
             _publish(staging, out, flag)
         except OSError as exc:
             where = _shown(exc, staging, out, shown)

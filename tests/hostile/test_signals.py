@@ -301,3 +301,43 @@ def test_terminated_sweep_stops_its_running_cases(tmp_path):
     assert stdout == ""
     assert stderr == f"terminated; continue with `jointwear sweep --resume {out}`\n"
     assert list((out / "cases").glob("*.json")) == []
+
+
+def test_a_signal_swallowed_by_python_still_stops_the_work(tmp_path):
+    """A signal whose exception Python drops (a weakref callback) stops at the next step."""
+    import weakref
+
+    from jointwear.cli.run_cmd import ProgressBar
+    from jointwear.interrupts import handling_signals
+    from jointwear.io import staged_output
+
+    class Node:
+        pass
+
+    def swallowed(signum: int) -> None:
+        """Deliver ``signum`` inside a weakref callback, where Python drops the exception."""
+
+        def callback(_: object) -> None:
+            signal.raise_signal(signum)
+            for _ in range(1000):  # the handler runs here, inside the callback
+                pass
+
+        node = Node()
+        ref = weakref.ref(node, callback)
+        del node
+        assert ref() is None
+
+    with handling_signals():
+        swallowed(signal.SIGTERM)
+        with pytest.raises(Interrupted) as stopped:
+            ProgressBar("revolutions", quiet=True)(1, 10)
+        assert stopped.value.signum == signal.SIGTERM
+
+    def write_then_publish(out: Path) -> None:
+        with handling_signals(), staged_output(out) as staging:
+            (staging / "result.nc").write_text("complete")
+            swallowed(signal.SIGINT)
+
+    with pytest.raises(Interrupted):
+        write_then_publish(tmp_path / "out")
+    assert list(tmp_path.iterdir()) == []  # nothing published, no staging left

@@ -104,7 +104,7 @@ def main(argv: list[str] | None = None) -> None:
 
 
 def _main(args: list[str], debug: bool) -> None:
-    from jointwear.interrupts import exit_code, last, note
+    from jointwear.interrupts import exit_code, last, note, raise_pending
 
     earlier = last()  # an interrupt of an earlier in-process call is not this one's
     empty = _empty_path_option(args)
@@ -120,6 +120,7 @@ def _main(args: list[str], debug: bool) -> None:
             sys.exit(exit_code(interrupt))
         if isinstance(code, int) and code:
             sys.exit(code)
+        raise_pending()  # a signal whose exception was swallowed still ends as interrupted
     except JointwearError as exc:
         if debug:
             raise

@@ -23,6 +23,7 @@ from jointwear.cli.common import (
     err_console,
     load,
 )
+from jointwear.interrupts import raise_pending
 
 OutOpt = Annotated[
     Path | None,
@@ -48,6 +49,7 @@ class ProgressBar:
         self._task = None
 
     def __call__(self, done: int, total: int) -> None:
+        raise_pending()  # the work goes on only if no signal has arrived
         if not self.enabled:
             return
         if self._bar is None:
