@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import contextlib
+import os
 import sys
 
 
@@ -19,7 +21,26 @@ def main() -> None:
         except KeyboardInterrupt as exc:  # Ctrl-C while numpy & co. load: no traceback
             sys.stderr.write(note(exc) + "\n")
             sys.exit(exit_code(exc))
-        cli_main()
+        try:
+            cli_main()
+        except SystemExit as exc:
+            if exc.code in (130, 143):
+                _leave_now(exc.code)
+            raise
+
+
+def _leave_now(code: int) -> None:
+    """End an interrupted process without the interpreter's finalisation.
+
+    A signal can arrive while an extension (HDF5, numba, BLAS threads) is half-way
+    through something; finalising its modules then may abort the process (exit -6
+    instead of 130/143). By now the command has cleaned up after itself (staging
+    removed, checkpoint kept) and said its one line, so nothing is left to finalise.
+    """
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(OSError, ValueError):  # a closed or broken pipe
+            stream.flush()
+    os._exit(code)
 
 
 def _one_line(message, category, filename, lineno, file=None, line=None) -> None:

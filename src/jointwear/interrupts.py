@@ -14,9 +14,11 @@ from __future__ import annotations
 
 import contextlib
 import signal
+import sys
 import threading
 from collections.abc import Iterator
 from types import FrameType
+from typing import Any
 
 __all__ = [
     "Interrupted",
@@ -121,19 +123,29 @@ def handling_signals() -> Iterator[None]:
     """Turn SIGINT/SIGTERM into :class:`Interrupted` for the block; restore the old handlers.
 
     A signal the parent process set to be ignored (``nohup``, background jobs) stays
-    ignored. Outside the main thread this does nothing.
+    ignored. An interrupt Python cannot raise (inside a weakref callback or ``__del__``)
+    is not printed as a traceback: it stays pending for :func:`raise_pending`. Outside
+    the main thread this does nothing.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
         return
     previous = {each: signal.getsignal(each) for each in _SIGNALS}
+    unraisable = sys.unraisablehook
     _last.clear()
     _pending.clear()
     for each, handler in previous.items():
         if handler is not signal.SIG_IGN:
             signal.signal(each, _raise)
+
+    def pending_not_printed(info: Any) -> None:
+        if not isinstance(info.exc_value, Interrupted):
+            unraisable(info)
+
+    sys.unraisablehook = pending_not_printed
     try:
         yield
     finally:
+        sys.unraisablehook = unraisable
         for each, handler in previous.items():
             signal.signal(each, handler if handler is not None else signal.SIG_DFL)
