@@ -66,7 +66,9 @@ static penetration of the massless-link load.
 
 from __future__ import annotations
 
+import functools
 import math
+import os
 import time as _time
 import warnings
 from collections.abc import Callable
@@ -114,6 +116,32 @@ __all__ = [
 ]
 
 FloatArray = NDArray[np.float64]
+#: the keys of :meth:`SliderCrankContactSystem.evaluate`, in the compiled tuple's order
+_EVALUATE_KEYS = (
+    "theta_ddot", "x3_ddot", "force_x", "force_y", "normal_force", "friction_force",
+    "normal_x", "normal_y", "penetration", "slip", "crank_torque", "ex", "ey",
+)  # fmt: skip
+
+
+def impact_kernel() -> Any:
+    """The compiled right-hand side (module), imported on first use.
+
+    ``None`` without numba, or when ``JOINTWEAR_NO_NUMBA`` is set (the switch of the
+    compiled contact kernel, :func:`jointwear.contact.kernel.compiled_available`).
+    """
+    if os.environ.get("JOINTWEAR_NO_NUMBA", "") not in ("", "0"):
+        return None
+    return _load_kernel()
+
+
+@functools.cache
+def _load_kernel() -> Any:
+    try:
+        from jointwear.mechanism import _impact_compiled
+    except ImportError:
+        return None
+    return _impact_compiled
+
 
 #: ``solve_ivp`` methods accepted by ``dynamics.integrator``
 INTEGRATORS: tuple[str, ...] = ("LSODA", "Radau", "BDF", "RK45", "DOP853")
@@ -564,8 +592,50 @@ class ContactSystem(Protocol):
     def clearance_state(self, t: float, y: FloatArray) -> tuple[float, float, float, float]:
         """``(e_x, e_y, e'_x, e'_y)`` [m, m/s]."""
 
+    def gap(self, t: float, y: FloatArray) -> float:
+        """Signed penetration [m]: ``> 0`` in contact."""
 
-class SliderCrankContactSystem:
+    def gap_rate(self, t: float, y: FloatArray) -> float:
+        """Rate of the gap [m/s]."""
+
+
+class ContactSystemBase:
+    """The gap functions of a contact system, from its clearance state.
+
+    A system with ``contact`` and ``clearance_state`` inherits them; the integrator
+    calls them at every step (contact events).
+    """
+
+    contact: JointContact
+
+    def clearance_state(self, t: float, y: FloatArray) -> tuple[float, float, float, float]:
+        """``(e_x, e_y, e'_x, e'_y)`` [m, m/s]."""
+        raise NotImplementedError
+
+    def gap(self, t: float, y: FloatArray) -> float:
+        """Signed penetration of the state (:meth:`JointContact.gap`) [m]."""
+        ex, ey, _, _ = self.clearance_state(t, y)
+        return self.contact.gap(ex, ey)
+
+    def gap_rate(self, t: float, y: FloatArray) -> float:
+        """Rate of the gap of the state (:meth:`JointContact.gap_rate`) [m/s]."""
+        return self.contact.gap_rate(*self.clearance_state(t, y))
+
+    def gap_and_rate(self, t: float, y: FloatArray) -> tuple[float, float]:
+        """:meth:`gap` and :meth:`gap_rate` together (one call per integrator step)."""
+        return self.gap(t, y), self.gap_rate(t, y)
+
+    def rhs(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:
+        """Time derivative of the state."""
+        raise NotImplementedError
+
+    def rhs_function(self, impact_velocity: float) -> Callable[[float, FloatArray], FloatArray]:
+        """``f(t, y)`` of the integrator for a contact with approach velocity
+        ``impact_velocity`` [m/s]."""
+        return lambda t, y: self.rhs(t, y, impact_velocity)
+
+
+class SliderCrankContactSystem(ContactSystemBase):
     """Slider–crank with a free pin in the clearance joint (module docstring).
 
     State ``y = (theta, x_3, theta', x_3', W)``: rod angle [rad], slider position
@@ -581,7 +651,13 @@ class SliderCrankContactSystem:
         Contact force model of the joint.
     """
 
-    def __init__(self, mechanism: SliderCrank, crank_speed: float, contact: JointContact) -> None:
+    def __init__(
+        self,
+        mechanism: SliderCrank,
+        crank_speed: float,
+        contact: JointContact,
+        compiled: bool | None = None,
+    ) -> None:
         self.mechanism = mechanism
         self.omega = float(crank_speed)
         self.contact = contact
@@ -592,6 +668,52 @@ class SliderCrankContactSystem:
                 "mechanism.rod_mass, mechanism.slider_mass: the contact-impact model needs a "
                 "rod with inertia and a slider with mass (the pin's degrees of freedom)"
             )
+        # the compiled right-hand side covers the point laws (the distributed laws sum
+        # over the contour's nodes with NumPy)
+        kernel = impact_kernel() if compiled is not False and not contact.distributed else None
+        if compiled and kernel is None:
+            raise ConfigError(
+                "dynamics: the compiled right-hand side needs numba and a point force law"
+            )
+        self._kernel = kernel
+        if kernel is not None:
+            self._parameters = self._kernel_parameters()
+            self._wear = contact._wear if contact._wear is not None else np.empty(0)
+
+    @property
+    def compiled(self) -> bool:
+        """Whether :meth:`rhs` and the gap functions run compiled (numba)."""
+        return self._kernel is not None
+
+    def _kernel_parameters(self) -> FloatArray:
+        """The parameter array of the compiled right-hand side (``_impact_compiled.P_*``)."""
+        m, c, k = self.mechanism, self.contact, self._kernel
+        values = {
+            k.P_CRANK: m.crank_length,
+            k.P_ROD: m.rod_length,
+            k.P_OMEGA: self.omega,
+            k.P_ROD_MASS: m.rod_mass,
+            k.P_GRAVITY: m.gravity,
+            k.P_INERTIA_B: self._inertia_b,
+            k.P_SLIDER_MASS: m.slider_mass,
+            k.P_CRANK_MASS: m.crank_mass,
+            k.P_SPRING_PULL: 1.0 if m.spring_mode == "pull" else 0.0,
+            k.P_PRELOAD: m.spring_preload,
+            k.P_SPRING_STIFFNESS: m.spring_stiffness,
+            k.P_CLEARANCE: c.clearance,
+            k.P_STIFFNESS: c.stiffness,
+            k.P_EXPONENT: c.exponent,
+            k.P_HYSTERESIS: c.hysteresis,
+            k.P_FRICTION: c.friction_coefficient,
+            k.P_V0: c.v0,
+            k.P_V1: c.v1,
+            k.P_ARM: c.friction_arm,
+            k.P_FLOOR: c.impact_velocity_floor,
+        }
+        parameters = np.empty(k.N_PARAMETERS)
+        for index, value in values.items():
+            parameters[index] = float(value)
+        return parameters
 
     def clearance_state(self, t: float, y: FloatArray) -> tuple[float, float, float, float]:
         theta, x3, theta_dot, x3_dot = y[0], y[1], y[2], y[3]
@@ -604,6 +726,27 @@ class SliderCrankContactSystem:
         vx = -w * m.crank_length * sphi - m.rod_length * st * theta_dot - x3_dot
         vy = w * m.crank_length * cphi + m.rod_length * ct * theta_dot
         return float(ex), float(ey), float(vx), float(vy)
+
+    def gap(self, t: float, y: FloatArray) -> float:
+        if self._kernel is not None:
+            return self._kernel.gap(t, y, self._parameters, self._wear)
+        return super().gap(t, y)
+
+    def gap_rate(self, t: float, y: FloatArray) -> float:
+        if self._kernel is not None:
+            return self._kernel.gap_rate(t, y, self._parameters)
+        return super().gap_rate(t, y)
+
+    def gap_and_rate(self, t: float, y: FloatArray) -> tuple[float, float]:
+        if self._kernel is not None:
+            return self._kernel.gap_and_rate(t, y, self._parameters, self._wear)
+        return super().gap_and_rate(t, y)
+
+    def rhs_function(self, impact_velocity: float) -> Callable[[float, FloatArray], FloatArray]:
+        if self._kernel is None:
+            return super().rhs_function(impact_velocity)
+        rhs, parameters, wear = self._kernel.rhs, self._parameters, self._wear
+        return lambda t, y: rhs(t, y, impact_velocity, parameters, wear)
 
     def spring(self, x3: float) -> float:
         """Spring force on the slider along +x [N] (see :func:`spring_force`)."""
@@ -641,6 +784,17 @@ class SliderCrankContactSystem:
             ``normal_y`` [-], ``penetration`` [m], ``slip`` [m/s], ``crank_torque``
             [N m].
         """
+        if self._kernel is not None:
+            values = self._kernel.evaluate(
+                float(t), np.asarray(y, dtype=float), impact_velocity, self._parameters, self._wear
+            )
+            return dict(zip(_EVALUATE_KEYS, values, strict=True))
+        return self.evaluate_reference(t, y, impact_velocity)
+
+    def evaluate_reference(
+        self, t: float, y: ArrayLike, impact_velocity: float
+    ) -> dict[str, float]:
+        """:meth:`evaluate` in Python: the reference of the compiled one."""
         theta, x3, theta_dot, x3_dot = (float(v) for v in np.asarray(y, dtype=float)[:4])
         m, w = self.mechanism, self.omega
         l1, l2 = m.crank_length, m.rod_length
@@ -688,7 +842,13 @@ class SliderCrankContactSystem:
 
     def rhs(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:
         """``y' = (theta', x_3', theta'', x_3'', T omega)``."""
-        out = self.evaluate(t, y, impact_velocity)
+        if self._kernel is not None:
+            return self._kernel.rhs(t, y, impact_velocity, self._parameters, self._wear)
+        return self.rhs_reference(t, y, impact_velocity)
+
+    def rhs_reference(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:
+        """:meth:`rhs` in Python: the reference of the compiled right-hand side."""
+        out = self.evaluate_reference(t, y, impact_velocity)
         return np.array(
             [y[2], y[3], out["theta_ddot"], out["x3_ddot"], out["crank_torque"] * self.omega]
         )
@@ -716,7 +876,7 @@ class SliderCrankContactSystem:
         return kinetic + gravity + self.spring_energy(x3) + self.contact.potential(ex, ey)
 
 
-class FreePinSystem:
+class FreePinSystem(ContactSystemBase):
     """A free pin of mass ``m`` inside a fixed bushing (to test one impact in isolation).
 
     State ``y = (e_x, e_y, e'_x, e'_y, W)`` with ``W`` the work of the constant
@@ -858,10 +1018,129 @@ class ContactHistory:
         return total
 
 
-def _event(function, terminal: bool, direction: float):
-    function.terminal = terminal
-    function.direction = direction
-    return function
+@dataclass(frozen=True)
+class _Part:
+    """One ``solve_ivp`` run of :func:`integrate_contacts`, up to its contact event."""
+
+    end: float
+    solution: Any
+    evaluations: int
+    peaks: list[tuple[float, FloatArray]]
+    event: FloatArray | None
+    failed: str | None
+
+
+class _EventWatch:
+    """The contact events, checked after every step of the solver (:class:`_Watched`).
+
+    ``solve_ivp``'s own events cost ~10 us per step in NumPy (``find_active_events``
+    on two-element arrays), more than a compiled right-hand side and its step
+    together. Here the same test runs on two floats: a gap that rises through zero
+    (contact start, terminal), falls through zero (contact end, terminal) or a gap
+    rate that falls through zero (penetration maximum); a terminal crossing ends the
+    solver after the step, and the roots are found afterwards on the step's dense
+    output exactly as ``solve_ivp`` finds them. The steps, roots and states are
+    those of ``solve_ivp(..., events=...)``, to the bit.
+    """
+
+    def __init__(self, system: Any, in_contact: bool, t0: float, y0: FloatArray) -> None:
+        self.gap, self.gap_rate = system.gap, system.gap_rate
+        self.gap_and_rate = system.gap_and_rate
+        self.in_contact = in_contact
+        self.g = self.gap(t0, y0)
+        self.rate = self.gap_rate(t0, y0) if in_contact else 0.0
+        #: ``(t_old, t, dense output)`` of the steps with a penetration maximum
+        self.peaks: list[tuple[float, float, Any]] = []
+        self.terminal: tuple[float, float, Any] | None = None
+
+    def check(self, solver: Any) -> None:
+        t, y = solver.t, solver.y
+        peak = False
+        if self.in_contact:
+            g, rate = self.gap_and_rate(t, y)
+            peak = self.rate >= 0.0 and rate <= 0.0
+            self.rate = rate
+            crossed = self.g >= 0.0 and g <= 0.0
+        else:
+            g = self.gap(t, y)
+            crossed = self.g <= 0.0 and g >= 0.0
+        self.g = g
+        if peak or crossed:
+            step = (solver.t_old, t, solver.dense_output())
+            if peak:
+                self.peaks.append(step)
+            if crossed:
+                self.terminal = step
+                solver.status = "finished"
+
+
+class _Watched:
+    """Mixin of a ``scipy.integrate`` solver class: :class:`_EventWatch` after each step."""
+
+    watch: _EventWatch
+
+    def step(self) -> str | None:
+        message = super().step()  # type: ignore[misc]
+        if self.status != "failed":  # type: ignore[attr-defined]
+            self.watch.check(self)
+        return message
+
+
+def _root(function: Callable[[float, FloatArray], float], dense: Any, t0: float, t1: float):
+    """Zero of ``function(t, dense(t))`` in the step ``[t0, t1]``, as ``solve_ivp`` finds it."""
+    from scipy.optimize import brentq
+
+    eps = float(np.finfo(float).eps)
+    return brentq(lambda t_: function(t_, dense(t_)), t0, t1, xtol=4 * eps, rtol=4 * eps)
+
+
+def _integrate_segment(
+    system: Any,
+    fun: Callable[[float, FloatArray], FloatArray],
+    t: float,
+    t_end: float,
+    y: FloatArray,
+    in_contact: bool,
+    method: str,
+    rtol: float,
+    atol: float,
+    max_step: float,
+) -> _Part:
+    """Integrate from ``t`` to the next contact event (or ``t_end``)."""
+    import scipy.integrate  # lazy: keeps `jointwear` quick to start
+    from scipy.integrate import OdeSolution
+
+    base = getattr(scipy.integrate, method)
+    watch = _EventWatch(system, in_contact, t, y)
+    solver = type(f"Watched{method}", (_Watched, base), {"watch": watch})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        sol = scipy.integrate.solve_ivp(
+            fun, (t, t_end), y, method=solver, rtol=rtol, atol=atol, max_step=max_step,
+            dense_output=True,
+        )  # fmt: skip
+    evaluations = int(sol.nfev)
+    if sol.status == -1:
+        return _Part(t, None, evaluations, [], None, str(sol.message))
+    roots = [(_root(watch.gap_rate, dense, t0, t1), dense) for t0, t1, dense in watch.peaks]
+    ts, interpolants = list(sol.t), list(sol.sol.interpolants)
+    event = None
+    if watch.terminal is not None:
+        t0, t1, dense = watch.terminal
+        t_stop = _root(watch.gap, dense, t0, t1)
+        # solve_ivp keeps the maxima of the last step found before the contact event
+        roots = [(r, d) for r, d in roots if d is not dense or r < t_stop]
+        event = np.asarray(dense(t_stop), dtype=float)
+        ts.pop()
+        if len(ts) > 1 and ts[-1] == t_stop:
+            interpolants.pop()
+        else:
+            ts.append(t_stop)
+    solution = OdeSolution(ts, interpolants, alt_segment=method in ("LSODA", "BDF"))
+    peaks = [(float(r), np.asarray(d(r), dtype=float)) for r, d in roots]
+    return _Part(float(ts[-1]), solution, evaluations, peaks, event, None)
+
+
 
 
 def integrate_contacts(
@@ -923,59 +1202,31 @@ def integrate_contacts(
     v_imp = floor if not math.isfinite(impact_velocity) else max(impact_velocity, floor)
     history = ContactHistory()
 
-    def gap(t_: float, y_: FloatArray) -> float:
-        ex, ey, _, _ = system.clearance_state(t_, y_)
-        return contact.gap(ex, ey)
-
-    def gap_rate(t_: float, y_: FloatArray) -> float:
-        return contact.gap_rate(*system.clearance_state(t_, y_))
-
-    start_event = _event(lambda t_, y_: gap(t_, y_), True, 1.0)
-    end_event = _event(lambda t_, y_: gap(t_, y_), True, -1.0)
-    peak_event = _event(lambda t_, y_: gap_rate(t_, y_), False, -1.0)
+    gap_rate = system.gap_rate
     stalled = 0
     events = 0
     while t < t_end:
         velocity = v_imp
-
-        def fun(t_: float, y_: FloatArray, velocity: float = velocity) -> FloatArray:
-            return system.rhs(t_, y_, velocity)
-
-        event_list = [end_event, peak_event] if in_contact else [start_event]
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", RuntimeWarning)
-            from scipy.integrate import solve_ivp  # lazy: keeps `jointwear` quick to start
-
-            sol = solve_ivp(
-                fun,
-                (t, t_end),
-                y,
-                method=method,
-                rtol=rtol,
-                atol=atol,
-                max_step=max_step,
-                events=event_list,
-                dense_output=True,
-            )
-        history.evaluations += int(sol.nfev)
-        if sol.status == -1:
+        fun = system.rhs_function(velocity)
+        part = _integrate_segment(
+            system, fun, t, t_end, y, in_contact, method, rtol, atol, max_step
+        )
+        history.evaluations += part.evaluations
+        if part.failed is not None:
             raise ConvergenceError(
                 f"dynamics.integrator: {method} failed at t = {t:.6g} s "
-                f"({sol.message}); try dynamics.integrator = 'Radau' or looser "
+                f"({part.failed}); try dynamics.integrator = 'Radau' or looser "
                 f"dynamics.rtol/atol"
             )
-        t_stop = float(sol.t[-1])
         history.segments.append(
-            Segment(t, t_stop, sol.sol, in_contact, velocity if in_contact else math.nan)
+            Segment(t, part.end, part.solution, in_contact, velocity if in_contact else math.nan)
         )
-        if in_contact and len(sol.t_events) > 1:
-            for t_peak, y_peak in zip(sol.t_events[1], sol.y_events[1], strict=True):
-                history.peak_times.append(float(t_peak))
-                history.peak_penetrations.append(gap(float(t_peak), y_peak))
-        if sol.status != 1:
+        for t_peak, y_peak in part.peaks:
+            history.peak_times.append(t_peak)
+            history.peak_penetrations.append(system.gap(t_peak, y_peak))
+        if part.event is None:
             break
-        t_event = float(sol.t_events[0][-1])
-        y = np.asarray(sol.y_events[0][-1], dtype=float)
+        t_event, y = part.end, part.event
         events += 1
         stalled = stalled + 1 if t_event - t <= 1e-14 * max(1.0, abs(t)) else 0
         if stalled > 100:

@@ -90,6 +90,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import ConfigError, ContactLossWarning, MechanismError
+from jointwear.mechanism.contact_impact import ContactSystemBase
 from jointwear.mechanism.cycle import (
     Diagnostic,
     LoadCycle,
@@ -783,7 +784,7 @@ _CHAINS: dict[str, dict[str, tuple[str, float, float]]] = {
 _ANGLE_INDEX = {"crank": None, "coupler": 0, "rocker": 1, "ground": None}
 
 
-class FourBarContactSystem:
+class FourBarContactSystem(ContactSystemBase):
     """Four-bar with a free pin in one joint (module docstring), a ``ContactSystem``.
 
     State ``y = (theta_2, theta_3, theta_2', theta_3', W)``: coupler and rocker
