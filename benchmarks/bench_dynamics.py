@@ -13,7 +13,7 @@ slider-crank, pull spring, 120 rpm, Lankarani-Nikravesh contact) with
 ``dynamics.model = "contact-impact"``. The reference is the readable Python right-hand
 side (``JOINTWEAR_NO_NUMBA=1``); the straightforward integration -- Python right-hand
 side and ``solve_ivp``'s own contact events -- is measured too
-(:func:`tests.mechanism.test_impact_integration.reference_contacts`).
+(:func:`tests.mechanism.test_impact_integrator.reference_contacts`).
 """
 
 from __future__ import annotations
@@ -35,10 +35,10 @@ from pathlib import Path  # noqa: E402
 import numpy as np  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))  # tests.mechanism.test_impact_integration
+sys.path.insert(0, str(REPO))  # tests.mechanism.test_impact_integrator
 
 from benchmarks.bench_simulation import ROWS, machine, ms, row  # noqa: E402
-from tests.mechanism.test_impact_integration import reference_contacts  # noqa: E402
+from tests.mechanism.test_impact_integrator import reference_contacts  # noqa: E402
 
 from jointwear import load_config  # noqa: E402
 from jointwear.config import Config  # noqa: E402

@@ -22,8 +22,7 @@ import math
 import numpy as np
 from numba import njit
 
-#: indices into the parameter array (:func:`jointwear.mechanism.impact_systems.
-#: slider_crank_parameters`)
+#: indices into the parameter array (``SliderCrankContactSystem._kernel_parameters``)
 (
     P_CRANK,
     P_ROD,
