@@ -87,7 +87,12 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.contact import hertz
 from jointwear.contact.laws import ContactParameters, PowerLaw, SpringLaw
 from jointwear.errors import ConfigError, ConvergenceError
-from jointwear.geometry.contour import BushingContour, Pin, ray_distance, ray_distance_derivative
+from jointwear.geometry.contour import (
+    BushingContour,
+    Pin,
+    pin_penetration,
+    ray_distance_derivative,
+)
 
 if TYPE_CHECKING:
     from jointwear.config import Config
@@ -506,9 +511,7 @@ def spring_gap(contour: BushingContour, pin: Pin, eccentricity: ArrayLike) -> Fl
     eccentricity : array_like, shape (..., 2)
         Pin-centre position relative to the bushing centre [m].
     """
-    e = np.asarray(eccentricity, dtype=float)
-    t = ray_distance(contour.theta, e[..., 0:1], e[..., 1:2], pin.radius)
-    return np.max(t - contour.radius, axis=-1)
+    return np.max(contour.penetration(pin, eccentricity, signed=True), axis=-1)
 
 
 def spring_resultant(
@@ -547,7 +550,7 @@ def spring_resultant(
     e = np.asarray(eccentricity, dtype=float)
     ex, ey = e[..., 0:1], e[..., 1:2]
     theta = contour.theta
-    delta = np.maximum(ray_distance(theta, ex, ey, pin.radius) - contour.radius, 0.0)
+    delta = contour.penetration(pin, e)
     pressure = np.asarray(law.pressure(delta), dtype=float)
     area = _force_area(contour, law)
     node_force = area * pressure
@@ -658,7 +661,8 @@ class JointContact:
                 else float(spring_law.force_area),
                 self._radius.shape,
             )
-            self._pin_radius_sq = pin.radius**2
+            self._pin_radius = pin.radius
+            self._gap = self._radius - pin.radius
         self.contour = contour
         self.pin = pin
         self.spring_law = spring_law
@@ -672,13 +676,13 @@ class JointContact:
         """
         along = self._cos * ex + self._sin * ey
         across = self._cos * ey - self._sin * ex
-        root = np.sqrt(self._pin_radius_sq - across * across)
-        depth = along + root - self._radius
+        depth = pin_penetration(along, across, self._gap, self._pin_radius)
         gap = float(depth.max())
         if gap <= 0.0:
             return 0.0, 0.0, gap
         touch = depth > 0.0
-        c, sn, ratio = self._cos[touch], self._sin[touch], across[touch] / root[touch]
+        c, sn, lateral = self._cos[touch], self._sin[touch], across[touch]
+        ratio = lateral / np.sqrt(self._pin_radius**2 - lateral * lateral)
         force = self._area[touch] * self.spring_law.pressure(depth[touch])
         fx = float(np.dot(force, c + sn * ratio))
         fy = float(np.dot(force, sn - c * ratio))
