@@ -79,3 +79,27 @@ def test_event_watch_equals_solve_ivp_events(paper_config: Config, method: str) 
     np.testing.assert_array_equal(
         [seg.solution(seg.end) for seg in history.segments[:-1]], reference["states"]
     )
+
+
+def test_kept_steps_give_the_same_states(paper_config: Config) -> None:
+    """``keep=``: the states at the kept times and the maxima are those of all steps."""
+    config = paper_config.replace({"dynamics.model": "contact-impact", **SEPARATING})
+    system = ci.SliderCrankContactSystem(
+        SliderCrank.from_config(config.mechanism), config.mechanism.crank_speed,
+        ci.JointContact.from_config(config),
+    )  # fmt: skip
+    y0, _ = ci._initial_state(system, 360)
+    period = 2 * math.pi / system.omega
+    times = np.linspace(0.5 * period, 1.5 * period, 73)
+    options = {"in_contact": True, "max_step": period / 360}
+    full = ci.integrate_contacts(system, (0.0, 1.5 * period), y0, **options)
+    sparse = ci.integrate_contacts(system, (0.0, 1.5 * period), y0, keep=times, **options)
+    assert [s.end for s in sparse.segments] == [s.end for s in full.segments]
+    assert sparse.peak_times == full.peak_times
+    for history in (full, sparse):
+        assert history.evaluations == full.evaluations
+    np.testing.assert_array_equal(sparse.state(times)[0], full.state(times)[0])
+    np.testing.assert_array_equal(sparse.state(full.peak_times)[0], full.state(full.peak_times)[0])
+    np.testing.assert_array_equal(sparse.final_state, full.final_state)
+    with pytest.raises(ValueError, match="not kept"):
+        sparse.state([0.25 * period])

@@ -101,7 +101,9 @@ class ContactImpactSolution:
     massless_contact_lost : bool or None
         Whether the massless-link model reports contact loss.
     history : ContactHistory
-        Full integration record (all revolutions).
+        Integration record of all revolutions (:func:`solve_contact_impact` keeps the
+        dense output only where it samples: the states are known at the sample times,
+        the penetration maxima and the segment ends).
     system : SliderCrankContactSystem
         The integrated system.
     settings : ContactImpactSettings
@@ -225,7 +227,7 @@ def solve_contact_impact(
     contact = JointContact.from_config(config, contour)
     system = SliderCrankContactSystem(mechanism, omega, contact)
     y0, _ = _initial_state(system, max(steps, 64))
-    run = integrate_revolution(system, y0, settings, steps)
+    run = integrate_revolution(system, y0, settings, steps, dense=False)
     states = run.states
     theta_all = states[:, 0]
     theta = theta_all[:-1]

@@ -309,7 +309,7 @@ class ContactHistory:
             seg = self.segments[k]
             if seg.end <= seg.start and k + 1 < len(self.segments):
                 index[index == k] = k + 1
-        n_state = self.segments[0].solution(self.segments[0].start).size
+        n_state = self.final_state.size
         states = np.empty((times.size, n_state))
         for k in np.unique(index):
             rows = index == k
@@ -352,7 +352,9 @@ class _EventWatch:
     those of ``solve_ivp(..., events=...)``, to the bit.
     """
 
-    def __init__(self, system: Any, in_contact: bool, t0: float, y0: FloatArray) -> None:
+    def __init__(
+        self, system: Any, in_contact: bool, t0: float, y0: FloatArray, keep: list[float] | None
+    ) -> None:
         self.gap, self.gap_rate = system.gap, system.gap_rate
         self.gap_and_rate = system.gap_and_rate
         self.in_contact = in_contact
@@ -361,6 +363,11 @@ class _EventWatch:
         #: ``(t_old, t, dense output)`` of the steps with a penetration maximum
         self.peaks: list[tuple[float, float, Any]] = []
         self.terminal: tuple[float, float, Any] | None = None
+        #: sorted times whose steps keep their dense output (None: ``solve_ivp`` keeps all)
+        self.keep = keep
+        self.next_kept = 0
+        #: the kept steps, in time order
+        self.kept: list[tuple[float, float, Any]] = []
 
     def check(self, solver: Any) -> None:
         t, y = solver.t, solver.y
@@ -374,13 +381,44 @@ class _EventWatch:
             g = self.gap(t, y)
             crossed = self.g <= 0.0 and g >= 0.0
         self.g = g
-        if peak or crossed:
+        kept = False
+        if self.keep is not None:
+            # a kept time on a step boundary keeps both steps: whichever OdeSolution picks
+            keep, i, t_old = self.keep, self.next_kept, solver.t_old
+            while i < len(keep) and keep[i] < t_old:
+                i += 1
+            self.next_kept = i
+            kept = peak or crossed or solver.status == "finished"
+            kept = kept or (i < len(keep) and keep[i] <= t)
+        if peak or crossed or kept:
             step = (solver.t_old, t, solver.dense_output())
             if peak:
                 self.peaks.append(step)
+            if kept:
+                self.kept.append(step)
             if crossed:
                 self.terminal = step
                 solver.status = "finished"
+
+    def kept_solution(self, t0: float) -> tuple[list[float], list[Any]]:
+        """Times and interpolants of the kept steps, an :class:`_Unkept` between runs."""
+        from scipy.integrate import DenseOutput
+
+        class _Unkept(DenseOutput):
+            def _call_impl(self, t: Any) -> FloatArray:
+                raise ValueError(
+                    f"integrate_contacts: the states in [{self.t_old:.9g}, {self.t:.9g}] s "
+                    "were not kept (the keep= times)"
+                )
+
+        ts, interpolants = [t0], []
+        for start, end, dense in self.kept:
+            if start != ts[-1]:
+                interpolants.append(_Unkept(ts[-1], start))
+                ts.append(start)
+            interpolants.append(dense)
+            ts.append(end)
+        return ts, interpolants
 
 
 class _Watched:
@@ -414,25 +452,29 @@ def _integrate_segment(
     rtol: float,
     atol: float,
     max_step: float,
+    keep: list[float] | None,
 ) -> _Part:
     """Integrate from ``t`` to the next contact event (or ``t_end``)."""
     import scipy.integrate  # lazy: keeps `jointwear` quick to start
     from scipy.integrate import OdeSolution
 
     base = getattr(scipy.integrate, method)
-    watch = _EventWatch(system, in_contact, t, y)
+    watch = _EventWatch(system, in_contact, t, y, keep)
     solver = type(f"Watched{method}", (_Watched, base), {"watch": watch})
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         sol = scipy.integrate.solve_ivp(
             fun, (t, t_end), y, method=solver, rtol=rtol, atol=atol, max_step=max_step,
-            dense_output=True,
+            dense_output=keep is None,
         )  # fmt: skip
     evaluations = int(sol.nfev)
     if sol.status == -1:
         return _Part(t, None, evaluations, [], None, str(sol.message))
     roots = [(_root(watch.gap_rate, dense, t0, t1), dense) for t0, t1, dense in watch.peaks]
-    ts, interpolants = list(sol.t), list(sol.sol.interpolants)
+    if keep is None:
+        ts, interpolants = list(sol.t), list(sol.sol.interpolants)
+    else:
+        ts, interpolants = watch.kept_solution(t)
     event = None
     if watch.terminal is not None:
         t0, t1, dense = watch.terminal
@@ -441,7 +483,7 @@ def _integrate_segment(
         roots = [(r, d) for r, d in roots if d is not dense or r < t_stop]
         event = np.asarray(dense(t_stop), dtype=float)
         ts.pop()
-        if len(ts) > 1 and ts[-1] == t_stop:
+        if len(ts) > 1 and ts[-1] == t_stop and keep is None:
             interpolants.pop()
         else:
             ts.append(t_stop)
@@ -463,6 +505,7 @@ def integrate_contacts(
     max_step: float = math.inf,
     max_events: int = 1_000_000,
     stop_after_separations: int | None = None,
+    keep: ArrayLike | None = None,
 ) -> ContactHistory:
     """Integrate a contact system, restarting at every contact start and end.
 
@@ -489,6 +532,11 @@ def integrate_contacts(
         Largest number of contact events before giving up.
     stop_after_separations : int, optional
         Stop at that many contact ends (e.g. 1 for a single impact).
+    keep : array_like, optional
+        The only times at which :meth:`ContactHistory.state` will be asked for states
+        [s]: the dense output is kept just for the steps holding them, the penetration
+        maxima and each segment's last step (a step's dense output costs about as much
+        as the step). Default: every step's.
 
     Returns
     -------
@@ -510,13 +558,14 @@ def integrate_contacts(
     history = ContactHistory()
 
     gap_rate = system.gap_rate
+    kept = None if keep is None else sorted(float(v) for v in np.ravel(keep))
     stalled = 0
     events = 0
     while t < t_end:
         velocity = v_imp
         fun = system.rhs_function(velocity)
         part = _integrate_segment(
-            system, fun, t, t_end, y, in_contact, method, rtol, atol, max_step
+            system, fun, t, t_end, y, in_contact, method, rtol, atol, max_step, kept
         )
         history.evaluations += part.evaluations
         if part.failed is not None:
@@ -619,6 +668,7 @@ def integrate_revolution(
     settings: ContactImpactSettings,
     steps: int,
     in_contact: bool = True,
+    dense: bool = True,
 ) -> SampledRevolution:
     """Integrate a crank-driven contact system and sample its last revolution.
 
@@ -636,6 +686,12 @@ def integrate_revolution(
         Samples ``N`` per revolution [-].
     in_contact : bool
         Whether the pin penetrates the wall at ``t = 0``.
+    dense : bool
+        Keep the dense output of every step in the history. ``False``: only of the
+        steps holding a sample, a penetration maximum or a segment's end (``keep=``
+        of :func:`integrate_contacts`: a third less time, the same samples to the
+        bit); the history's :meth:`~ContactHistory.state` then answers at those
+        times only.
 
     Returns
     -------
@@ -645,6 +701,9 @@ def integrate_revolution(
     period = 2.0 * math.pi / omega
     record_start = settings.revolutions_settle * period
     max_step = settings.max_step if settings.max_step is not None else period / steps
+    # samples of the recorded revolution, plus its end (for the last increment)
+    phi = 2.0 * np.pi * np.arange(steps) / steps
+    times = record_start + np.append(phi, 2.0 * np.pi) / omega
     started = _time.perf_counter()
     history = integrate_contacts(
         system,
@@ -655,12 +714,9 @@ def integrate_revolution(
         rtol=settings.rtol,
         atol=settings.atol,
         max_step=max_step,
+        keep=None if dense else times,
     )
     runtime = _time.perf_counter() - started
-
-    # samples of the recorded revolution, plus its end (for the last increment)
-    phi = 2.0 * np.pi * np.arange(steps) / steps
-    times = record_start + np.append(phi, 2.0 * np.pi) / omega
     states, index = history.state(times)
     records = [
         system.evaluate(float(t), y, history.segments[k].impact_velocity)
