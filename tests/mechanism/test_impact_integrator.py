@@ -55,14 +55,19 @@ def reference_contacts(system, t_end: float, y0, *, in_contact: bool, method: st
     return record
 
 
-@pytest.mark.parametrize("method", ["LSODA", "RK45"])
-def test_event_watch_equals_solve_ivp_events(paper_config: Config, method: str) -> None:
+def separating(paper_config: Config):
+    """The slider-crank whose pin separates twice a revolution, and its initial state."""
     config = paper_config.replace({"dynamics.model": "contact-impact", **SEPARATING})
     system = ci.SliderCrankContactSystem(
         SliderCrank.from_config(config.mechanism), config.mechanism.crank_speed,
         ci.JointContact.from_config(config),
     )  # fmt: skip
-    y0, _ = ci._initial_state(system, 360)
+    return system, ci._initial_state(system, 360)[0]
+
+
+@pytest.mark.parametrize("method", ["LSODA", "RK45"])
+def test_event_watch_equals_solve_ivp_events(paper_config: Config, method: str) -> None:
+    system, y0 = separating(paper_config)
     t_end = 2 * math.pi / system.omega
     history = ci.integrate_contacts(
         system, (0.0, t_end), y0, in_contact=True, method=method,
@@ -83,12 +88,7 @@ def test_event_watch_equals_solve_ivp_events(paper_config: Config, method: str) 
 
 def test_kept_steps_give_the_same_states(paper_config: Config) -> None:
     """``keep=``: the states at the kept times and the maxima are those of all steps."""
-    config = paper_config.replace({"dynamics.model": "contact-impact", **SEPARATING})
-    system = ci.SliderCrankContactSystem(
-        SliderCrank.from_config(config.mechanism), config.mechanism.crank_speed,
-        ci.JointContact.from_config(config),
-    )  # fmt: skip
-    y0, _ = ci._initial_state(system, 360)
+    system, y0 = separating(paper_config)
     period = 2 * math.pi / system.omega
     times = np.linspace(0.5 * period, 1.5 * period, 73)
     options = {"in_contact": True, "max_step": period / 360}
