@@ -89,8 +89,7 @@ KNOWN_LAYER_EXCEPTIONS: dict[tuple[str, str], str] = {
     ("jointwear.config", "jointwear.contact.nlcp"): "lazy: NLCP's default K (eq. 2)",
     # the contact-impact dynamics integrate the pin's motion against the bushing's
     # contact law: the force laws are the contact stage's, evaluated by the mechanism
-    ("jointwear.mechanism.contact_impact", "jointwear.contact.laws"): "impact force law",
-    ("jointwear.mechanism.contact_impact", "jointwear.contact"): "lazy: impact force law",
+    ("jointwear.mechanism.force_laws", "jointwear.contact"): "lazy: impact force law",
     ("jointwear.mechanism.force_laws", "jointwear.contact.hertz"): "Hertz stiffness of impacts",
     ("jointwear.mechanism.force_laws", "jointwear.contact.laws"): "spring laws of the impact",
     # a load history can be read from an earlier run's result file

@@ -85,6 +85,19 @@ def test_penetration_is_exact_on_a_worn_contour():
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12)
 
 
+def test_signed_penetration_is_the_ray_distance_beyond_the_wall():
+    """``signed`` keeps the gaps: ``t_j - r_j`` of the exact ray geometry, both signs."""
+    contour = wavy()
+    pin = Pin(R_P)
+    for e in ([5.9e-5, 1.2e-5], [1e-5, -2e-5]):
+        signed = contour.penetration(pin, e, signed=True)
+        expected = ray_distance(contour.theta, e[0], e[1], R_P) - contour.radius
+        # the ray distance is a difference of millimetre lengths: a few ulp of the radius
+        np.testing.assert_allclose(signed, expected, rtol=0, atol=4 * np.spacing(R_B))
+        np.testing.assert_array_equal(np.maximum(signed, 0.0), contour.penetration(pin, e))
+        assert np.any(signed < 0)
+
+
 def test_penetration_small_clearance_limit():
     """First order in |e|: delta = s cos(phi) - c; the curvature term is s^2 sin^2 / (2 R_p)."""
     contour = BushingContour.circle(R_B, 360, B)

@@ -167,6 +167,20 @@ def test_spring_resultant_along_offset_on_circle(
     assert fl.spring_gap(circle, pin, 0.5 * e) < 0
 
 
+def test_joint_contact_gap_is_the_contour_penetration(
+    paper_config, circle: BushingContour, pin: Pin, clearance: float
+) -> None:
+    """The integrator's gap of a distributed law is the largest signed node penetration."""
+    contact = fl.JointContact.from_config(
+        paper_config.replace({"dynamics.force_law": "nlcp"}), circle
+    )
+    rng = np.random.default_rng(5)
+    for e in rng.uniform(-1.5 * clearance, 1.5 * clearance, size=(50, 2)):
+        gap = contact.gap(*e)
+        assert gap == fl.spring_gap(circle, pin, e)
+        assert gap == circle.penetration(pin, e, signed=True).max()
+
+
 def test_winkler_resultant_matches_closed_form(
     params: ContactParameters, pin: Pin, clearance: float
 ) -> None:

@@ -266,8 +266,8 @@ class BushingContour:
                 f"bushing radius {self.radius.min():g} m (clearance must be > 0)"
             )
 
-    def penetration(self, pin: Pin, eccentricity: ArrayLike) -> FloatArray:
-        """Penetration of the pin at every node for pin-centre positions.
+    def penetration(self, pin: Pin, eccentricity: ArrayLike, signed: bool = False) -> FloatArray:
+        """Penetration of the pin at every node for pin-centre positions (:func:`pin_penetration`).
 
         Parameters
         ----------
@@ -275,17 +275,20 @@ class BushingContour:
             The pin.
         eccentricity : array_like, shape (..., 2)
             Pin-centre position relative to the bushing centre [m].
+        signed : bool
+            Keep the negative values (the gap of the nodes the pin does not reach).
 
         Returns
         -------
         ndarray, shape (..., N)
-            Penetration ``delta_j >= 0`` [m].
+            Penetration ``delta_j >= 0`` [m] (``signed``: ``t_j - r_j``, negative for a gap).
         """
         e = np.asarray(eccentricity, float)
         c, s = np.cos(self.theta), np.sin(self.theta)
         along = c * e[..., 0:1] + s * e[..., 1:2]
         across = c * e[..., 1:2] - s * e[..., 0:1]
-        return np.maximum(pin_penetration(along, across, self.radius - pin.radius, pin.radius), 0.0)
+        depth = pin_penetration(along, across, self.radius - pin.radius, pin.radius)
+        return depth if signed else np.maximum(depth, 0.0)
 
 
 def pin_penetration(along: ArrayLike, across: ArrayLike, gap: ArrayLike, pin_radius: float):
@@ -296,8 +299,11 @@ def pin_penetration(along: ArrayLike, across: ArrayLike, gap: ArrayLike, pin_rad
     node at radius ``r = R_p + gap`` is penetrated by ``t - r = along - gap - across^2 /
     (sqrt(R_p^2 - across^2) + R_p)``, written so that a micrometre penetration is not
     the difference of two millimetre radii. The one statement of the ray geometry for
-    the load balance, the finite-element reference and :meth:`BushingContour.penetration`
-    (the compiled kernel takes the same formula from its series for speed).
+    the load balance, the finite-element reference, :meth:`BushingContour.penetration`
+    and the distributed force laws of the contact-impact dynamics
+    (:mod:`jointwear.mechanism.force_laws`). Two copies remain, for speed: the compiled
+    contact kernel takes the same formula from its series, and the balance's residual
+    (:mod:`jointwear.contact.balance.residual`) evaluates it in place in reused buffers.
 
     Parameters
     ----------

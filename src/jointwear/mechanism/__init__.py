@@ -30,13 +30,13 @@ from jointwear.config import MECHANISM_TYPES, Config
 from jointwear.errors import ConfigError
 from jointwear.mechanism import force_laws
 from jointwear.mechanism.contact_impact import (
-    ContactImpactSettings,
     ContactImpactSolution,
-    JointContact,
     contact_impact_load,
     solve_contact_impact,
 )
 from jointwear.mechanism.cycle import Diagnostic, LoadCycle, bushing_azimuth, wrap_angle
+from jointwear.mechanism.force_laws import JointContact
+from jointwear.mechanism.impact_integrator import ContactImpactSettings
 from jointwear.mechanism.oscillating import oscillating_cycle
 from jointwear.mechanism.slider_crank import (
     JointReaction,

@@ -74,7 +74,7 @@ and the equations of motion follow from virtual power,
 ``M(q) q'' = sum_b J_b^T m_b (g - a_b^0) + (0, M_r) + Q_contact`` with
 ``M = sum_b m_b J_b^T J_b + diag(I2, I3)``, ``J_b`` the Jacobian of the centre of
 mass of body b with respect to ``q'`` and ``a_b^0`` its acceleration at ``q'' = 0``.
-The contact force (:class:`~jointwear.mechanism.contact_impact.JointContact`) acts
+The contact force (:class:`~jointwear.mechanism.force_laws.JointContact`) acts
 on the second body with ``J`` and on the first with ``-J``, both at the contact
 point ``P = C_1 + rho n``.
 """
@@ -97,10 +97,12 @@ from jointwear.mechanism.cycle import (
     crank_extras,
     wrap_angle,
 )
+from jointwear.mechanism.impact_integrator import ContactSystemBase
 
 if TYPE_CHECKING:
     from jointwear.config import Config, FourBarConfig
-    from jointwear.mechanism.contact_impact import ContactImpactSolution, JointContact
+    from jointwear.mechanism.contact_impact import ContactImpactSolution
+    from jointwear.mechanism.force_laws import JointContact
 
 __all__ = [
     "FourBar",
@@ -783,7 +785,7 @@ _CHAINS: dict[str, dict[str, tuple[str, float, float]]] = {
 _ANGLE_INDEX = {"crank": None, "coupler": 0, "rocker": 1, "ground": None}
 
 
-class FourBarContactSystem:
+class FourBarContactSystem(ContactSystemBase):
     """Four-bar with a free pin in one joint (module docstring), a ``ContactSystem``.
 
     State ``y = (theta_2, theta_3, theta_2', theta_3', W)``: coupler and rocker
@@ -1011,7 +1013,7 @@ class FourBarContactSystem:
 
 
 def _four_bar_contact(config: Config, joint: str, bushing_body: str) -> JointContact:
-    from jointwear.mechanism.contact_impact import JointContact
+    from jointwear.mechanism.force_laws import JointContact
 
     contact = JointContact.from_config(config)
     # rho is measured from the first body's joint centre: R_p with the pin there,
@@ -1047,11 +1049,8 @@ def four_bar_contact_impact(config: Config, compare: bool = True) -> ContactImpa
     ConvergenceError
         If the integrator fails.
     """
-    from jointwear.mechanism.contact_impact import (
-        ContactImpactSettings,
-        integrate_revolution,
-        sampled_solution,
-    )
+    from jointwear.mechanism.contact_impact import sampled_solution
+    from jointwear.mechanism.impact_integrator import ContactImpactSettings, integrate_revolution
 
     mech = config.mechanism
     if len(mech.joints) != 1:

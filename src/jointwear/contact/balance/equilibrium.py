@@ -8,6 +8,7 @@ from numpy.typing import NDArray
 from jointwear.contact.balance.window import _Window
 from jointwear.contact.laws import SpringLaw
 from jointwear.errors import ConvergenceError
+from jointwear.geometry.contour import pin_penetration
 from jointwear.solvers import bracketed_newton
 
 FloatArray = NDArray[np.float64]
@@ -44,7 +45,7 @@ def _equilibrium(
         a_col, b_col = a[:, None], b[:, None]
         cross = cos * b_col - sin * a_col
         root = np.sqrt(r_pin2 - cross**2)
-        depth = cos * a_col + sin * b_col - gap - cross**2 / (root + radius_pin)
+        depth = pin_penetration(cos * a_col + sin * b_col, cross, gap, radius_pin)
         penetration = np.maximum(depth, 0.0)
         force = law.pressure(penetration) * ar
         g_n = (force * cos).sum(axis=1) - load[rows]
@@ -152,7 +153,7 @@ def _equilibrium_by_direction(
         mu = cs * c + sn * si  # cos(theta_j - chi)
         cross = s_col * (cs * si - sn * c)
         root = np.sqrt(r_pin2 - cross**2)
-        depth = s_col * mu - gap[idx] - cross**2 / (root + radius_pin)
+        depth = pin_penetration(s_col * mu, cross, gap[idx], radius_pin)
         penetration = np.maximum(depth, 0.0)
         a = area[idx] if isinstance(area, np.ndarray) else area
         force = law.pressure(penetration) * a

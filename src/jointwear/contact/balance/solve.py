@@ -191,7 +191,6 @@ def _solve_window(
     order=1,
 ):
     radius_pin = pin.radius
-    r_pin2 = radius_pin**2
     lower, upper = _bracket(win, contour, radius_pin, load, max_penetration)
     check_reach(lower, load, azimuth, radius_pin)
     area = win.area
@@ -246,10 +245,10 @@ def _solve_window(
     springs_left, springs_right = _springs(win, contact)
     edge = bool(contact[:, 0].any() or contact[:, -1].any())
 
-    centre_penetration = along - (win.centre_radius - radius_pin)
+    lateral = 0.0 if across is None else across
+    centre_penetration = pin_penetration(along, lateral, win.centre_radius - radius_pin, radius_pin)
     eccentricity = along[:, None] * geometry.unit
     if across is not None:
-        centre_penetration -= across**2 / (np.sqrt(r_pin2 - across**2) + radius_pin)
         eccentricity += across[:, None] * geometry.unit_perp
     solution = ContactSolution(
         pressure=pressure,

@@ -1,0 +1,441 @@
+r"""Equations of motion of the contact systems: the slider-crank with a free pin, a free pin.
+
+Generalized coordinates
+-----------------------
+The crank is driven kinematically, ``phi_1 = omega t``, so the crank pin
+``B = l1 (cos phi_1, sin phi_1)`` is known at every time. Without clearance the
+mechanism would have no degree of freedom left; the clearance joint frees two,
+taken as
+
+* ``theta`` — rod angle (B to the rod-end joint centre C, counter-clockwise
+  from +x): the rod turns about B, ``C = B + l2 (cos theta, sin theta)``;
+* ``x_3`` — slider position: the slider-side joint centre is ``D = (x_3, 0)``.
+
+The clearance vector (pin-centre offset, paper's massless link ``CD``) is then a
+function of the coordinates, ``e = C - D``; ``(theta, x_3) <-> (e_x, e_y)`` is a
+local change of variables, so these are exactly the "two extra degrees of
+freedom" of the free pin. The mass matrix in ``(theta, x_3)`` is diagonal.
+
+Equations of motion
+-------------------
+``J`` is the contact force on the slider-side body (slider), the rod feels
+``-J`` at the contact point ``P = C + rho n``, with ``n`` the contact normal
+(direction in which the pin presses on the bushing, along ``e`` for a circular
+bushing), ``t = (-n_y, n_x)`` and ``rho = R_p`` when the bushing is in the slider
+(pin on the rod) or ``rho = -R_b`` when it is in the rod end. With
+``t_theta = (-sin theta, cos theta)``:
+
+.. math::
+
+    (I_2 + m_2 l_2^2/4)\,\ddot\theta &= -m_2 \tfrac{l_2}{2}\, \mathbf t_\theta\cdot\mathbf a_B
+        - m_2 g \tfrac{l_2}{2}\cos\theta - l_2\, \mathbf t_\theta\cdot\mathbf J - \rho F_T \\
+    m_3\,\ddot x_3 &= J_x + F_{spring}(x_3)
+
+(moments about the accelerating point ``B``; ``a_B = -omega^2 B``), with
+``J = F_N n + F_T t``: normal force ``F_N`` from ``dynamics.force_law``
+(:mod:`jointwear.mechanism.force_laws`) and friction
+``F_T = mu c_d(v_T) F_N sign(v_T)``, ``v_T = e' . t + rho theta'`` the slip of the
+rod-side surface over the slider-side one. The crank torque that keeps ``omega``
+constant is, as in the massless-link model,
+``T = B x R_B + m_1 g B_x / 2``, ``R_B = m_2 (a_G + g y) + J``; its work
+``W = int T omega dt`` is integrated with the state, so the energy balance
+``E(t) - E(0) = W(t) - dissipation`` can be checked
+(:meth:`SliderCrankContactSystem.energy`).
+
+The right-hand side runs compiled (numba, :mod:`jointwear.mechanism._impact_compiled`,
+imported on first use and cached on disk) for the point force laws; without numba, with
+``JOINTWEAR_NO_NUMBA=1`` or for the distributed laws, the Python methods below, which
+stay the readable reference, give the same numbers to the bit.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import os
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from jointwear.errors import ConfigError, ConvergenceError
+from jointwear.mechanism.force_laws import JointContact
+from jointwear.mechanism.impact_integrator import (
+    ContactHistory,
+    ContactSystemBase,
+    integrate_contacts,
+)
+from jointwear.mechanism.slider_crank import SliderCrank
+
+__all__ = [
+    "FreePinSystem",
+    "SliderCrankContactSystem",
+    "free_pin_impact",
+    "impact_kernel",
+]
+
+FloatArray = NDArray[np.float64]
+#: the keys of :meth:`SliderCrankContactSystem.evaluate`, in the compiled tuple's order
+_EVALUATE_KEYS = (
+    "theta_ddot", "x3_ddot", "force_x", "force_y", "normal_force", "friction_force",
+    "normal_x", "normal_y", "penetration", "slip", "crank_torque", "ex", "ey",
+)  # fmt: skip
+
+
+def impact_kernel() -> Any:
+    """The compiled right-hand side (module), imported on first use.
+
+    ``None`` without numba, or when ``JOINTWEAR_NO_NUMBA`` is set (the switch of the
+    compiled contact kernel, :func:`jointwear.contact.kernel.compiled_available`).
+    """
+    if os.environ.get("JOINTWEAR_NO_NUMBA", "") not in ("", "0"):
+        return None
+    return _load_kernel()
+
+
+@functools.cache
+def _load_kernel() -> Any:
+    try:
+        from jointwear.mechanism import _impact_compiled
+    except ImportError:
+        return None
+    return _impact_compiled
+
+
+class SliderCrankContactSystem(ContactSystemBase):
+    """Slider–crank with a free pin in the clearance joint (module docstring).
+
+    State ``y = (theta, x_3, theta', x_3', W)``: rod angle [rad], slider position
+    [m], their rates [rad/s, m/s] and the crank work ``W = int T omega dt`` [J].
+
+    Parameters
+    ----------
+    mechanism : SliderCrank
+        Masses, lengths, spring and gravity.
+    crank_speed : float
+        Constant crank angular velocity ``omega`` [rad/s].
+    contact : JointContact
+        Contact force model of the joint.
+    """
+
+    def __init__(
+        self,
+        mechanism: SliderCrank,
+        crank_speed: float,
+        contact: JointContact,
+        compiled: bool | None = None,
+    ) -> None:
+        self.mechanism = mechanism
+        self.omega = float(crank_speed)
+        self.contact = contact
+        m = mechanism
+        self._inertia_b = m.rod_inertia + 0.25 * m.rod_mass * m.rod_length**2
+        if self._inertia_b <= 0.0 or m.slider_mass <= 0.0:
+            raise ConfigError(
+                "mechanism.rod_mass, mechanism.slider_mass: the contact-impact model needs a "
+                "rod with inertia and a slider with mass (the pin's degrees of freedom)"
+            )
+        # the compiled right-hand side covers the point laws (the distributed laws sum
+        # over the contour's nodes with NumPy)
+        kernel = impact_kernel() if compiled is not False and not contact.distributed else None
+        if compiled and kernel is None:
+            raise ConfigError(
+                "dynamics: the compiled right-hand side needs numba and a point force law"
+            )
+        self._kernel = kernel
+        if kernel is not None:
+            self._parameters = self._kernel_parameters()
+            self._wear = contact._wear if contact._wear is not None else np.empty(0)
+
+    @property
+    def compiled(self) -> bool:
+        """Whether :meth:`rhs` and the gap functions run compiled (numba)."""
+        return self._kernel is not None
+
+    def _kernel_parameters(self) -> FloatArray:
+        """The parameter array of the compiled right-hand side (``_impact_compiled.P_*``)."""
+        m, c, k = self.mechanism, self.contact, self._kernel
+        values = {
+            k.P_CRANK: m.crank_length,
+            k.P_ROD: m.rod_length,
+            k.P_OMEGA: self.omega,
+            k.P_ROD_MASS: m.rod_mass,
+            k.P_GRAVITY: m.gravity,
+            k.P_INERTIA_B: self._inertia_b,
+            k.P_SLIDER_MASS: m.slider_mass,
+            k.P_CRANK_MASS: m.crank_mass,
+            k.P_SPRING_PULL: 1.0 if m.spring_mode == "pull" else 0.0,
+            k.P_PRELOAD: m.spring_preload,
+            k.P_SPRING_STIFFNESS: m.spring_stiffness,
+            k.P_CLEARANCE: c.clearance,
+            k.P_STIFFNESS: c.stiffness,
+            k.P_EXPONENT: c.exponent,
+            k.P_HYSTERESIS: c.hysteresis,
+            k.P_FRICTION: c.friction_coefficient,
+            k.P_V0: c.v0,
+            k.P_V1: c.v1,
+            k.P_ARM: c.friction_arm,
+            k.P_FLOOR: c.impact_velocity_floor,
+        }
+        parameters = np.empty(k.N_PARAMETERS)
+        for index, value in values.items():
+            parameters[index] = float(value)
+        return parameters
+
+    def clearance_state(self, t: float, y: FloatArray) -> tuple[float, float, float, float]:
+        theta, x3, theta_dot, x3_dot = y[0], y[1], y[2], y[3]
+        m, w = self.mechanism, self.omega
+        phi = w * t
+        cphi, sphi = math.cos(phi), math.sin(phi)
+        ct, st = math.cos(theta), math.sin(theta)
+        ex = m.crank_length * cphi + m.rod_length * ct - x3
+        ey = m.crank_length * sphi + m.rod_length * st
+        vx = -w * m.crank_length * sphi - m.rod_length * st * theta_dot - x3_dot
+        vy = w * m.crank_length * cphi + m.rod_length * ct * theta_dot
+        return float(ex), float(ey), float(vx), float(vy)
+
+    def gap(self, t: float, y: FloatArray) -> float:
+        if self._kernel is not None:
+            return self._kernel.gap(t, y, self._parameters, self._wear)
+        return super().gap(t, y)
+
+    def gap_rate(self, t: float, y: FloatArray) -> float:
+        if self._kernel is not None:
+            return self._kernel.gap_rate(t, y, self._parameters)
+        return super().gap_rate(t, y)
+
+    def gap_and_rate(self, t: float, y: FloatArray) -> tuple[float, float]:
+        if self._kernel is not None:
+            return self._kernel.gap_and_rate(t, y, self._parameters, self._wear)
+        return super().gap_and_rate(t, y)
+
+    def rhs_function(self, impact_velocity: float) -> Callable[[float, FloatArray], FloatArray]:
+        if self._kernel is None:
+            return super().rhs_function(impact_velocity)
+        rhs, parameters, wear = self._kernel.rhs, self._parameters, self._wear
+        return lambda t, y: rhs(t, y, impact_velocity, parameters, wear)
+
+    def spring(self, x3: float) -> float:
+        """Spring force on the slider along +x [N] (see :func:`spring_force`)."""
+        m = self.mechanism
+        if m.spring_mode == "pull":
+            return m.spring_preload + m.spring_stiffness * (m.crank_length + m.rod_length - x3)
+        return -(m.spring_preload + m.spring_stiffness * (x3 - (m.rod_length - m.crank_length)))
+
+    def spring_energy(self, x3: float) -> float:
+        """Potential of the spring force, ``F = -dV/dx_3`` [J]."""
+        m = self.mechanism
+        if m.spring_mode == "pull":
+            u = m.crank_length + m.rod_length - x3
+        else:
+            u = x3 - (m.rod_length - m.crank_length)
+        return m.spring_preload * u + 0.5 * m.spring_stiffness * u * u
+
+    def evaluate(self, t: float, y: ArrayLike, impact_velocity: float) -> dict[str, float]:
+        """Everything at one instant: accelerations, contact force, crank torque.
+
+        Parameters
+        ----------
+        t : float
+            Time [s] (crank angle ``omega t``).
+        y : array_like, shape (5,)
+            State.
+        impact_velocity : float
+            ``delta'^-`` of the current contact [m/s].
+
+        Returns
+        -------
+        dict
+            ``theta_ddot`` [rad/s^2], ``x3_ddot`` [m/s^2], ``force_x``/``force_y``
+            (``J``) [N], ``normal_force``/``friction_force`` [N], ``normal_x``/
+            ``normal_y`` [-], ``penetration`` [m], ``slip`` [m/s], ``crank_torque``
+            [N m].
+        """
+        if self._kernel is not None:
+            values = self._kernel.evaluate(
+                float(t), np.asarray(y, dtype=float), impact_velocity, self._parameters, self._wear
+            )
+            return dict(zip(_EVALUATE_KEYS, values, strict=True))
+        return self.evaluate_reference(t, y, impact_velocity)
+
+    def evaluate_reference(
+        self, t: float, y: ArrayLike, impact_velocity: float
+    ) -> dict[str, float]:
+        """:meth:`evaluate` in Python: the reference of the compiled one."""
+        theta, x3, theta_dot, x3_dot = (float(v) for v in np.asarray(y, dtype=float)[:4])
+        m, w = self.mechanism, self.omega
+        l1, l2 = m.crank_length, m.rod_length
+        phi = w * t
+        cphi, sphi = math.cos(phi), math.sin(phi)
+        bx, by = l1 * cphi, l1 * sphi
+        abx, aby = -w * w * bx, -w * w * by
+        ct, st = math.cos(theta), math.sin(theta)
+        ex = bx + l2 * ct - x3
+        ey = by + l2 * st
+        vx = -w * by - l2 * st * theta_dot - x3_dot
+        vy = w * bx + l2 * ct * theta_dot
+        jx, jy, normal, tangential, nx, ny, delta, slip = self.contact.force(
+            ex, ey, vx, vy, theta_dot, impact_velocity
+        )
+        half = 0.5 * l2
+        # t_theta = (-st, ct)
+        theta_ddot = (
+            -m.rod_mass * half * (-st * abx + ct * aby)
+            - m.rod_mass * m.gravity * half * ct
+            - l2 * (-st * jx + ct * jy)
+            - self.contact.friction_arm * tangential
+        ) / self._inertia_b
+        x3_ddot = (jx + self.spring(x3)) / m.slider_mass
+        agx = abx + half * (-st * theta_ddot - ct * theta_dot * theta_dot)
+        agy = aby + half * (ct * theta_ddot - st * theta_dot * theta_dot)
+        rbx = m.rod_mass * agx + jx
+        rby = m.rod_mass * (agy + m.gravity) + jy
+        torque = bx * rby - by * rbx + 0.5 * m.crank_mass * m.gravity * bx
+        return {
+            "theta_ddot": theta_ddot,
+            "x3_ddot": x3_ddot,
+            "force_x": jx,
+            "force_y": jy,
+            "normal_force": normal,
+            "friction_force": tangential,
+            "normal_x": nx,
+            "normal_y": ny,
+            "penetration": delta,
+            "slip": slip,
+            "crank_torque": torque,
+            "ex": ex,
+            "ey": ey,
+        }
+
+    def rhs(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:
+        """``y' = (theta', x_3', theta'', x_3'', T omega)``."""
+        if self._kernel is not None:
+            return self._kernel.rhs(t, y, impact_velocity, self._parameters, self._wear)
+        return self.rhs_reference(t, y, impact_velocity)
+
+    def rhs_reference(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:
+        """:meth:`rhs` in Python: the reference of the compiled right-hand side."""
+        out = self.evaluate_reference(t, y, impact_velocity)
+        return np.array(
+            [y[2], y[3], out["theta_ddot"], out["x3_ddot"], out["crank_torque"] * self.omega]
+        )
+
+    def energy(self, t: float, y: ArrayLike) -> float:
+        """Mechanical energy: kinetic + spring + gravity + contact elastic energy [J].
+
+        The crank's own kinetic energy is constant and left out; its potential
+        energy ``m_1 g (l_1 / 2) sin(phi_1)`` is included (the crank torque pays
+        for it).
+        """
+        theta, x3, theta_dot, x3_dot = (float(v) for v in np.asarray(y, dtype=float)[:4])
+        m, w = self.mechanism, self.omega
+        l1, l2 = m.crank_length, m.rod_length
+        phi = w * t
+        vbx, vby = -w * l1 * math.sin(phi), w * l1 * math.cos(phi)
+        vgx = vbx - 0.5 * l2 * math.sin(theta) * theta_dot
+        vgy = vby + 0.5 * l2 * math.cos(theta) * theta_dot
+        kinetic = 0.5 * m.rod_mass * (vgx * vgx + vgy * vgy) + 0.5 * (
+            m.rod_inertia * theta_dot**2 + m.slider_mass * x3_dot**2
+        )
+        y_g = l1 * math.sin(phi) + 0.5 * l2 * math.sin(theta)
+        gravity = m.gravity * (m.rod_mass * y_g + m.crank_mass * 0.5 * l1 * math.sin(phi))
+        ex, ey, _, _ = self.clearance_state(t, np.asarray(y, dtype=float))
+        return kinetic + gravity + self.spring_energy(x3) + self.contact.potential(ex, ey)
+
+
+class FreePinSystem(ContactSystemBase):
+    """A free pin of mass ``m`` inside a fixed bushing (to test one impact in isolation).
+
+    State ``y = (e_x, e_y, e'_x, e'_y, W)`` with ``W`` the work of the constant
+    external force [J]. The bushing does not move and the pin does not spin.
+
+    Parameters
+    ----------
+    mass : float
+        Pin mass [kg].
+    contact : JointContact
+        Contact force model.
+    external_force : tuple of float
+        Constant force on the pin, e.g. its weight [N].
+    """
+
+    def __init__(
+        self, mass: float, contact: JointContact, external_force: tuple[float, float] = (0.0, 0.0)
+    ) -> None:
+        self.mass = float(mass)
+        self.contact = contact
+        self.external_force = (float(external_force[0]), float(external_force[1]))
+
+    def clearance_state(self, t: float, y: FloatArray) -> tuple[float, float, float, float]:
+        return float(y[0]), float(y[1]), float(y[2]), float(y[3])
+
+    def rhs(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:
+        ex, ey, vx, vy = (float(v) for v in y[:4])
+        jx, jy, *_ = self.contact.force(ex, ey, vx, vy, 0.0, impact_velocity)
+        fx, fy = self.external_force
+        return np.array([vx, vy, (fx - jx) / self.mass, (fy - jy) / self.mass, fx * vx + fy * vy])
+
+    def energy(self, t: float, y: ArrayLike) -> float:
+        """Kinetic + contact elastic energy [J]."""
+        ex, ey, vx, vy = (float(v) for v in np.asarray(y, dtype=float)[:4])
+        return 0.5 * self.mass * (vx * vx + vy * vy) + self.contact.potential(ex, ey)
+
+
+def free_pin_impact(
+    contact: JointContact,
+    mass: float,
+    impact_velocity: float,
+    direction: float = 0.0,
+    method: str = "LSODA",
+    rtol: float = 1e-10,
+    atol: float = 1e-14,
+) -> tuple[float, ContactHistory]:
+    """One impact of a free pin on the bushing wall; effective restitution.
+
+    The pin starts at the bushing centre moving along ``direction`` at
+    ``impact_velocity`` and is integrated until it leaves the wall again.
+
+    Parameters
+    ----------
+    contact : JointContact
+        Contact force model (its clearance and law).
+    mass : float
+        Pin mass [kg].
+    impact_velocity : float
+        Approach velocity [m/s], > 0.
+    direction : float
+        Direction of flight [rad].
+    method : str
+        ``solve_ivp`` method.
+    rtol, atol : float
+        Integrator tolerances.
+
+    Returns
+    -------
+    restitution : float
+        ``-delta'^+ / delta'^-``: normal separation velocity over approach
+        velocity [-].
+    history : ContactHistory
+        The integration record.
+    """
+    system = FreePinSystem(mass, contact)
+    u = (math.cos(direction), math.sin(direction))
+    y0 = np.array([0.0, 0.0, impact_velocity * u[0], impact_velocity * u[1], 0.0])
+    gap = contact.clearance if not contact.distributed else contact._touch(direction)
+    flight = gap / impact_velocity
+    # generous bound on the contact duration (Hertz: 2.94 (m^2 / (K^2 v))^(1/5))
+    duration = 50.0 * (mass**2 / (contact.stiffness**2 * impact_velocity)) ** 0.2
+    history = integrate_contacts(
+        system,
+        (0.0, 2.0 * flight + duration),
+        y0,
+        in_contact=False,
+        method=method,
+        rtol=rtol,
+        atol=atol,
+        stop_after_separations=1,
+    )
+    if not history.separation_times:
+        raise ConvergenceError("free pin: no separation within the integration window")
+    return history.separation_velocities[0] / history.impact_velocities[0], history
