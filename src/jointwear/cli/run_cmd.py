@@ -121,9 +121,9 @@ def add_checks(summary: dict, result) -> None:
     each exceeded limit warns once."""
     from jointwear.tribology.metrics import engineering_checks
 
-    summary["checks"] = engineering_checks(result.joint_dataset(), result.config)
+    summary["checks"] = engineering_checks(result.joint_data(), result.config)
     for joint, entry in summary.get("joints", {}).items():
-        entry["checks"] = engineering_checks(result.joint_dataset(joint), result.config)
+        entry["checks"] = engineering_checks(result.joint_data(joint), result.config)
 
 
 def summary_table(summary: dict, title: str) -> Table:
