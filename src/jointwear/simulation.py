@@ -888,7 +888,7 @@ class Simulation:
 
 
 #: contact solves a run may need, above which the compiled kernel pays for loading numba
-COMPILED_KERNEL_SOLVES = 200
+COMPILED_KERNEL_SOLVES = 500
 
 
 def compiled_kernel(config: Config) -> bool | None:

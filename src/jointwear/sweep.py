@@ -847,7 +847,7 @@ def _cpus() -> int:
 #: case); a spawned one imports jointwear and loads the compiled kernel again
 WORKER_START = {"fork": 0.15, "forkserver": 2.0, "spawn": 2.0}
 #: chunks of cases handed to each local worker (fewer hand-overs, still balanced)
-CHUNKS_PER_WORKER = 4
+CHUNKS_PER_WORKER = 8
 
 
 def default_workers(case_seconds: float, remaining: int, cpus: int, method: str) -> int:
