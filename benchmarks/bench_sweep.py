@@ -81,6 +81,37 @@ print(json.dumps({"runtime": result.runtime, "per_case": statistics.median(times
 """
 
 
+#: one case's work as a sweep did it before (pressure field, Dataset) and as it does now
+CASE_WORK = """
+import json, statistics, sys, time, warnings
+warnings.simplefilter("ignore")
+from jointwear.simulation import Simulation
+from jointwear.sweep import load_sweep
+plan = load_sweep(sys.argv[1])
+configs = [plan.config(case) for case in plan.cases[:16]]
+Simulation(configs[0]).run()  # the compiled kernel loaded
+old, new = [], []
+for config in configs:
+    began = time.perf_counter()
+    result = Simulation(config).run()
+    result.dataset, result.summary()
+    old.append(time.perf_counter() - began)
+    began = time.perf_counter()
+    Simulation(config).run(pressures=False).summary()
+    new.append(time.perf_counter() - began)
+print(json.dumps({"old": statistics.median(old), "new": statistics.median(new),
+                  "ratio": statistics.median([n / o for n, o in zip(new, old)])}))
+"""
+
+
+def case_work(sweep: Path, env: dict[str, str]) -> dict:
+    done = subprocess.run(
+        [sys.executable, "-c", CASE_WORK, str(sweep)], env=env, capture_output=True, text=True,
+        check=True,
+    )  # fmt: skip
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
 def run_mode(mode: str, sweep: Path, folder: Path, env: dict[str, str]) -> dict:
     out = folder / f"{mode}-{time.monotonic_ns()}"
     done = subprocess.run(
@@ -165,6 +196,12 @@ def main() -> None:
     table.add(
         "`jointwear sweep` whole process, default workers", "", f"{median(cli):.2f}",
         f"{CASES / median(cli):.1f}", "", "", "", "",
+    )  # fmt: skip
+    work = case_work(sweep, env)
+    table.add(
+        "one case in one process: with pressure field and Dataset (before) -> without",
+        "1", "", "", "", f"{work['old'] * 1e3:.1f} -> {work['new'] * 1e3:.1f}",
+        f"ratio {work['ratio']:.2f}", "",
     )  # fmt: skip
     table.print(
         f"{CASES} cases x 15000 revolutions, adaptive updating, paper joint (NLCP); "
