@@ -63,15 +63,14 @@ _SUBMODULES = (
 
 
 def _package_version() -> str:
+    # read when first asked for: importlib.metadata and the scan of the installed
+    # distributions cost more than a one-revolution run's contact solve
     from importlib import metadata
 
     try:
         return metadata.version("jointwear")
     except metadata.PackageNotFoundError:  # running from a source tree
         return "0+unknown"
-
-
-__version__ = _package_version()
 
 if _typing.TYPE_CHECKING:
     from jointwear.config import Config, load_config
@@ -83,7 +82,9 @@ if _typing.TYPE_CHECKING:
 def __getattr__(name: str) -> object:
     from importlib import import_module
 
-    if name in _LAZY:
+    if name == "__version__":
+        value: object = _package_version()
+    elif name in _LAZY:
         value = getattr(import_module(_LAZY[name]), name)
     elif name in _SUBMODULES:
         value = import_module(f"jointwear.{name}")
@@ -94,5 +95,5 @@ def __getattr__(name: str) -> object:
 
 
 def __dir__() -> list[str]:
-    dunders = {name for name in globals() if name.startswith("__")}
+    dunders = {name for name in globals() if name.startswith("__")} | {"__version__"}
     return sorted(dunders | set(__all__) | set(_SUBMODULES))

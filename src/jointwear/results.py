@@ -3,6 +3,12 @@
 Every variable carries ``units`` and ``long_name`` attributes (CF style); the
 fully resolved configuration is stored as TOML text in the ``config``
 attribute, so a result file alone says how it was made.
+
+A finished run first holds its results as plain NumPy arrays
+(:class:`ResultContents`, the same names, dimensions and attributes); the xarray
+Dataset is built from them only when it is asked for or written. Importing xarray
+(and pandas with it) costs more than a one-revolution run, and a summary or a
+sweep case needs none of it.
 """
 
 from __future__ import annotations
@@ -13,23 +19,28 @@ import datetime as _dt
 import math
 import sys
 import tomllib
+from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import xarray as xr
 
 from jointwear.errors import DataError
 from jointwear.io import atomic_write, check_input
 from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS
 
 if TYPE_CHECKING:
+    import xarray as xr
+
     from jointwear.config import Config
     from jointwear.contact import ContactSolution
     from jointwear.simulation import Simulation, SimulationState
 
 __all__ = [
     "WEAR_VARIABLES",
+    "ResultContents",
+    "ResultVariable",
+    "build_contents",
     "build_dataset",
     "check_result_content",
     "combine_joints",
@@ -61,8 +72,92 @@ _DYNAMICS_META = {
 }
 
 
-def _var(dims, values, units: str, long_name: str) -> xr.Variable:
-    return xr.Variable(dims, np.asarray(values), attrs={"units": units, "long_name": long_name})
+class ResultVariable:
+    """One variable of :class:`ResultContents`: dimensions, NumPy values and attributes.
+
+    Reads like an ``xarray.Variable`` where the package reads results (``.values``,
+    ``.dims``, ``.attrs``, ``.dtype``).
+    """
+
+    __slots__ = ("attrs", "dims", "values")
+
+    def __init__(self, dims: tuple[str, ...], values: Any, attrs: dict[str, str]) -> None:
+        self.dims = tuple(dims)
+        self.values = np.asarray(values)
+        self.attrs = attrs
+
+    @property
+    def dtype(self) -> np.dtype:
+        return self.values.dtype
+
+    def to_variable(self) -> xr.Variable:
+        """The ``xarray.Variable`` (the values are not copied)."""
+        import xarray as xr
+
+        # fastpath: the values are NumPy arrays already; without it xarray probes for dask
+        return xr.Variable(self.dims, self.values, attrs=dict(self.attrs), fastpath=True)
+
+
+class ResultContents:
+    """The result of one clearance joint as plain arrays, read like the Dataset it becomes.
+
+    ``contents["wear_depth"].values``, ``"pin_wear_depth" in contents``,
+    ``contents.attrs``, ``contents.sizes`` and ``contents.dims`` answer as they would
+    on :meth:`to_dataset`'s Dataset, so :func:`summarize` and the engineering checks
+    read either.
+
+    Parameters
+    ----------
+    data_vars, coords : dict of str to ResultVariable
+        Variables and coordinates (SI values, ``units`` and ``long_name`` attributes).
+    attrs : dict
+        Global attributes.
+    """
+
+    def __init__(
+        self,
+        data_vars: dict[str, ResultVariable],
+        coords: dict[str, ResultVariable],
+        attrs: dict[str, Any],
+    ) -> None:
+        self.data_vars = data_vars
+        self.coords = coords
+        self.attrs = attrs
+
+    def __getitem__(self, name: str) -> ResultVariable:
+        found = self.data_vars.get(name) or self.coords.get(name)
+        if found is None:
+            raise KeyError(name)
+        return found
+
+    def __contains__(self, name: object) -> bool:
+        return name in self.data_vars or name in self.coords
+
+    @property
+    def sizes(self) -> dict[str, int]:
+        """Dimension name -> length."""
+        out: dict[str, int] = {}
+        for variable in (*self.coords.values(), *self.data_vars.values()):
+            out.update(zip(variable.dims, variable.values.shape, strict=True))
+        return out
+
+    @property
+    def dims(self) -> dict[str, int]:
+        return self.sizes
+
+    def to_dataset(self) -> xr.Dataset:
+        """The xarray Dataset of these contents (the arrays are shared, not copied)."""
+        import xarray as xr
+
+        return xr.Dataset(
+            {name: v.to_variable() for name, v in self.data_vars.items()},
+            coords={name: v.to_variable() for name, v in self.coords.items()},
+            attrs=dict(self.attrs),
+        )
+
+
+def _var(dims, values, units: str, long_name: str) -> ResultVariable:
+    return ResultVariable(dims, values, {"units": units, "long_name": long_name})
 
 
 def build_dataset(
@@ -73,6 +168,30 @@ def build_dataset(
     runtime: float,
 ) -> xr.Dataset:
     """Assemble the result Dataset of a finished run (SI units)."""
+    return build_contents(simulation, state, initial, final, runtime).to_dataset()
+
+
+def build_contents(
+    simulation: Simulation,
+    state: SimulationState,
+    initial: ContactSolution | None,
+    final: ContactSolution | None,
+    runtime: float,
+) -> ResultContents:
+    """The results of a finished run as plain arrays (SI units).
+
+    Parameters
+    ----------
+    simulation : Simulation
+        The simulation that ran (config, load cycle, sliding distance).
+    state : SimulationState
+        Its final state.
+    initial, final : ContactSolution or None
+        Contact on the unworn and on the final contour; ``None`` for both leaves out
+        the pressure snapshots and the contact half-angle (a sweep case keeps scalars).
+    runtime : float
+        Wall-clock time of the run [s].
+    """
     from jointwear import __version__
 
     config = simulation.config
@@ -83,9 +202,6 @@ def build_dataset(
     revolutions = np.array(sorted(saved), dtype=np.int64)
     profiles = np.array([saved[r] for r in revolutions]).reshape(len(revolutions), nodes)
     steps = cycle.steps
-    snapshot = np.unique(
-        np.linspace(0, steps, min(PRESSURE_SNAPSHOTS, steps), endpoint=False).astype(int)
-    )
     sliding = simulation.sliding_distance
     wear_rate = state.wear_rate if state.wear_rate is not None else np.zeros(nodes)
     data_vars = {
@@ -119,25 +235,39 @@ def build_dataset(
             name: _var(("step",), diagnostic.values, diagnostic.units, diagnostic.long_name)
             for name, diagnostic in cycle.diagnostics.items()
         },
-        "pressure_initial": _var(
+    }
+    coords = {
+        "theta": _var(("theta",), theta, "rad", "bushing angle"),
+        "revolution": _var(("revolution",), revolutions, "1", "revolutions completed"),
+        "step": _var(("step",), np.arange(steps), "1", "time step of the revolution"),
+        "phase": _var(("step",), cycle.phase, "rad", "phase of the cycle at the step start"),
+        "time": _var(("step",), cycle.time, "s", "time of the step start"),
+    }
+    if initial is not None and final is not None:
+        snapshot = np.unique(
+            np.linspace(0, steps, min(PRESSURE_SNAPSHOTS, steps), endpoint=False).astype(int)
+        )
+        data_vars["pressure_initial"] = _var(
             ("snapshot", "theta"),
             initial.pressure[snapshot],
             "Pa",
             "contact pressure on the unworn bushing",
-        ),
-        "pressure_final": _var(
+        )
+        data_vars["pressure_final"] = _var(
             ("snapshot", "theta"),
             final.pressure[snapshot],
             "Pa",
             "contact pressure on the final contour",
-        ),
-        "contact_half_angle": _var(
+        )
+        data_vars["contact_half_angle"] = _var(
             ("step",),
             0.5 * (initial.half_angle_left + initial.half_angle_right),
             "rad",
             "mean contact half-angle on the unworn bushing",
-        ),
-    }
+        )
+        coords["snapshot"] = _var(
+            ("snapshot",), cycle.phase[snapshot], "rad", "cycle phase of the pressure snapshot"
+        )
     if state.pin_wear_depth is not None:
         data_vars["pin_wear_depth"] = _var(
             ("theta",), state.pin_wear_depth, "m", "final wear depth of the pin, pin frame"
@@ -152,29 +282,18 @@ def build_dataset(
     for name, values in dynamics.items():
         units, long_name = _DYNAMICS_META[name]
         data_vars[f"dynamics_{name}"] = _var(("dynamics_update",), values, units, long_name)
-    coords = {
-        "theta": _var(("theta",), theta, "rad", "bushing angle"),
-        "revolution": _var(("revolution",), revolutions, "1", "revolutions completed"),
-        "step": _var(("step",), np.arange(steps), "1", "time step of the revolution"),
-        "phase": _var(("step",), cycle.phase, "rad", "phase of the cycle at the step start"),
-        "time": _var(("step",), cycle.time, "s", "time of the step start"),
-        "snapshot": _var(
-            ("snapshot",),
-            cycle.phase[snapshot],
-            "rad",
-            "cycle phase of the pressure snapshot",
-        ),
-        "update": _var(("update",), np.arange(len(history["revolution"])), "1", "contour update"),
-        "update_revolution": _var(
-            ("update",),
-            np.asarray(history["revolution"], dtype=np.int64),
-            "1",
-            "revolutions completed at the update",
-        ),
-    }
+    coords["update"] = _var(
+        ("update",), np.arange(len(history["revolution"])), "1", "contour update"
+    )
+    coords["update_revolution"] = _var(
+        ("update",),
+        np.asarray(history["revolution"], dtype=np.int64),
+        "1",
+        "revolutions completed at the update",
+    )
     attrs = {
         "title": "jointwear wear simulation",
-        "contact_model": final.model,
+        "contact_model": simulation.law.name if final is None else final.model,
         "mechanism": cycle.mechanism,
         "dynamics_model": cycle.model,
         "joint": cycle.joint,
@@ -187,7 +306,7 @@ def build_dataset(
         "config": config.to_toml(),
         "Conventions": "CF-1.10",
     }
-    return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+    return ResultContents(data_vars, coords, attrs)
 
 
 def combine_joints(datasets: list[xr.Dataset]) -> xr.Dataset:
@@ -196,6 +315,8 @@ def combine_joints(datasets: list[xr.Dataset]) -> xr.Dataset:
     Joints updated a different number of times (adaptive updating) leave the
     shorter ``update`` series padded with NaN.
     """
+    import xarray as xr
+
     names = [str(ds.attrs["joint"]) for ds in datasets]
     per_joint = [
         ds.reset_coords("update_revolution").assign(
@@ -287,20 +408,52 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
     return out
 
 
-def _local_scheduler() -> contextlib.AbstractContextManager[Any]:
-    """Serialise with dask's synchronous scheduler if dask is loaded (else do nothing)."""
-    if "dask" not in sys.modules:
-        return contextlib.nullcontext()
-    import dask
+@contextlib.contextmanager
+def _dask_for_write() -> Iterator[None]:
+    """How dask takes part in writing an in-memory result.
 
-    return dask.config.set(scheduler="synchronous")
+    A result holds NumPy arrays only. Yet xarray's netCDF writer asks dask, if it is
+    installed, for its scheduler (importing ``distributed``) and for its array type
+    (importing ``dask.array``): ~0.5 s for nothing. While nobody in this process uses
+    dask arrays or a dask.distributed client, dask stays hidden during the write (and
+    xarray's memo of the dask array type is forgotten again, so that dask works as
+    usual afterwards). With a client loaded, dask's synchronous scheduler serialises
+    the write (a client's locks cannot key a memory buffer).
+    """
+    if "distributed" in sys.modules:
+        import dask
+
+        with dask.config.set(scheduler="synchronous"):
+            yield
+        return
+    if "dask.array" in sys.modules:
+        yield
+        return
+    from xarray.namedarray import pycompat
+
+    memo = getattr(pycompat, "_cached_duck_array_modules", None)
+    remembered = memo is not None and "dask" in memo
+    saved = sys.modules.get("dask", _ABSENT)
+    sys.modules["dask"] = None  # type: ignore[assignment]  # `import dask` fails
+    try:
+        yield
+    finally:
+        if saved is _ABSENT:
+            sys.modules.pop("dask", None)
+        else:
+            sys.modules["dask"] = saved
+        if memo is not None and not remembered:
+            memo.pop("dask", None)
+
+
+_ABSENT = object()
 
 
 def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
     """Write a result Dataset to netCDF-4 (h5netcdf) atomically."""
     # serialised in memory, then written as plain bytes: a full disk fails in an ordinary
     # write (no HDF5 file handle is left open to be closed again at exit)
-    with _local_scheduler():  # a dask.distributed client's locks cannot key a memory buffer
+    with _dask_for_write():
         data = dataset.to_netcdf(engine="h5netcdf", invalid_netcdf=False)
     with atomic_write(path, "wb") as handle:
         handle.write(data)
@@ -316,6 +469,8 @@ def read_result(path: str | Path) -> xr.Dataset:
     """
     path = Path(path)
     check_input(path, "result", max_bytes=None)
+    import xarray as xr
+
     try:
         with xr.open_dataset(path, engine="h5netcdf") as handle:
             dataset = handle.load()

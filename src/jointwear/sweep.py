@@ -611,10 +611,11 @@ def run_case(task: Mapping[str, Any]) -> dict[str, Any]:
                 state = checkpointer.load()
                 if state is None:
                     checkpointer.begin()
-            result = Simulation(config).run(state=state, on_step=checkpointer)
+            # a case keeps scalars and the final profile: no pressure field, no Dataset
+            result = Simulation(config).run(state=state, on_step=checkpointer, pressures=False)
         summary = result.summary()
         record["metrics"] = {name: summary[name] for name in METRICS}
-        record["wear_depth_m"] = [float(v) for v in result.wear_depth]
+        record["wear_depth_m"] = np.asarray(result.wear_depth, dtype=np.float64).tolist()
         for name in ("peak_wear_depth_m", "wear_width_deg", "wear_mass_kg", "wear_volume_m3"):
             if not math.isfinite(record["metrics"][name]):
                 raise ArithmeticError(f"{name} is {record['metrics'][name]}")
@@ -652,6 +653,11 @@ class SweepResult:
         Cases already finished before (``resume=True``).
     scheduler : str
         ``"serial"``, ``"processes"`` or the dask scheduler address.
+    workers : int or None
+        Local processes that ran the cases (1: one after the other in this process;
+        ``None`` on a dask cluster).
+    counts : dict
+        Cases by status (``"ok"``, ``"failed"``, ``"error"``).
     """
 
     out: Path
@@ -728,8 +734,9 @@ def run_sweep(
     client : dask.distributed.Client, optional
         An existing client (instead of ``scheduler``).
     workers : int, optional
-        Local worker processes (default: the CPUs available); ``1`` runs the
-        cases one after the other in this process.
+        Local worker processes; ``1`` runs the cases one after the other in this
+        process. Default: the first case runs here, and the rest on the CPUs available
+        when that pays for starting the workers (:func:`default_workers`), else here.
     resume : bool
         Keep the finished cases already in ``out``; run the others.
     progress : callable, optional
@@ -809,8 +816,7 @@ def _run(
         mode = _run_dask(tasks, finish, client)
         used = None
     else:
-        used = workers or min(_cpus(), max(1, len(tasks)))
-        mode = _run_local(tasks, finish, used)
+        mode, used = _run_local(tasks, finish, workers)
 
     ordered = [records[case.index] for case in plan.cases]
     write_cases_csv(plan, ordered, out / CASES_CSV)
@@ -836,33 +842,105 @@ def _cpus() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+#: seconds until a pool of local workers runs its first case, by start method [s]:
+#: a forked worker inherits this process (numba's machine code loaded by the first
+#: case); a spawned one imports jointwear and loads the compiled kernel again
+WORKER_START = {"fork": 0.15, "forkserver": 2.0, "spawn": 2.0}
+#: chunks of cases handed to each local worker (fewer hand-overs, still balanced)
+CHUNKS_PER_WORKER = 8
+
+
+def default_workers(case_seconds: float, remaining: int, cpus: int, method: str) -> int:
+    """Local workers for the rest of a sweep, after one case took ``case_seconds``.
+
+    ``w`` workers finish the remaining cases in about ``start + serial / w`` instead of
+    ``serial = remaining * case_seconds``; they pay off when ``serial (1 - 1/w) >
+    start``, ``start`` the time a pool needs to run its first case
+    (:data:`WORKER_START`). Otherwise the cases run one after the other here, so a small
+    sweep is never slower than serial.
+
+    Parameters
+    ----------
+    case_seconds : float
+        Wall time of the case that ran first [s].
+    remaining : int
+        Cases still to run.
+    cpus : int
+        Processors available to this process.
+    method : str
+        Start method of the worker processes (``"fork"``, ``"forkserver"``, ``"spawn"``).
+    """
+    workers = min(cpus, remaining)
+    if workers < 2:
+        return 1
+    serial = case_seconds * remaining
+    start = WORKER_START.get(method, WORKER_START["spawn"])
+    return workers if serial * (1.0 - 1.0 / workers) > start else 1
+
+
+def _start_method() -> str:
+    """fork while this process has one thread (fast, and workers inherit what it loaded)."""
+    methods = multiprocessing.get_all_start_methods()
+    if "fork" in methods and threading.active_count() == 1:
+        return "fork"
+    return "forkserver" if "forkserver" in methods else "spawn"
+
+
+def run_cases(tasks: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
+    """:func:`run_case` of each task, in order (a chunk of a local sweep)."""
+    return [run_case(task) for task in tasks]
+
+
 def _run_local(
     tasks: Sequence[tuple[Case, dict[str, Any]]],
     finish: Callable[[Case, dict[str, Any]], None],
-    workers: int,
-) -> str:
-    if workers == 1 or len(tasks) <= 1:
-        for case, task in tasks:
+    workers: int | None,
+) -> tuple[str, int]:
+    """Run the cases on local processes; the mode (``"serial"``/``"processes"``), workers."""
+    pending = list(tasks)
+    method = _start_method()
+    if workers == 1 or len(pending) <= 1 or (workers is None and _cpus() == 1):
+        for case, task in pending:
             finish(case, run_case(task))
-        return "serial"
+        return "serial", 1
+    if workers is None or method == "fork":
+        # the first case runs here: it shows what a case costs, and forked workers
+        # inherit what it loaded (the compiled kernel) instead of loading it each
+        case, task = pending.pop(0)
+        began = time.perf_counter()
+        finish(case, run_case(task))
+        if workers is None:
+            workers = default_workers(
+                time.perf_counter() - began, len(pending), _cpus(), method
+            )
+        if workers == 1 or not pending:
+            for case, task in pending:
+                finish(case, run_case(task))
+            return "serial", 1
+    workers = min(workers, len(pending))
+    size = max(1, len(pending) // (workers * CHUNKS_PER_WORKER))
+    chunks = [pending[i : i + size] for i in range(0, len(pending), size)]
     from concurrent.futures import ProcessPoolExecutor, as_completed
     from concurrent.futures.process import BrokenProcessPool
 
-    # fork is fast and safe while this process has one thread; otherwise forkserver
-    methods = multiprocessing.get_all_start_methods()
-    method = "fork" if "fork" in methods and threading.active_count() == 1 else None
-    if method is None:
-        method = "forkserver" if "forkserver" in methods else "spawn"
     executor = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context(method))
     try:
-        futures = {executor.submit(run_case, task): case for case, task in tasks}
+        futures = {
+            executor.submit(run_cases, [task for _, task in chunk]): chunk for chunk in chunks
+        }
+        # the workers exist now: load what sweep.nc is written with while they run
+        # instead of after them (~0.5 s of imports)
+        import h5netcdf  # noqa: F401
+        import xarray  # noqa: F401
+
         for future in as_completed(futures):
-            case = futures[future]
+            chunk = futures[future]
             try:
-                record = future.result()
+                records = future.result()
             except BrokenProcessPool:
-                record = _lost(case, "its worker process died")
-            finish(case, record)
+                records = [_lost(case, "its worker process died") for case, _ in chunk]
+            for (case, _), record in zip(chunk, records, strict=True):
+                finish(case, record)
     except BaseException:
         # interrupted: stop the running cases now (their checkpoints are whole files)
         # instead of waiting for them at exit
@@ -871,7 +949,7 @@ def _run_local(
         executor.shutdown(wait=False, cancel_futures=True)
         raise
     executor.shutdown()
-    return "processes"
+    return "processes", workers
 
 
 def _lost(case: Case, why: str) -> dict[str, Any]:
@@ -1058,7 +1136,7 @@ def write_sweep_dataset(
     import xarray as xr
 
     from jointwear import __version__
-    from jointwear.results import write_netcdf
+    from jointwear.results import ResultVariable, write_netcdf
 
     n = len(records)
     profiles = [r.get("wear_depth_m") for r in records]
@@ -1077,7 +1155,7 @@ def write_sweep_dataset(
             depth[i] = np.interp(theta, own, values, period=2 * np.pi)
 
     def var(values, units, long_name, dims=("case",)):
-        return xr.Variable(dims, values, attrs={"units": units, "long_name": long_name})
+        return ResultVariable(dims, values, {"units": units, "long_name": long_name}).to_variable()
 
     data_vars: dict[str, Any] = {}
     for name, (unit, long_name) in CASE_RESULTS.items():

@@ -171,3 +171,20 @@ def test_cli_needs_no_click_of_its_own(paper_config_path) -> None:
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert "internal error" not in done.stderr
+
+
+def test_progress_bar_on_a_terminal_runs_no_thread():
+    # a sweep forks its workers only while the process has a single thread
+    import threading
+
+    from jointwear.cli.run_cmd import ProgressBar
+
+    before = threading.active_count()
+    with ProgressBar("cases", delay=0.0) as bar:
+        bar.enabled = True  # as on a terminal
+        for done in range(5):
+            bar(done, 5)
+            assert threading.active_count() == before
+        assert bar._bar is not None
+        bar(5, 5)
+    assert bar._bar is None

@@ -37,8 +37,13 @@ QuietOpt = Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar."
 class ProgressBar:
     """A rich progress bar on stderr that appears only for runs longer than a second.
 
-    Off when ``quiet`` or when stderr is not a terminal.
+    Off when ``quiet`` or when stderr is not a terminal. It is redrawn by the progress
+    calls themselves (at most every :attr:`interval` seconds), not by a thread of its own:
+    a sweep forks its workers only from a process without threads.
     """
+
+    #: shortest time between two redraws [s]
+    interval = 0.1
 
     def __init__(self, description: str, quiet: bool = False, delay: float = 1.0) -> None:
         self.enabled = not quiet and sys.stderr.isatty()
@@ -47,6 +52,7 @@ class ProgressBar:
         self.start = time.perf_counter()
         self._bar = None
         self._task = None
+        self._drawn = -math.inf
 
     def __call__(self, done: int, total: int) -> None:
         raise_pending()  # the work goes on only if no signal has arrived
@@ -64,10 +70,16 @@ class ProgressBar:
                 TimeRemainingColumn(),
                 console=err_console,
                 transient=True,
+                auto_refresh=False,
             )
             self._bar.start()
             self._task = self._bar.add_task(self.description, total=total)
-        self._bar.update(self._task, completed=done)
+            self._drawn = -math.inf
+        now = time.perf_counter()
+        due = now - self._drawn >= self.interval or done >= total
+        self._bar.update(self._task, completed=done, refresh=due)
+        if due:
+            self._drawn = now
 
     def close(self) -> None:
         if self._bar is not None:
@@ -121,9 +133,9 @@ def add_checks(summary: dict, result) -> None:
     each exceeded limit warns once."""
     from jointwear.tribology.metrics import engineering_checks
 
-    summary["checks"] = engineering_checks(result.joint_dataset(), result.config)
+    summary["checks"] = engineering_checks(result.joint_data(), result.config)
     for joint, entry in summary.get("joints", {}).items():
-        entry["checks"] = engineering_checks(result.joint_dataset(joint), result.config)
+        entry["checks"] = engineering_checks(result.joint_data(joint), result.config)
 
 
 def summary_table(summary: dict, title: str) -> Table:

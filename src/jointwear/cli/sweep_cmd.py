@@ -39,8 +39,8 @@ WorkersOpt = Annotated[
     int | None,
     typer.Option(
         "--workers",
-        help="Local worker processes (default: the CPUs available; 1 = one after another "
-        "in this process).",
+        help="Local worker processes (default: the CPUs available when the first case shows "
+        "the sweep is worth it, else 1; 1 = one after another in this process).",
         show_default=False,
     ),
 ]

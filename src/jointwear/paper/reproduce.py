@@ -308,10 +308,10 @@ def material_checks(result: Any) -> dict[str, dict[str, Any]]:
 
     bushing = result.config.materials.bushing
     if any(getattr(bushing, key) is not None for key in LIMIT_KEYS):
-        return engineering_checks(result.joint_dataset(), result.config)
+        return engineering_checks(result.joint_data(), result.config)
     ptfe = get_material("ptfe")
     return engineering_checks(
-        result.joint_dataset(), result.config, limits=ptfe.limits(), name=ptfe.name
+        result.joint_data(), result.config, limits=ptfe.limits(), name=ptfe.name
     )
 
 

@@ -493,8 +493,9 @@ def engineering_checks(
 
     Parameters
     ----------
-    dataset : xarray.Dataset
-        A result without a ``joint`` dimension (``WearResult.joint_dataset()``).
+    dataset : xarray.Dataset or ResultContents
+        A result without a ``joint`` dimension (``WearResult.joint_data()``, or
+        ``WearResult.joint_dataset()``).
     config : jointwear.config.Config
         Uses ``joint.pin_radius``, ``joint.axial_length`` and ``materials.bushing``.
     warn : bool

@@ -1,0 +1,135 @@
+"""Start-up of the command line: whole `jointwear run` processes, one revolution of the paper.
+
+Run from the repository root::
+
+    python benchmarks/bench_startup.py                    # ~1 minute
+    python benchmarks/bench_startup.py --quick            # fewer repeats
+    python benchmarks/bench_startup.py --baseline REV     # also the code of git revision REV
+
+Each command runs as a fresh process, the commands taking turns after one warm-up run
+each; the table gives the median wall time. With ``--baseline`` every command also runs
+on the ``src`` of revision REV (unpacked from git) in the same turns, and the ratio is the
+median of the run-by-run ratios. The last column lists the heavy libraries the command
+loaded (one extra, untimed run).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+from benchlib import (
+    PAPER,
+    SRC,
+    Table,
+    checkout,
+    describe_machine,
+    environment,
+    interleaved,
+    median,
+    paired_ratio,
+)
+
+sys.path.insert(0, str(SRC))
+from jointwear.simulation import COMPILED_KERNEL_SOLVES
+
+MODELS = ("nlcp", "winkler", "asymmetric-winkler", "hertz")
+HEAVY = ("numba", "xarray", "pandas", "dask", "dask.array", "distributed", "matplotlib")
+#: target of a one-revolution run, whole process [s]
+TARGET = 0.8
+
+
+def run_command(*options: str) -> list[str]:
+    return [
+        sys.executable, "-m", "jointwear", "run", str(PAPER),
+        "--set", "simulation.revolutions=1", "--json", "-q", *options,
+    ]  # fmt: skip
+
+
+def heavy_modules(command: list[str], env: dict[str, str]) -> str:
+    """The heavy libraries loaded by ``command`` (``python -m jointwear ...`` or ``-c``)."""
+    if command[1] == "-c":
+        code = command[2]
+    else:
+        code = f"from jointwear.cli import main\nmain({command[3:]!r})"
+    with tempfile.TemporaryDirectory() as folder:
+        report = Path(folder) / "modules.json"
+        indented = code.replace("\n", "\n    ")
+        script = (
+            f"import json, sys\ntry:\n    {indented}\nfinally:\n"
+            f"    open({str(report)!r}, 'w').write(json.dumps(sorted(sys.modules)))\n"
+        )
+        subprocess.run(
+            [sys.executable, "-c", script], env=env, stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+        )  # fmt: skip
+        loaded = set(json.loads(report.read_text())) if report.exists() else set()
+    return ", ".join(m for m in HEAVY if m in loaded) or "none"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="3 repeats instead of 9")
+    parser.add_argument("--repeat", type=int, default=None, help="runs of each command")
+    parser.add_argument("--baseline", default=None, help="git revision to compare with")
+    args = parser.parse_args()
+    repeat = args.repeat or (3 if args.quick else 9)
+    machine = describe_machine()
+    out = Path(tempfile.mkdtemp(prefix="jointwear-startup-"))
+    cases: dict[str, list[str]] = {
+        f"run, {model}": run_command("--set", f"contact.model={model}") for model in MODELS
+    }
+    cases["run, nlcp, --out DIR --no-plots"] = run_command("--out", str(out / "run"), "--no-plots")
+    cases["`import jointwear.cli`"] = [sys.executable, "-c", "import jointwear.cli"]
+    # just above the kernel policy's threshold the two paths cost about the same
+    above = COMPILED_KERNEL_SOLVES + 1
+    at_threshold = [
+        sys.executable, "-m", "jointwear", "run", str(PAPER), "--json", "-q",
+        "--set", f"simulation.revolutions={above}", "--set", "simulation.update_every=1",
+    ]  # fmt: skip
+    cases[f"run, nlcp, {above} revolutions every 1 (compiled kernel)"] = at_threshold
+    # yardstick without git: the same run with what the old path loaded imported first
+    eager = (
+        "import numba, xarray, dask.array\nimport jointwear.contact._compiled\n"
+        f"from jointwear.cli import main\nmain({run_command()[3:]!r})"
+    )
+    cases["run, nlcp, numba + xarray + dask.array imported first"] = [sys.executable, "-c", eager]
+    baseline = checkout(args.baseline) if args.baseline else None
+    commands = {}
+    for name, command in cases.items():
+        commands[name] = (command, environment())
+        if baseline is not None:
+            commands[f"{name} [baseline]"] = (command, environment(baseline))
+    commands[f"run, nlcp, {above} revolutions every 1, JOINTWEAR_NO_NUMBA=1"] = (
+        at_threshold, environment(JOINTWEAR_NO_NUMBA="1")
+    )
+    times = interleaved(commands, repeat)
+    header = ["command (paper case, one revolution)", "median wall [s]"]
+    if baseline is not None:
+        header += [f"baseline {args.baseline} [s]", "ratio new/baseline"]
+    table = Table(*header, "target", "heavy libraries loaded")
+    for name, (command, env) in commands.items():
+        if name.endswith("[baseline]"):
+            continue
+        cells = [name, f"{median(times[name]):.3f}"]
+        if baseline is not None:
+            old = times.get(f"{name} [baseline]")
+            cells += (
+                [f"{median(old):.3f}", f"{paired_ratio(times[name], old):.2f}"]
+                if old else ["", ""]
+            )
+        plain = name.startswith("run, ") and "every 1" not in name and "first" not in name
+        target = f"<= {TARGET} s" if plain else ""
+        table.add(*cells, target, heavy_modules(command, env))
+    table.print(
+        f"Whole processes, median of {repeat} interleaved runs after a warm-up. "
+        f"Machine: {machine}"
+    )
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,134 @@
+"""What the command line imports: the plain run path stays free of heavy libraries.
+
+Each check runs in a fresh interpreter (``sys.modules`` of the test process already
+holds everything) and reports the modules loaded when the command has finished.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from jointwear import load_config
+from jointwear.simulation import COMPILED_KERNEL_SOLVES, compiled_kernel
+
+SRC = Path(__file__).resolve().parents[2] / "src"
+#: libraries a summary of a run needs none of
+HEAVY = ("dask", "xarray", "pandas", "matplotlib", "distributed")
+ONE_REVOLUTION = ["--set", "simulation.revolutions=1", "--json", "-q"]
+
+
+def loaded_after(code: str, tmp_path: Path) -> set[str]:
+    """Top-level and dotted module names loaded after ``code`` ran in a fresh interpreter."""
+    report = tmp_path / "modules.json"
+    script = (
+        "import json, sys\n"
+        f"{code}\n"
+        f"open({str(report)!r}, 'w').write(json.dumps(sorted(sys.modules)))\n"
+    )
+    path = os.pathsep.join([str(SRC), os.environ.get("PYTHONPATH", "")])
+    env = {**os.environ, "PYTHONPATH": path}
+    env.pop("JOINTWEAR_NO_NUMBA", None)
+    done = subprocess.run(
+        [sys.executable, "-c", script], env=env, capture_output=True, text=True, timeout=300
+    )
+    assert done.returncode == 0, done.stderr
+    return set(json.loads(report.read_text()))
+
+
+def cli(args: list[str]) -> str:
+    return f"from jointwear.cli import main\nmain({args!r})"
+
+
+@pytest.mark.parametrize("model", ["nlcp", "winkler", "asymmetric-winkler", "hertz"])
+def test_plain_run_imports_no_dataset_plotting_or_compiler_library(
+    paper_config_path, tmp_path, model
+):
+    modules = loaded_after(
+        cli(["run", str(paper_config_path), "--set", f"contact.model={model}", *ONE_REVOLUTION]),
+        tmp_path,
+    )
+    assert not [m for m in modules if m.split(".")[0] in HEAVY]
+    # one revolution plans two contact solves: the NumPy kernel, numba never loaded
+    assert "numba" not in modules
+
+
+def test_writing_a_result_imports_neither_dask_arrays_nor_distributed(paper_config_path, tmp_path):
+    out = tmp_path / "out"
+    modules = loaded_after(
+        cli(["run", str(paper_config_path), *ONE_REVOLUTION, "--out", str(out), "--no-plots"]),
+        tmp_path,
+    )
+    assert (out / "result.nc").is_file()
+    assert "xarray" in modules
+    assert "dask.array" not in modules
+    assert "distributed" not in modules
+
+
+def test_a_sweep_case_builds_no_dataset(paper_config_path, tmp_path):
+    config = load_config(paper_config_path, {"simulation.revolutions": 3})
+    code = (
+        "from jointwear.sweep import run_case\n"
+        f"record = run_case({{'case': 'case-0000', 'config': {config.to_toml()!r}, "
+        "'checkpoint': None})\n"
+        "assert record['status'] == 'ok', record\n"
+    )
+    modules = loaded_after(code, tmp_path)
+    assert not [m for m in modules if m.split(".")[0] in HEAVY]
+
+
+def test_units_then_dask_arrays_with_units_still_work(tmp_path):
+    # pint is imported with dask hidden; its dask helpers must still reach dask
+    code = (
+        "import jointwear.units as units\n"
+        "assert 'dask' not in sys.modules\n"
+        "import dask.array as da\n"
+        "q = units.ureg.Quantity(da.arange(4.0, chunks=2), 'mm')\n"
+        "assert list(q.to('m').compute().magnitude) == [0.0, 0.001, 0.002, 0.003]\n"
+        "assert type(q.persist().magnitude).__name__ == 'Array'\n"
+        "import dask\n"
+        "assert dask.is_dask_collection(q)\n"
+    )
+    assert "dask.array" in loaded_after(code, tmp_path)
+
+
+def test_dask_arrays_in_xarray_after_writing_a_result(paper_config_path, tmp_path):
+    # the write hides dask from xarray; afterwards xarray must see dask arrays again
+    code = (
+        "from jointwear import Simulation, load_config\n"
+        "from jointwear.results import read_result, write_netcdf\n"
+        f"result = Simulation(load_config({str(paper_config_path)!r}, "
+        "{'simulation.revolutions': 1})).run()\n"
+        f"write_netcdf(result.dataset, {str(tmp_path / 'a.nc')!r})\n"
+        "assert 'dask.array' not in sys.modules\n"
+        "chunked = result.dataset.chunk({'theta': 30})\n"
+        "assert type(chunked['wear_depth'].data).__module__.startswith('dask.array')\n"
+        f"write_netcdf(chunked, {str(tmp_path / 'b.nc')!r})\n"
+        f"back = read_result({str(tmp_path / 'b.nc')!r})\n"
+        "assert (back['wear_depth'].values == result.dataset['wear_depth'].values).all()\n"
+    )
+    assert "dask.array" in loaded_after(code, tmp_path)
+
+
+@pytest.mark.parametrize(
+    ("overrides", "compiled"),
+    [
+        ({"simulation.revolutions": 1, "simulation.update_every": "adaptive"}, False),
+        ({"simulation.revolutions": COMPILED_KERNEL_SOLVES}, False),
+        ({"simulation.revolutions": COMPILED_KERNEL_SOLVES + 1}, None),
+        ({"simulation.revolutions": 15000, "simulation.update_every": "adaptive"}, None),
+        ({"simulation.revolutions": 15000, "simulation.update_every": 100}, False),
+        ({"simulation.revolutions": 15000, "simulation.update_every": 10}, None),
+        ({"simulation.revolutions": 15000, "simulation.update_contour": False}, False),
+    ],
+)
+def test_kernel_choice_follows_from_the_config_alone(paper_config_path, overrides, compiled):
+    settings = {"simulation.update_contour": True, "simulation.update_every": 1, **overrides}
+    assert compiled_kernel(load_config(paper_config_path, settings)) is compiled
+    # read again (as a resumed run reads its checkpointed config): the same choice
+    assert compiled_kernel(load_config(paper_config_path, settings)) is compiled
