@@ -586,6 +586,21 @@ class SimulationConfig(_Section):
     )
     dynamics_tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.02
 
+    @property
+    def contact_solves(self) -> int:
+        """Most contact solves (revolutions of the load balance) the run can need.
+
+        ``revolutions / update_every`` for a fixed interval, ``revolutions`` for adaptive
+        updating (every jump covers at least one revolution), one without contour update.
+        Read from the configuration alone, so that a choice made from it (which kernel,
+        which right-hand side) is the same in a run resumed from its checkpoint.
+        """
+        if not self.update_contour:
+            return 1
+        if self.update_every == "adaptive":
+            return self.revolutions
+        return math.ceil(self.revolutions / self.update_every)
+
 
 class WearConfig(_Section):
     """The wear law and its coefficients (``archard`` uses the bushing's wear coefficient)."""

@@ -899,23 +899,15 @@ def compiled_kernel(config: Config) -> bool | None:
     compiled one in ~0.2 ms. A run that may need at most :data:`COMPILED_KERNEL_SOLVES`
     solves is about as fast or faster on the NumPy path (``False``). The
     bound is read from the configuration alone, so a run resumed from its checkpoint
-    takes the same path and gives the same bits: ``revolutions / update_every`` for a
-    fixed interval, ``revolutions`` for adaptive updating (every jump covers at least
-    one revolution), one solve without contour update.
+    takes the same path and gives the same bits
+    (:attr:`jointwear.config.SimulationConfig.contact_solves`).
 
     Parameters
     ----------
     config : Config
         The run's configuration.
     """
-    sim = config.simulation
-    if not sim.update_contour:
-        solves = 1
-    elif sim.update_every == "adaptive":
-        solves = sim.revolutions
-    else:
-        solves = math.ceil(sim.revolutions / int(sim.update_every))
-    return None if solves > COMPILED_KERNEL_SOLVES else False
+    return None if config.simulation.contact_solves > COMPILED_KERNEL_SOLVES else False
 
 
 #: step-size control of adaptive updating: safety factor, largest growth and shrink

@@ -58,6 +58,13 @@ def test_plain_run_imports_no_dataset_plotting_or_compiler_library(
     assert "numba" not in modules
 
 
+def test_short_contact_impact_run_does_not_load_numba(paper_config_path, tmp_path):
+    # one settled revolution of contact-impact dynamics is faster in Python than numba's load
+    args = ["--set", "dynamics.model=contact-impact", *ONE_REVOLUTION]
+    modules = loaded_after(cli(["run", str(paper_config_path), *args]), tmp_path)
+    assert "numba" not in modules
+
+
 def test_writing_a_result_imports_neither_dask_arrays_nor_distributed(paper_config_path, tmp_path):
     out = tmp_path / "out"
     modules = loaded_after(

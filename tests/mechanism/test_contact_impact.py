@@ -357,3 +357,21 @@ def test_cli_reports_impact_fields(capsys: pytest.CaptureFixture[str], paper_con
     assert data["free_flight_fraction"] == 0.0
     assert 0 < data["max_penetration_m"] < 1e-4
     assert 0 <= data["load_difference_rms_n"] <= data["load_difference_max_n"] < 1.0
+
+
+@pytest.mark.parametrize(
+    ("overrides", "compiled"),
+    [
+        ({}, False),  # one integration of settle + 1 = 3 revolutions
+        ({"dynamics.revolutions_settle": 20}, None),
+        ({"simulation.revolutions": 100, "simulation.dynamics_update": 1}, None),
+        ({"simulation.revolutions": 100, "simulation.dynamics_update": "adaptive"}, None),
+        ({"simulation.revolutions": 100, "simulation.dynamics_update": 50}, False),
+        ({"simulation.update_contour": False, "simulation.dynamics_update": 1}, False),
+    ],
+)
+def test_compiled_dynamics_follows_from_the_config_alone(
+    paper_config: Config, overrides: dict, compiled: bool | None
+) -> None:
+    settings = {"simulation.update_contour": True, "dynamics.revolutions_settle": 2, **overrides}
+    assert ci.compiled_dynamics(impact_config(paper_config, **settings)) is compiled
