@@ -6,7 +6,7 @@ paper and 2-D equilibrium modes, on the unworn circle and on a worn contour. Eac
 is warmed up, then timed ``REPEATS`` times with ``time.perf_counter``; the median is
 reported (target: < 20 ms per batch on one core).
 
-Run: ``python benchmarks/bench_contact.py [--repeats N]``
+Run: ``python benchmarks/bench_contact.py [--repeats N] [--quick]``
 """
 
 from __future__ import annotations
@@ -72,8 +72,9 @@ def time_case(contour, pin, params, model, balance, load, azimuth, repeats):
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=25, help="timed repeats (>= 20)")
+    parser.add_argument("--quick", action="store_true", help="the fewest repeats (20)")
     args = parser.parse_args()
-    repeats = max(args.repeats, 20)
+    repeats = 20 if args.quick else max(args.repeats, 20)
 
     cfg = load_config(CONFIG)
     params = ContactParameters.from_config(cfg)
