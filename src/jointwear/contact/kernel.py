@@ -170,6 +170,10 @@ class _Lines:
         self.pad = self.quarter + 1
         offsets = np.arange(-self.quarter, self.quarter + 1)
         self.cos_o, self.sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
+        #: ``cos((n - 1/2) dtheta)`` for ``n = 1 .. quarter`` after a 1: the reach's table
+        self.half_cos = np.concatenate(
+            [[1.0], np.cos((np.arange(1, self.quarter + 1) - 0.5) * dtheta)]
+        )
         #: node of each position of an array padded by ``pad`` nodes each side
         self.padded = np.arange(-self.pad, nodes + 1 + self.pad) % nodes
         # constants of the kernel's arguments, never written (not flagged read-only:
@@ -339,7 +343,7 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
     if max_penetration is not None:
         np.minimum(upper, centre_gap + max_penetration, out=upper)
     np.maximum(upper, lower, out=upper)
-    nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o)
+    nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o, lines.half_cos)
     grid = (
         lines.pad, lines.quarter, contour.dtheta, float(rp), float(law.exponent),
         float(law.coefficient),
