@@ -219,13 +219,18 @@ def wear_width(wear_depth: ArrayLike, threshold: float = 0.01) -> float:
     if not peak > 0:
         return 0.0
     above = depth - threshold * peak
-    after = np.roll(above, -1)
-    both = (above > 0) & (after > 0)
-    crossing = (above > 0) != (after > 0)
-    positive = np.where(above > 0, above, after)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        fraction = np.where(crossing, positive / np.abs(above - after), 0.0)
-    width = (np.count_nonzero(both) + fraction.sum()) * 2 * np.pi / depth.size
+    inside = above > 0
+    # whether the next node (periodically) is inside
+    following = np.empty_like(inside)
+    following[:-1] = inside[1:]
+    following[-1] = inside[0]
+    both = np.count_nonzero(inside & following)
+    # the few intervals that cross the threshold: one end in, one out, so |a - b| > 0
+    crossing = np.flatnonzero(inside != following)
+    here = above[crossing]
+    there = above.take(crossing + 1, mode="wrap")
+    fraction = np.where(here > 0, here, there) / np.abs(here - there)
+    width = (both + fraction.sum()) * 2 * np.pi / depth.size
     return float(min(width, 2 * np.pi))  # all worn: exactly 2 pi, not one ulp more
 
 
