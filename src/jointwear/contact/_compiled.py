@@ -329,7 +329,7 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
 
 @njit(**_FLAGS)
 def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
-               floats, counts, wear_ext):  # fmt: skip
+               floats, counts, wear_ext, scale, wear):  # fmt: skip
     """Balance every load of a revolution and add its wear ``p ds / k`` per node.
 
     Loads are solved in order. With ``have_guess`` each starts from ``guess`` [m];
@@ -338,7 +338,11 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     the azimuth, smoothly from load to load), the first one from the conformal estimate
     ``conformal`` [m] (three evaluations a load, against two warm). Out: ``floats`` rows
     offset [m], force [N], tangential force [N], left and right half-angle [rad], peak
-    pressure [Pa]; ``counts`` rows iterations, springs left and right, status.
+    pressure [Pa]; ``counts`` rows iterations, springs left and right, status. The wear of
+    the padded window positions (``wear_ext``) is folded onto the nodes and scaled by
+    ``scale`` into ``wear`` [m].
+
+    Returns the number of loads not balanced and the widest contact half-angle [rad].
     """
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
@@ -397,6 +401,18 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
             work[_DEPTH][:size], width, dtheta, shifts[k], left, right
         )
+    failed = 0
+    widest = 0.0
+    for k in range(load.size):
+        failed += counts[3, k] != CONVERGED
+        widest = max(widest, floats[3, k], floats[4, k])
+    # padded position i is node (i - pad) mod N: summed in the order of i
+    nodes_count = wear.size
+    for i in range(wear_ext.size):
+        wear[(i - pad) % nodes_count] += wear_ext[i]
+    for j in range(nodes_count):
+        wear[j] *= scale
+    return failed, widest
 
 
 @njit(inline="always", **_FLAGS)

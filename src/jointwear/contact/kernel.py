@@ -180,6 +180,16 @@ class _Lines:
         # numba would compile the kernel again for read-only arrays)
         self.zeros, self.ones = np.zeros(azimuth.size), np.ones(azimuth.size)
         self.zeros_padded = np.zeros(self.padded.size)
+        self._filled: dict[float, FloatArray] = {}
+
+    def filled(self, value: float) -> FloatArray:
+        """A padded array of ``value`` (kept: the kernel never writes it)."""
+        array = self._filled.get(value)
+        if array is None:
+            if len(self._filled) >= 4:
+                self._filled.clear()
+            array = self._filled[value] = np.full(self.padded.size, value)
+        return array
 
 
 def _lines(nodes: int, azimuth: FloatArray) -> _Lines:
@@ -257,9 +267,11 @@ def revolution_wear(
         )  # fmt: skip
     load, azimuth = checked_loads(load, azimuth)
     m = load.size
-    sliding = np.broadcast_to(np.asarray(sliding_distance, dtype=float).ravel(), (m,))
+    sliding = np.asarray(sliding_distance, dtype=float).ravel()
+    if sliding.size != m:
+        sliding = np.broadcast_to(sliding, (m,))
     contour.check_pin(pin)
-    nodes, grid, lines, centre_gap, padded = _arguments(
+    nodes, grid, lines, centre_gap, known = _arguments(
         contour, pin, load, azimuth, law, max_penetration
     )
     if initial_offset is None:
@@ -267,22 +279,21 @@ def revolution_wear(
         clearance = np.maximum(centre_gap, 1e-12 * pin.radius)
         conformal = clearance + _conformal_depth(contour, pin.radius, law, load, clearance)
     else:
-        guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), np.zeros(m)
+        guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), known.zeros
         if guess.size != m:
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
     floats = np.zeros((6, m))
     counts = np.zeros((4, m), dtype=np.int64)
-    wear_ext = np.zeros(padded.size)
+    wear_ext = np.zeros(known.padded.size)
+    wear = np.zeros(contour.nodes)
     solver = (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), _curvature(law))
-    module.revolution(
+    failed, widest = module.revolution(
         load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
-        floats, counts, wear_ext,
+        floats, counts, wear_ext, wear_coefficient * law.coefficient, wear,
     )  # fmt: skip
     offset, total, tangential, left, right, peak = floats
-    _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
-    wear = np.bincount(padded, weights=wear_ext, minlength=contour.nodes)
-    wear *= wear_coefficient * law.coefficient
-    widest = max(float(left.max(initial=0.0)), float(right.max(initial=0.0)))
+    if failed:
+        _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
 
     def dense() -> FloatArray:
         pressure = np.zeros((m, contour.nodes))
@@ -292,7 +303,7 @@ def revolution_wear(
     return RevolutionWear(
         wear=wear,
         offset=offset,
-        window=int(np.ceil(widest / contour.dtheta) + 3),
+        window=math.ceil(widest / contour.dtheta) + 3,
         iterations=counts[0],
         half_angle_left=left,
         half_angle_right=right,
@@ -309,8 +320,8 @@ def revolution_wear(
 def _arguments(contour, pin, load, azimuth, law, max_penetration):
     """The compiled kernel's tuples (see :mod:`jointwear.contact._compiled`).
 
-    Returns ``nodes``, ``grid``, ``lines``, the gap on each load line [m] and the node
-    of every position of the padded arrays.
+    Returns ``nodes``, ``grid``, ``lines``, the gap on each load line [m] and the
+    :class:`_Lines` of the azimuths.
     """
     lines = _lines(contour.nodes, azimuth)
     radius = contour.radius
@@ -332,16 +343,17 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
             check_reach(np.full(m, smallest), load, azimuth, rp)
         gap_min = np.full(m, smallest)
     if law.force_area is not None:
-        area_ext, load_area = np.full(lines.padded.size, float(law.force_area)), lines.ones
+        area_ext, load_area = lines.filled(float(law.force_area)), lines.ones
     elif law.symmetric:
-        area_ext, load_area = np.full(lines.padded.size, spring), centre_radius
+        area_ext, load_area = lines.filled(spring), centre_radius
     else:
         area_ext, load_area = padded_radius * spring, lines.ones
     # the bracket: no node touches at the smallest gap; the pin's reach or the wall
     lower = gap_min
-    upper = np.full(m, 0.999 * rp)
     if max_penetration is not None:
-        np.minimum(upper, centre_gap + max_penetration, out=upper)
+        upper = np.minimum(centre_gap + max_penetration, 0.999 * rp)
+    else:
+        upper = np.full(m, 0.999 * rp)
     np.maximum(upper, lower, out=upper)
     nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o, lines.half_cos)
     grid = (
@@ -352,7 +364,7 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
         lines.centre, lines.cos_shift, lines.sin_shift, load_gap, load_area, gap_min, lower,
         upper, lines.shift,
     )  # fmt: skip
-    return nodes, grid, per_load, centre_gap, lines.padded
+    return nodes, grid, per_load, centre_gap, lines
 
 
 def _numpy_revolution(
