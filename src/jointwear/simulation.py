@@ -598,8 +598,12 @@ class Simulation:
             # the contour must stay inside the wall (a run without a wall limit cannot
             # get here with wear beyond it: the wall is always a limit); a fixed step's
             # contour is the one of ``base``
-            start = step.contour if not adaptive else self._contour(base.wear_depth)
-            depth = update_contour(start, depth - base.wear_depth).wear_depth
+            if adaptive:
+                depth = update_contour(
+                    self._contour(base.wear_depth), depth - base.wear_depth
+                ).wear_depth
+            else:
+                depth = _grown(step.contour, depth - base.wear_depth)
         profiles = base.profiles
         if adaptive:
             # saved profiles inside the jump: the corrector's quadratic in the revolution
@@ -933,6 +937,19 @@ def _along_load(solution: ContactSolution, azimuth: FloatArray) -> FloatArray:
     )
 
 
+def _grown(contour: BushingContour, increment: FloatArray) -> FloatArray:
+    """The wear depth of ``update_contour(contour, increment)`` [m], without building the
+    contour unless it would be refused (it then raises as the update does)."""
+    depth = contour.wear_depth + increment
+    radius = contour.radius + increment
+    if not (np.isfinite(radius).all() and radius.min() > 0.0):
+        return update_contour(contour, increment).wear_depth
+    return depth
+
+
 def _window_nodes(solution: ContactSolution, contour: BushingContour) -> int:
+    revolution = getattr(solution, "revolution", None)
+    if revolution is not None:
+        return revolution.window
     widest = max(float(solution.half_angle_left.max()), float(solution.half_angle_right.max()))
     return int(np.ceil(widest / contour.dtheta) + 3)

@@ -267,7 +267,9 @@ def worn_area(original_radius: float | ArrayLike, wear_depth: ArrayLike) -> floa
         Radial wear depth [m].
     """
     depth = np.asarray(wear_depth, dtype=float)
-    original = np.broadcast_to(np.asarray(original_radius, dtype=float), depth.shape)
+    original = np.asarray(original_radius, dtype=float)
+    if original.ndim:  # (a scalar radius broadcasts by itself)
+        original = np.broadcast_to(original, depth.shape)
     return float(0.5 * np.sum(depth * (2 * original + depth)) * 2 * np.pi / depth.size)
 
 
