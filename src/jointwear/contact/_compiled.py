@@ -36,7 +36,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, uint64
 
 #: results per load (``status``)
 CONVERGED, NOT_CONVERGED = 0, 1
@@ -56,19 +56,11 @@ _LINEAR, _HERTZIAN = 1, 2
 _DEPTH, _ALONG, _CURVE, _WEIGHT, _SIDE, _PRESS = range(6)
 
 
-@njit(inline="always", **_FLAGS)
-def _work(quarter):
-    """The window scratch: one array per row (rows of one 2-D array are not vectorised)."""
+def scratch(quarter: int) -> tuple[np.ndarray, ...]:
+    """The window scratch of :func:`revolution`: one array per row of ``work`` (rows of one
+    2-D array are not vectorised), ``2 quarter + 1`` long."""
     size = 2 * quarter + 1
-    return (np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size), np.zeros(size),
-            np.zeros(size))  # fmt: skip
-
-
-@njit(inline="always", **_FLAGS)
-def _rows(work, size):
-    """The first ``size`` columns of every row of ``work``."""
-    return (work[0][:size], work[1][:size], work[2][:size], work[3][:size], work[4][:size],
-            work[5][:size])  # fmt: skip
+    return tuple(np.zeros(size) for _ in range(6))
 
 
 @njit(inline="always", **_FLAGS)
@@ -151,28 +143,28 @@ def _springs(s, nodes, grid, line, width, work, law, terms):
     curvature would cost a division per node (``p'' ~ delta^-1/2``), more than the third
     evaluation it saves a cold start: NaN (the step uses ``kappa``).
     """
-    gap_ext, area_ext, cos_o, sin_o = nodes[0], nodes[1], nodes[2], nodes[3]
+    gap, area, co, so = nodes[0], nodes[1], nodes[2], nodes[3]
     quarter, rp, coefficient = grid[1], grid[3], grid[5]
     base, cs, ss, load_gap, load_area = line
-    start, first, size = base - width, quarter - width, 2 * width + 1
-    gap, area = gap_ext[start : start + size], area_ext[start : start + size]
-    co, so = cos_o[first : first + size], sin_o[first : first + size]
-    depth, slopes, bends, weights, sides, press = _rows(work, size)
+    # unsigned offsets: numba wraps a possibly negative index (a gather), and a slice per
+    # array would cost its reference counting per evaluation
+    start, first = uint64(base - width), uint64(quarter - width)
+    depth, slopes, bends, weights, sides, press = work
     factor = coefficient * load_area
     total = 0.0
     slope = 0.0
     second = 0.0
     s2 = s * s
     inv_rp = 1.0 / rp
-    for j in range(size):
-        c = co[j] * cs - so[j] * ss
-        sn = so[j] * cs + co[j] * ss
+    for j in range(uint64(2 * width + 1)):
+        c = co[first + j] * cs - so[first + j] * ss
+        sn = so[first + j] * cs + co[first + j] * ss
         sin2 = sn * sn
-        spring = factor * area[j]
+        spring = factor * area[start + j]
         weight = spring * c
         x = s2 * sin2
         curv, inv_root = _pin_curvature(x, rp, inv_rp, terms)
-        d = s * c - (gap[j] + load_gap) - curv
+        d = s * c - (gap[start + j] + load_gap) - curv
         along = c - s * sin2 * inv_root  # d depth / ds
         bend = -sin2 * inv_root * (1.0 + x * inv_root * inv_root)  # d2 depth / ds2
         p, stiffness = _spring(d, law)
@@ -197,13 +189,12 @@ def _springs_moved(step, width, work, law):
     pin curvature: ``delta_j += step delta_j' + step^2 delta_j'' / 2`` and ``delta_j' +=
     step delta_j''``, with ``delta_j''`` of the last full evaluation (the neglected terms
     are below ``eps s / 16`` within ``_REUSE R_p`` of it, see :func:`_balance`)."""
-    size = 2 * width + 1
-    depth, slopes, bends, weights, _, press = _rows(work, size)
+    depth, slopes, bends, weights, _, press = work
     total = 0.0
     slope = 0.0
     second = 0.0
     half = 0.5 * step
-    for j in range(size):
+    for j in range(uint64(2 * width + 1)):
         weight, along, bend = weights[j], slopes[j], bends[j]
         d = depth[j] + step * (along + half * bend)
         along += step * bend
@@ -327,9 +318,9 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     return s, total, slope, width, max_iterations, False
 
 
-@njit(**_FLAGS)
+@njit(_nrt=False, **_FLAGS)
 def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
-               floats, counts, wear_ext, scale, wear):  # fmt: skip
+               floats, counts, wear_ext, scale, wear, work, press_bits):  # fmt: skip
     """Balance every load of a revolution and add its wear ``p ds / k`` per node.
 
     Loads are solved in order. With ``have_guess`` each starts from ``guess`` [m];
@@ -337,21 +328,22 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     step) plus the predecessor's own miss (on a worn contour the force curve moves with
     the azimuth, smoothly from load to load), the first one from the conformal estimate
     ``conformal`` [m] (three evaluations a load, against two warm). Out: ``floats`` rows
-    offset [m], force [N], tangential force [N], left and right half-angle [rad], peak
-    pressure [Pa]; ``counts`` rows iterations, springs left and right, status. The wear of
-    the padded window positions (``wear_ext``) is folded onto the nodes and scaled by
-    ``scale`` into ``wear`` [m].
+    offset [m], force [N], tangential force [N], left and right half-angle [rad];
+    ``counts`` rows iterations, springs left and right, status and the bits of the peak
+    ``p / k`` (a float64 read as int64). The wear of the padded window positions
+    (``wear_ext``) is folded onto the nodes and scaled by ``scale`` into ``wear`` [m].
+
+    Compiled without reference counting (``_nrt=False``: an array passed between the
+    inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
+    ``work`` (:func:`scratch`) and ``press_bits``, its pressure row read as int64 (``p
+    >= 0``: the bits order as the integers; an integer max reduction vectorises, a
+    floating-point one does not, 4x slower), come from the caller.
 
     Returns the number of loads not balanced and the widest contact half-angle [rad].
     """
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
-    pad, quarter, dtheta, coefficient = grid[0], grid[1], grid[2], grid[5]
-    work = _work(quarter)
-    # p >= 0: the bits of a float64 order as the int64 they read as, and an integer max
-    # reduction vectorises where a floating-point one does not (4x slower)
-    press_bits = work[_PRESS].view(np.int64)
-    peak = np.zeros(1, dtype=np.int64)
+    pad, quarter, dtheta = grid[0], grid[1], grid[2]
     previous_s = np.nan
     previous_total = 0.0
     previous_slope = 0.0
@@ -391,52 +383,58 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         previous_s, previous_total, previous_slope = s, total, slope
         drift = s - predicted if predicted == predicted else 0.0
         # the balanced state is the last evaluation: its wear, resultants and extent
-        start = base - width
-        size = 2 * width + 1
         floats[2, k], top, right, left = _settle(
-            sliding[k], work, press_bits, wear_ext[start : start + size], width
+            sliding[k], work, press_bits, wear_ext, base - width, width
         )
-        peak[0] = top
-        floats[5, k] = coefficient * peak.view(np.float64)[0]
+        counts[4, k] = top
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
-            work[_DEPTH][:size], width, dtheta, shifts[k], left, right
+            work[_DEPTH], width, dtheta, shifts[k], left, right
         )
     failed = 0
     widest = 0.0
     for k in range(load.size):
         failed += counts[3, k] != CONVERGED
         widest = max(widest, floats[3, k], floats[4, k])
-    # padded position i is node (i - pad) mod N: summed in the order of i
+    # padded position i is node (i - pad) mod N: summed in the order of i (as a bincount),
+    # the left padding, the nodes, the right padding (no modulo: an integer division each)
     nodes_count = wear.size
-    for i in range(wear_ext.size):
-        wear[(i - pad) % nodes_count] += wear_ext[i]
+    left = wear[nodes_count - pad :]
+    for i in range(pad):
+        left[i] += wear_ext[i]
+    middle = wear_ext[pad : pad + nodes_count]
+    for j in range(nodes_count):
+        wear[j] += middle[j]
+    right = wear_ext[pad + nodes_count :]
+    for i in range(right.size):
+        wear[i] += right[i]
     for j in range(nodes_count):
         wear[j] *= scale
     return failed, widest
 
 
 @njit(inline="always", **_FLAGS)
-def _settle(ds, work, press_bits, wear, width):
+def _settle(ds, work, press_bits, wear, start, width):
     """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, bits of the
     peak ``p / k``, springs right and left).
 
-    Every node of the window is added (``p`` is 0 out of contact): no branch. The
-    springs in contact are counted right and left of the centre column.
+    Every node of the window (offsets from ``start``) is added (``p`` is 0 out of
+    contact): no branch. The springs in contact are counted right and left of the centre
+    column.
     """
-    depth, _, _, _, sides, press = _rows(work, wear.size)
-    bits = press_bits[: wear.size]
+    depth, _, _, _, sides, press = work
+    offset = uint64(start)
     sideways = 0.0
     top = 0
-    for j in range(wear.size):
+    for j in range(uint64(2 * width + 1)):
         p = press[j]
-        wear[j] += ds * p
+        wear[offset + j] += ds * p
         sideways += sides[j] * p
-        top = max(top, bits[j])
+        top = max(top, press_bits[j])
     right = 0
-    for j in range(width):
+    for j in range(uint64(width)):
         right += 1 if depth[j] > 0.0 else 0
     left = 0
-    for j in range(width + 1, wear.size):
+    for j in range(uint64(width + 1), uint64(2 * width + 1)):
         left += 1 if depth[j] > 0.0 else 0
     return sideways, top, right, left
 
@@ -447,12 +445,13 @@ def _extent(depth, width, dtheta, shift, n_left, n_right):
 
     ``n_left``, ``n_right``: springs in contact off the centre column (the centre
     column's side is the sign of ``shift``).
-    ``depth`` is the window (offsets ``-width .. width``). The outermost node in contact
-    each side is found by scanning in from the window's edges (a few nodes: the window
-    is the pin's reach); the edge lies between it and the next node out, interpolated
-    linearly in depth.
+    ``depth`` holds the window (offsets ``-width .. width``) first. The outermost node in
+    contact each side is found by scanning in from the window's edges (a few nodes: the
+    window is the pin's reach); the edge lies between it and the next node out,
+    interpolated linearly in depth.
     """
-    last = depth.size - 1
+    size = 2 * width + 1
+    last = size - 1
     while last >= 0 and not depth[last] > 0.0:
         last -= 1
     if last < 0:
@@ -463,7 +462,7 @@ def _extent(depth, width, dtheta, shift, n_left, n_right):
     if depth[width] > 0.0:
         n_left += shift > 0.0
         n_right += shift < 0.0
-    left = _edge(last, min(last + 1, depth.size - 1), depth, width, dtheta, shift)
+    left = _edge(last, min(last + 1, size - 1), depth, width, dtheta, shift)
     right = -_edge(first, max(first - 1, 0), depth, width, dtheta, shift)
     return max(left, 0.0), max(right, 0.0), n_left, n_right
 
@@ -481,7 +480,7 @@ def _edge(inside, outside, depth, width, dtheta, shift):
 
 
 @njit(**_FLAGS)
-def dense_pressure(offset, load, nodes, grid, lines, out):
+def dense_pressure(offset, load, nodes, grid, lines, out, work):
     """Pressure of every load at its balanced offset on all nodes [Pa] (rows of ``out``).
 
     One full evaluation at the balanced offset: the balance's last one, or within
@@ -490,7 +489,6 @@ def dense_pressure(offset, load, nodes, grid, lines, out):
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min = lines[:6]
     quarter, rp, exponent, coefficient = grid[1], grid[3], grid[4], grid[5]
     nodes_count = out.shape[1]
-    work = _work(quarter)
     for k in range(offset.size):
         if load[k] <= 0.0:
             continue

@@ -283,21 +283,24 @@ def revolution_wear(
         if guess.size != m:
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
     floats = np.zeros((6, m))
-    counts = np.zeros((4, m), dtype=np.int64)
+    counts = np.zeros((5, m), dtype=np.int64)
+    work = module.scratch(known.quarter)
     wear_ext = np.zeros(known.padded.size)
     wear = np.zeros(contour.nodes)
     solver = (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), _curvature(law))
     failed, widest = module.revolution(
         load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
-        floats, counts, wear_ext, wear_coefficient * law.coefficient, wear,
+        floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
+        work[5].view(np.int64),
     )  # fmt: skip
     offset, total, tangential, left, right, peak = floats
+    np.multiply(counts[4].view(np.float64), law.coefficient, out=peak)
     if failed:
         _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
 
     def dense() -> FloatArray:
         pressure = np.zeros((m, contour.nodes))
-        module.dense_pressure(offset, load, nodes, grid, lines, pressure)
+        module.dense_pressure(offset, load, nodes, grid, lines, pressure, work)
         return pressure
 
     return RevolutionWear(
