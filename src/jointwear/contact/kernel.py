@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import os
+import threading
 from dataclasses import dataclass
 from typing import Any
 
@@ -166,6 +167,7 @@ class _Lines:
         self.shift = self.centre * dtheta - wrapped
         self.cos_shift, self.sin_shift = np.cos(self.shift), np.sin(self.shift)
         self.stencil = RadiusStencil.at(nodes, wrapped)
+        self._lower_weight = 1 - self.stencil.weight
         self.quarter = nodes // 4
         self.pad = self.quarter + 1
         offsets = np.arange(-self.quarter, self.quarter + 1)
@@ -181,6 +183,22 @@ class _Lines:
         self.zeros, self.ones = np.zeros(azimuth.size), np.ones(azimuth.size)
         self.zeros_padded = np.zeros(self.padded.size)
         self._filled: dict[float, FloatArray] = {}
+        self._scratch = threading.local()
+
+    def centre_radius(self, radius: FloatArray) -> FloatArray:
+        """The radius on each load line [m]: ``self.stencil(radius)``, its weights kept."""
+        stencil = self.stencil
+        return self._lower_weight * radius.take(stencil.lower) + stencil.weight * radius.take(
+            stencil.upper
+        )
+
+    def scratch(self, module: Any) -> tuple[FloatArray, ...]:
+        """The compiled kernel's window scratch, one per thread (it writes it)."""
+        local = self._scratch
+        work = getattr(local, "work", None)
+        if work is None:
+            work = local.work = module.scratch(self.quarter)
+        return work
 
     def filled(self, value: float) -> FloatArray:
         """A padded array of ``value`` (kept: the kernel never writes it)."""
@@ -284,7 +302,7 @@ def revolution_wear(
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
     floats = np.zeros((6, m))
     counts = np.zeros((5, m), dtype=np.int64)
-    work = module.scratch(known.quarter)
+    work = known.scratch(module)
     wear_ext = np.zeros(known.padded.size)
     wear = np.zeros(contour.nodes)
     solver = (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), _curvature(law))
@@ -300,7 +318,10 @@ def revolution_wear(
 
     def dense() -> FloatArray:
         pressure = np.zeros((m, contour.nodes))
-        module.dense_pressure(offset, load, nodes, grid, lines, pressure, work)
+        # its own scratch: it may be read long after, from any thread
+        module.dense_pressure(
+            offset, load, nodes, grid, lines, pressure, module.scratch(known.quarter)
+        )
         return pressure
 
     return RevolutionWear(
@@ -330,7 +351,7 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
     radius = contour.radius
     rp = pin.radius
     m = load.size
-    centre_radius = lines.stencil(radius)
+    centre_radius = lines.centre_radius(radius)
     centre_gap = centre_radius - rp
     spring = contour.dtheta * contour.axial_length
     # r - R_p is exact (Sterbenz); the symmetric law's springs lie on the circle through
