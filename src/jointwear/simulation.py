@@ -500,11 +500,12 @@ class Simulation:
         the wear with error control, see :meth:`_adaptive_step`. A ``[life]`` limit
         reached inside the interval ends it at the first revolution that reaches it.
         """
-        threshold = state.dynamics_threshold or self.schedule.first_threshold(
-            self.config.joint.clearance
-        )
-        if self.schedule.due(state.updates_since_dynamics, state.wear_growth, threshold):
-            state = self._resolve_dynamics(state)
+        if self.schedule.coupled:  # (the growth is a reduction over the profile)
+            threshold = state.dynamics_threshold or self.schedule.first_threshold(
+                self.config.joint.clearance
+            )
+            if self.schedule.due(state.updates_since_dynamics, state.wear_growth, threshold):
+                state = self._resolve_dynamics(state)
         remaining = self.config.simulation.revolutions - state.revolution
         if self.config.simulation.update_every == "adaptive":
             wear_step = self._adaptive_step(state, remaining)

@@ -220,16 +220,16 @@ def wear_width(wear_depth: ArrayLike, threshold: float = 0.01) -> float:
         return 0.0
     above = depth - threshold * peak
     inside = above > 0
-    # whether the next node (periodically) is inside
-    following = np.empty_like(inside)
-    following[:-1] = inside[1:]
-    following[-1] = inside[0]
-    both = np.count_nonzero(inside & following)
-    # the few intervals that cross the threshold: one end in, one out, so |a - b| > 0
-    crossing = np.flatnonzero(inside != following)
+    # the few intervals that cross the threshold (one end in, one out, so |a - b| > 0),
+    # the last one periodic
+    crossing = np.flatnonzero(inside[:-1] != inside[1:])
+    if inside[-1] != inside[0]:
+        crossing = np.append(crossing, depth.size - 1)
+    # crossings alternate in and out: half of them leave an interval that started inside
+    both = np.count_nonzero(inside) - crossing.size // 2
     here = above[crossing]
     there = above.take(crossing + 1, mode="wrap")
-    fraction = np.where(here > 0, here, there) / np.abs(here - there)
+    fraction = np.maximum(here, there) / np.abs(here - there)
     width = (both + fraction.sum()) * 2 * np.pi / depth.size
     return float(min(width, 2 * np.pi))  # all worn: exactly 2 pi, not one ulp more
 
