@@ -49,8 +49,9 @@ _EPS = 2.220446049250313e-16
 #: their second-order Taylor polynomial to within ``eps s / 16`` (see :func:`_balance`)
 _REUSE = (_EPS / 64.0) ** (1.0 / 3.0)
 _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
-#: spring laws of :func:`_springs`: ``p = k delta`` and ``p = k delta^1.5``
-_LINEAR, _HERTZIAN = 1, 2
+#: spring laws of :func:`_springs`: ``p = k delta``, ``p = k delta^1.5`` and the latter
+#: with its curvature
+_LINEAR, _HERTZIAN, _CURVED = 1, 2, 3
 #: rows of ``work``: per node of the window, depth [m], its first and second derivative
 #: in the offset, ``k A_j cos(phi_j)``, ``k A_j sin(phi_j)`` and ``p / k``
 _DEPTH, _ALONG, _CURVE, _WEIGHT, _SIDE, _PRESS = range(6)
@@ -64,11 +65,12 @@ def scratch(quarter: int) -> tuple[np.ndarray, ...]:
 
 
 @njit(inline="always", **_FLAGS)
-def _evaluate(s, rp, exponent, nodes, grid, line, width, work):
+def _evaluate(s, rp, exponent, nodes, grid, line, width, work, curved):
     """Springs of one load at offset ``s`` [m]: (force [N], slope [N/m], curvature [N/m^2]).
 
     The window geometry and the springs in one pass (:func:`_springs`); the curvature
-    only for linear springs (NaN otherwise). Each combination of exponent (1 or 1.5) and
+    for linear springs, and for ``delta^1.5`` where ``curved`` (NaN otherwise). Each
+    combination of exponent (1 or 1.5) and
     curvature form is a loop of its own whose constants LLVM folds: a branch (or an
     untaken ``pow``) inside the loop keeps it from being vectorised (up to 10x slower).
     """
@@ -80,6 +82,12 @@ def _evaluate(s, rp, exponent, nodes, grid, line, width, work):
         if terms == 8:
             return _springs(s, nodes, grid, line, width, work, _LINEAR, 8)
         return _springs(s, nodes, grid, line, width, work, _LINEAR, 0)
+    if curved:
+        if terms == 4:
+            return _springs(s, nodes, grid, line, width, work, _CURVED, 4)
+        if terms == 8:
+            return _springs(s, nodes, grid, line, width, work, _CURVED, 8)
+        return _springs(s, nodes, grid, line, width, work, _CURVED, 0)
     if terms == 4:
         return _springs(s, nodes, grid, line, width, work, _HERTZIAN, 4)
     if terms == 8:
@@ -133,15 +141,16 @@ def _spring(depth, law):
 def _springs(s, nodes, grid, line, width, work, law, terms):
     """``sum_j p_j A_j cos(phi_j)``, its slope in ``s`` and (linear springs) its curvature.
 
-    ``law`` is ``_LINEAR`` (``p = k delta``) or ``_HERTZIAN`` (``p = k delta^1.5``). The
+    ``law`` is ``_LINEAR`` (``p = k delta``), ``_HERTZIAN`` (``p = k delta^1.5``) or
+    ``_CURVED`` (the same with its curvature, for a cold start). The
     window's geometry comes with it: ``cos(phi_j)`` and ``sin(phi_j)`` by angle addition
     from the tables, the gap and the spring area of each node; every row of ``work`` is
     written (what a later :func:`_springs_moved` and the wear read).
     Linear springs: between two nodes coming into contact the force is linear in ``s``
     but for the pin's curvature, ``f'' = sum_j k A_j cos(phi_j) delta_j''`` over the nodes
     in contact, a few flops more; with it the step is Chebyshev's. For ``delta^1.5`` the
-    curvature would cost a division per node (``p'' ~ delta^-1/2``), more than the third
-    evaluation it saves a cold start: NaN (the step uses ``kappa``).
+    curvature costs a division per node (``p'' = 3 / (4 sqrt(delta))``): taken where a
+    start is cold (it saves the third evaluation), else NaN (the step uses ``kappa``).
     """
     gap, area, co, so = nodes[0], nodes[1], nodes[2], nodes[3]
     quarter, rp, coefficient = grid[1], grid[3], grid[5]
@@ -172,6 +181,9 @@ def _springs(s, nodes, grid, line, width, work, law, terms):
         slope += weight * stiffness * along
         if law == _LINEAR:  # where in contact
             second += weight * stiffness * bend
+        if law == _CURVED:  # p'' = 1.125 / p' in contact
+            bent = 1.125 / stiffness if stiffness > 0.0 else 0.0
+            second += weight * (bent * along * along + stiffness * bend)
         depth[j] = d
         slopes[j] = along
         bends[j] = bend
@@ -251,7 +263,7 @@ def _moves(law, step, width, work):
 
 
 @njit(inline="always", **_FLAGS)
-def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hint):
+def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hint, cold):
     """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
 
     Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
@@ -290,7 +302,9 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
             hint = width - 1
             limit = np.inf if width >= quarter else gap_min / half_cos[width - 1]
             travel = 0.0
-            total, slope, second = _evaluate(s, rp, exponent, nodes, grid, line, width, work)
+            total, slope, second = _evaluate(
+                s, rp, exponent, nodes, grid, line, width, work, cold
+            )
         previous = s
         f = total - load
         error = abs(f)
@@ -374,7 +388,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
             s = conformal[k]
         s, total, slope, width, its, ok = _balance(
             load[k], s, lower[k], upper[k], gap_min[k], nodes, grid, line, solver,
-            work, width - 1,
+            work, width - 1, not have_guess,
         )  # fmt: skip
         floats[0, k] = s
         floats[1, k] = total
@@ -495,7 +509,7 @@ def dense_pressure(offset, load, nodes, grid, lines, out, work):
         base = centre[k] + grid[0]
         line = (base, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
         width = _reach(offset[k], gap_min[k], nodes[4], quarter, 1)
-        _evaluate(offset[k], rp, exponent, nodes, grid, line, width, work)
+        _evaluate(offset[k], rp, exponent, nodes, grid, line, width, work, False)
         for o in range(-width, width + 1):
             if work[_DEPTH][o + width] > 0.0:
                 out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS][o + width]
