@@ -10,9 +10,10 @@ is the arithmetic: one loop per load over the nodes the pin can reach, no tempor
 and the wear of a load added to the nodes as soon as it is balanced.
 
 The window of load ``k`` is read from arrays padded by a quarter circle each side
-(``ext[c + o + pad]`` is node ``(c + o) mod N``), so no loop has a modulo; loops run
-over ``range(size)`` of window views, because an index that could be negative is
-wrapped around by numba, which turns the loads into gathers (3x slower). ``fastmath``
+(``ext[c + o + pad]`` is node ``(c + o) mod N``), so no loop has a modulo; loops index
+them by unsigned offsets (``uint64``), because an index that could be negative is
+wrapped around by numba, which turns the loads into gathers (3x slower), and a window
+view per evaluation would cost its reference counting. ``fastmath``
 only reassociates the sums and contracts to FMA: no approximate division or square
 root. Arguments travel in tuples:
 
@@ -25,10 +26,14 @@ root. Arguments travel in tuples:
   it, a gap and area factor per load (the symmetric law's circle), the smallest gap
   the pin can meet, the bracket of the offset [m] and the angle [rad];
 * ``line``: one load's ``(base, cos_shift, sin_shift, load_gap, load_area)``;
-* ``work``: the window scratch of one load, rows ``_DEPTH`` .. ``_PRESS`` by offset.
+* ``work``: the window scratch of one load, one array per row ``_DEPTH`` .. ``_PRESS``
+  (:func:`scratch`), by offset from the window's start.
 
 Every helper is inlined into :func:`revolution` (``inline="always"``): a call that
-passes arrays costs reference counting of each, which made a revolution twice as slow.
+passes arrays costs reference counting of each, which made a revolution twice as slow;
+and :func:`revolution` itself is compiled without reference counting (``_nrt=False``),
+whose atomic operations on the arrays passed between the inlined helpers still took a
+fifth of a revolution.
 """
 
 from __future__ import annotations
