@@ -293,9 +293,16 @@ def revolution_wear(
         contour, pin, load, azimuth, law, max_penetration
     )
     if initial_offset is None:
-        guess = conformal = np.zeros(m)
-        clearance = np.maximum(centre_gap, 1e-12 * pin.radius)
-        conformal = clearance + _conformal_depth(contour, pin.radius, law, load, clearance)
+        guess, conformal = known.zeros, np.zeros(m)
+        # the conformal estimate starts only a load without a balanced predecessor (the
+        # first, or one after a zero load): the others start from their predecessor
+        # (usually one: scalars cost less than arrays of one)
+        alone = np.flatnonzero((load > 0.0) & np.concatenate(([True], load[:-1] <= 0.0)))
+        for k in alone.tolist():
+            clearance = max(float(centre_gap[k]), 1e-12 * pin.radius)
+            conformal[k] = clearance + _conformal_depth(
+                contour, pin.radius, law, float(load[k]), clearance
+            )
     else:
         guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), known.zeros
         if guess.size != m:
