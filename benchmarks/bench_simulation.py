@@ -37,6 +37,7 @@ from tests.reference_impl import reference_revolution  # noqa: E402
 
 from jointwear import Simulation, load_config  # noqa: E402
 from jointwear.config import Config  # noqa: E402
+from jointwear.geometry import BushingContour  # noqa: E402
 
 PAPER = REPO / "examples" / "paper" / "table5_nlcp_15000r.toml"
 CALIBRATED = {
@@ -246,20 +247,86 @@ def _bench_kernel_model(model: str, quick: bool) -> None:
         ">= 800x",
     )
     result = cold()
-    fast = simulation.contact(worn, state)
     _, ref_wear = reference()
     numpy_path = revolution_wear(*args, simulation.law, k_d, compiled=False, **options)
-    row(
-        f"{model}: evaluations per load, cold / warm (mean, max)",
-        f"{result.iterations.mean():.2f}, {result.iterations.max()} / "
-        f"{fast.iterations.mean():.2f}, {fast.iterations.max()}",
-        "",
-    )
     row(
         f"{model}: max |kernel - reference| / peak (wear); kernel vs NumPy path",
         f"{np.abs(result.wear - ref_wear).max() / ref_wear.max():.1e}; "
         f"{np.abs(result.wear - numpy_path.wear).max() / numpy_path.wear.max():.1e}",
         "<= 1e-12 vs NumPy path",
+    )
+
+
+def bench_evaluations(quick: bool) -> None:
+    """Residual evaluations per load: what keeps a solve short (no physics is asserted here;
+    the tests hold every solve to its balance and to the reference)."""
+    from tests.test_fast_path import contour_for
+
+    from jointwear.contact import balance as load_balance
+    from jointwear.contact import solve as solve_named
+    from jointwear.contact.kernel import revolution_wear
+
+    def counts(iterations) -> str:
+        return f"mean {iterations.mean():.2f}, max {iterations.max()}"
+
+    table5 = paper(**{"simulation.revolutions": 20, "simulation.update_every": 1})
+    for model in KERNEL_MODELS:
+        simulation, state = kernel_inputs(table5.replace({"contact.model": model}), 6)
+        load = simulation.load_cycle
+        k_d = table5.materials.bushing.wear_coefficient
+        args = (
+            simulation.initial_contour(), simulation.pin, load.load, load.azimuth,
+            simulation.sliding_distance, simulation.law, k_d,
+        )  # fmt: skip
+        cold = revolution_wear(*args, max_penetration=table5.joint.bushing_thickness)
+        worn = simulation._contour(state.wear_depth)
+        warm = simulation.contact(worn, state)
+        row(
+            f"evaluations per load, {model}, kernel: cold circle / warm in a run",
+            f"{counts(cold.iterations)} / {counts(warm.iterations)}",
+            "cold ~2-3, warm 2",
+        )
+        numpy_warm = revolution_wear(
+            worn, *args[1:], max_penetration=table5.joint.bushing_thickness,
+            initial_offset=state.warm_offset + state.warm_slope, compiled=False,
+        )  # fmt: skip
+        coarse = simulation.contact(contour_for(simulation, "worn"))
+        row(
+            f"evaluations per load, {model}, NumPy path: warm in a run / cold worn (coarse pass)",
+            f"{counts(numpy_warm.iterations)} / {counts(coarse.iterations)}",
+            "warm <= 2.05 (mean), coarse <= 3.0 (mean)",
+        )
+    simulation = Simulation(table5)
+    cold = simulation.contact(simulation.initial_contour())
+    row(
+        "evaluations per load, nlcp, NumPy path, cold circle: share with 2, max",
+        f"{np.mean(cold.iterations == 2):.3f}, {cold.iterations.max()}",
+        ">= 0.95, <= 3",
+    )
+    # a generic batch on the paper's joint, 20 % zero loads
+    params = simulation.parameters
+    pin = simulation.pin
+    circle = BushingContour.circle(params.bushing_radius, 360, params.axial_length)
+    t = np.linspace(0, 2 * np.pi, 360, endpoint=False)
+    loads = 275 + 125 * np.sin(t) + 20 * np.sin(3 * t)
+    loads[::37] = 0.0
+    azimuth = np.radians(180 + 30 * np.sin(t))
+    batch = load_balance.solve_contact(circle, pin, loads, azimuth, simulation.law)
+    row(
+        "evaluations per load, nlcp, NumPy path, cold circle with zero loads: share with 2, max",
+        f"{np.mean(batch.iterations[loads > 0] == 2):.3f}, {batch.iterations.max()}",
+        ">= 0.95, <= 8",
+    )
+    worn = contour_for(simulation, "worn")
+    few = np.linspace(50, 400, 20)
+    angles = np.radians(np.linspace(-25, 25, 20))
+    exact = solve_named(worn, pin, few, angles, "nlcp", params)
+    along = exact.eccentricity[:, 0] * np.cos(angles) + exact.eccentricity[:, 1] * np.sin(angles)
+    again = solve_named(worn, pin, few, angles, "nlcp", params, initial_offset=along)
+    row(
+        "evaluations per load, nlcp, NumPy path, started on the root: max",
+        f"{again.iterations.max()}",
+        "<= 2",
     )
 
 
@@ -615,11 +682,15 @@ def main() -> None:
         "--only",
         nargs="*",
         default=None,
-        help="sections: kernel kernel-linearity kernel-start revolution big long linearity cold",
+        help=(
+            "sections: kernel evaluations kernel-linearity kernel-start revolution big long "
+            "linearity cold"
+        ),
     )
     args = parser.parse_args()
     sections = {
         "kernel": bench_kernel,
+        "evaluations": bench_evaluations,
         "kernel-linearity": bench_kernel_linearity,
         "kernel-start": bench_kernel_start,
         "revolution": bench_revolution,

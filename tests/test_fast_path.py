@@ -215,8 +215,6 @@ def test_simulation_steps_use_the_extrapolated_warm_start(table5):
     warm = simulation.contact(contour, state)
     cold = simulation.contact(contour)
     assert_rows_close(warm.pressure, cold.pressure)
-    # the extrapolation is good: about two residual evaluations per load
-    assert warm.iterations.mean() < 2.5
 
 
 def test_no_update_wear_is_exactly_linear(table5):
@@ -259,21 +257,12 @@ def test_reference_step_is_the_paper_balance(table5):
 # ---------------------------------------------------------------- cold starts
 
 
-def test_cold_revolution_balances_in_two_evaluations(table5):
-    """A cold revolution on the unworn bushing: the node-free guess (~1e-5 of the load off)
-    and a fourth-order first step balance (almost) every load with two residual
-    evaluations, the step and the check."""
-    simulation = Simulation(table5)
-    solution = simulation.contact(simulation.initial_contour())
-    assert np.mean(solution.iterations == 2) >= 0.95
-    assert solution.iterations.max() <= 3
-
-
 @pytest.mark.parametrize("model", MODELS)
 def test_coarse_pass_guesses_a_worn_contour(table5, model):
     """A cold batch on a worn contour solves every 8th load with two steps and one more,
     unevaluated (polish), and interpolates the rest: most guesses are within ~1e-5 of the
-    penetration, none far off, and the fine pass takes two or three evaluations a load."""
+    penetration, none far off (the evaluations a load take: ``benchmarks/bench_simulation.py
+    --only evaluations``)."""
     simulation = Simulation(table5.replace({"contact.model": model}))
     contour = contour_for(simulation, "worn")
     load = simulation.load_cycle
@@ -298,7 +287,6 @@ def test_coarse_pass_guesses_a_worn_contour(table5, model):
     # the window is 1.05 times the widest coarse contact + 3 nodes
     half = np.maximum(solution.half_angle_left, solution.half_angle_right).max()
     assert abs(widest - half) < 0.05 * half
-    assert solution.iterations.mean() <= 3.0
 
 
 # ---------------------------------------------------------------- buffers and caches
@@ -348,8 +336,9 @@ def test_cached_window_geometry_follows_the_azimuths(table5):
     assert_rows_close(turned.pressure, np.roll(first.pressure, 7, axis=1))
 
 
-def test_warm_revolution_balances_every_load_in_two_evaluations(table5):
-    """Inside a run: one (Chebyshev-corrected) Newton step and the check, within tolerance."""
+def test_warm_revolution_balances_every_load(table5):
+    """Inside a run, warm-started: every load within tolerance, the cold answer (the
+    evaluations a load take: ``benchmarks/bench_simulation.py --only evaluations``)."""
     simulation = Simulation(
         table5.replace({"simulation.revolutions": 20, "simulation.update_every": 1})
     )
@@ -362,5 +351,4 @@ def test_warm_revolution_balances_every_load_in_two_evaluations(table5):
     force = warm.pressure * force_area(simulation, contour)
     bound = np.maximum(1e-12, 8 * EPS * np.abs(force).sum(axis=1))
     assert np.all(np.abs(warm.normal_force - load) <= bound)
-    assert warm.iterations.mean() <= 2.05
     assert_rows_close(warm.pressure, simulation.contact(contour).pressure)

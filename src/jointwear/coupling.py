@@ -24,6 +24,7 @@ built from the config:
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -32,7 +33,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import NDArray
 
-from jointwear.tribology.metrics import JointGeometry, evaluate_metrics
+from jointwear.tribology.metrics import JointGeometry, evaluate_metrics, wear_peak
 
 if TYPE_CHECKING:
     from jointwear.config import Config
@@ -106,11 +107,15 @@ class LifeLimits:
         wear_depth : ndarray, shape (N,)
             Wear-depth profile [m].
         """
-        values = evaluate_metrics(wear_depth, self.joint)
+        values = _limit_metrics(wear_depth, self.joint, self._metrics)
         for key, metric, limit, sense in self.limits:
             if sense * (values[metric] - limit) >= 0.0:
                 return key
         return None
+
+    @functools.cached_property
+    def _metrics(self) -> frozenset[str]:
+        return frozenset(metric for _, metric, _, _ in self.limits)
 
     def first_reached(
         self, depth_at: Callable[[int], FloatArray], interval: int
@@ -141,6 +146,28 @@ class LifeLimits:
             else:
                 high = middle
         return high, str(self.reached(depth_at(high)))
+
+
+#: metrics of a profile that need its peak only, and that need its removed area
+_FROM_PEAK = frozenset({"peak_wear_depth", "min_wall_thickness", "max_clearance"})
+
+
+def _limit_metrics(
+    wear_depth: FloatArray, joint: JointGeometry, needed: frozenset[str]
+) -> dict[str, float]:
+    """The metrics ``needed`` of a profile (all of :func:`evaluate_metrics` if any other).
+
+    The limits are checked at every contour update, usually the wall alone: its peak is
+    all that is computed then.
+    """
+    if not needed <= _FROM_PEAK:
+        return evaluate_metrics(wear_depth, joint)
+    peak = wear_peak(wear_depth)
+    return {
+        "peak_wear_depth": peak,
+        "min_wall_thickness": joint.bushing_thickness - peak,
+        "max_clearance": joint.clearance + peak,
+    }
 
 
 #: bins of the wear signature of a load cycle over the bushing's circumference

@@ -28,6 +28,7 @@ results gain a ``joint`` dimension.
 
 from __future__ import annotations
 
+import bisect
 import functools
 import math
 import time
@@ -556,11 +557,12 @@ class Simulation:
         the wear with error control, see :meth:`_adaptive_step`. A ``[life]`` limit
         reached inside the interval ends it at the first revolution that reaches it.
         """
-        threshold = state.dynamics_threshold or self.schedule.first_threshold(
-            self.config.joint.clearance
-        )
-        if self.schedule.due(state.updates_since_dynamics, state.wear_growth, threshold):
-            state = self._resolve_dynamics(state)
+        if self.schedule.coupled:  # (the growth is a reduction over the profile)
+            threshold = state.dynamics_threshold or self.schedule.first_threshold(
+                self.config.joint.clearance
+            )
+            if self.schedule.due(state.updates_since_dynamics, state.wear_growth, threshold):
+                state = self._resolve_dynamics(state)
         remaining = self.config.simulation.revolutions - state.revolution
         if self.config.simulation.update_every == "adaptive":
             wear_step = self._adaptive_step(state, remaining)
@@ -652,18 +654,23 @@ class Simulation:
         adaptive = step.end_rate is not None
         if stopped_by is None:
             # the contour must stay inside the wall (a run without a wall limit cannot
-            # get here with wear beyond it: the wall is always a limit)
-            depth = update_contour(
-                self._contour(base.wear_depth), depth - base.wear_depth
-            ).wear_depth
+            # get here with wear beyond it: the wall is always a limit); a fixed step's
+            # contour is the one of ``base``
+            if adaptive:
+                depth = update_contour(
+                    self._contour(base.wear_depth), depth - base.wear_depth
+                ).wear_depth
+            else:
+                depth = _grown(step.contour, depth - base.wear_depth)
         profiles = base.profiles
         if adaptive:
             # saved profiles inside the jump: the corrector's quadratic in the revolution
             for target in self._profile_targets:
                 if base.revolution < target < base.revolution + interval:
                     profiles = profiles.append((target, step.depth_at(target - base.revolution)))
-        new = replace(
+        return self._record(
             base,
+            step.solution,
             revolution=base.revolution + interval,
             wear_depth=depth,
             wear_rate=step.end_rate if adaptive else step.rate,
@@ -680,7 +687,6 @@ class Simulation:
             pin_wear_rate=step.pin_rate,
             **self._warm_start(step.solution, step.contour, base.warm_offset, interval),
         )
-        return self._record(new, step.solution)
 
     def _warm_start(
         self,
@@ -769,29 +775,41 @@ class Simulation:
             self._warned.add(key)
             warnings.warn(message, WearFeedbackWarning, stacklevel=3)
 
-    def _check_assumptions(self, state: SimulationState) -> None:
-        """Say once when the continuous-contact assumption of the load is in doubt."""
+    def _check_assumptions(self, revolution: int, peak: float) -> None:
+        """Say once when the continuous-contact assumption of the load is in doubt.
+
+        ``peak``: the deepest wear [m] at ``revolution``.
+        """
         cycle = self.load_cycle
         if cycle.model != "massless-link":
             return
         clearance = self.config.joint.clearance
-        peak = float(state.wear_depth.max())
         if peak >= clearance:
             self._warn_once(
                 "clearance",
                 f"simulation: the wear ({peak * 1e3:.3g} mm) has grown past the clearance "
-                f"({clearance * 1e3:.3g} mm) by revolution {state.revolution}, but the massless-"
+                f"({clearance * 1e3:.3g} mm) by revolution {revolution}, but the massless-"
                 f"link load assumes the pin stays on the wall; set dynamics.model = "
                 f"'contact-impact' and simulation.dynamics_update = 'adaptive' to let the "
                 f"worn joint's dynamics feed back",
             )
-        if cycle.load.min() < 1e-3 * cycle.load.max():
-            self._warn_once(
-                "load",
-                f"dynamics: the joint load falls to {cycle.load.min():.3g} N "
-                f"(peak {cycle.load.max():.3g} N), where the pin may leave the wall; "
-                f"dynamics.model = 'contact-impact' models the separation",
-            )
+        if "load" not in self._warned:
+            low, high = self._load_range(cycle)
+            if low < 1e-3 * high:
+                self._warn_once(
+                    "load",
+                    f"dynamics: the joint load falls to {low:.3g} N "
+                    f"(peak {high:.3g} N), where the pin may leave the wall; "
+                    f"dynamics.model = 'contact-impact' models the separation",
+                )
+
+    def _load_range(self, cycle: mechanism.LoadCycle) -> tuple[float, float]:
+        """Smallest and largest load of ``cycle`` [N], computed once per cycle."""
+        cached = getattr(self, "_load_range_of", None)
+        if cached is None or cached[0] is not cycle:
+            cached = (cycle, float(cycle.load.min()), float(cycle.load.max()))
+            self._load_range_of = cached
+        return cached[1], cached[2]
 
     # ---------------------------------------------------------------- helpers
     def _unworn_solution(self, state: SimulationState) -> ContactSolution:
@@ -842,8 +860,9 @@ class Simulation:
         end, stopped_by = (total, None) if stop is None else stop
         # the saved profiles before the end, and the end (the last mark without a stop)
         for revolution in [t for t in self._profile_targets if t < end] + [end]:
-            state = replace(
+            state = self._record(
                 state,
+                solution,
                 revolution=revolution,
                 wear_rate=rate,
                 interval=revolution,
@@ -852,7 +871,6 @@ class Simulation:
                 pin_wear_depth=None if pin_rate is None else pin_rate * revolution,
                 pin_wear_rate=pin_rate,
             )
-            state = self._record(state, solution)
         return state, solution
 
     def _contour(self, wear_depth: FloatArray) -> BushingContour:
@@ -870,21 +888,34 @@ class Simulation:
         )
         return tuple(sorted({max(1, round(float(m))) for m in marks}))
 
-    def _record(self, state: SimulationState, solution: ContactSolution) -> SimulationState:
+    def _record(
+        self, base: SimulationState, solution: ContactSolution, **changes: Any
+    ) -> SimulationState:
+        """``base`` with ``changes``, its metrics added to the record and its profile saved
+        where one is due: one new state."""
+        revolution = changes.get("revolution", base.revolution)
+        depth = changes.get("wear_depth", base.wear_depth)
+        pin_depth = changes.get("pin_wear_depth", base.pin_wear_depth)
+        stopped_by = changes.get("stopped_by", base.stopped_by)
+        profiles = changes.get("profiles", base.profiles)
+        metrics = evaluate_metrics(depth, self.life.joint)
         row = {
-            "revolution": state.revolution,
-            **evaluate_metrics(state.wear_depth, self.life.joint),
+            "revolution": revolution,
+            **metrics,
             "contact_iterations": float(solution.iterations.sum()),
         }
-        if state.pin_wear_depth is not None:
-            row.update(pin_metrics(state.pin_wear_depth, self.config))
-        profiles = state.profiles
-        if state.stopped_by is not None or any(
-            state.last_saved < t <= state.revolution for t in self._profile_targets
-        ):
-            profiles = profiles.append((state.revolution, state.wear_depth))
-        self._check_assumptions(state)
-        return replace(state, history=state.history.append(row), profiles=profiles)
+        if pin_depth is not None:
+            row.update(pin_metrics(pin_depth, self.config))
+        last = profiles.last
+        last_saved = 0 if last is None else int(last[0])
+        targets = self._profile_targets
+        # a target in (last_saved, revolution]
+        due = bisect.bisect_right(targets, last_saved)
+        if stopped_by is not None or (due < len(targets) and targets[due] <= revolution):
+            profiles = profiles.append((revolution, depth))
+        self._check_assumptions(revolution, metrics["peak_wear_depth"])
+        changes.update(history=base.history.append(row), profiles=profiles)
+        return replace(base, **changes)
 
 
 #: contact solves a run may need, above which the compiled kernel pays for loading numba
@@ -987,6 +1018,19 @@ def _along_load(solution: ContactSolution, azimuth: FloatArray) -> FloatArray:
     )
 
 
+def _grown(contour: BushingContour, increment: FloatArray) -> FloatArray:
+    """The wear depth of ``update_contour(contour, increment)`` [m], without building the
+    contour unless it would be refused (it then raises as the update does)."""
+    depth = contour.wear_depth + increment
+    radius = contour.radius + increment
+    if not (np.isfinite(radius).all() and radius.min() > 0.0):
+        return update_contour(contour, increment).wear_depth
+    return depth
+
+
 def _window_nodes(solution: ContactSolution, contour: BushingContour) -> int:
+    revolution = getattr(solution, "revolution", None)
+    if revolution is not None:
+        return revolution.window
     widest = max(float(solution.half_angle_left.max()), float(solution.half_angle_right.max()))
     return int(np.ceil(widest / contour.dtheta) + 3)

@@ -160,11 +160,12 @@ class SimulationState:
     pin_wear_rate: FloatArray | None = None
 
     def __post_init__(self) -> None:
-        for spec in fields(self):
-            value = getattr(self, spec.name)
-            frozen = _frozen(value)
-            if frozen is not value:
-                object.__setattr__(self, spec.name, frozen)
+        for name in _ARRAY_FIELDS:
+            value = getattr(self, name)
+            if value is not None:
+                frozen = _frozen(value)
+                if frozen is not value:
+                    object.__setattr__(self, name, frozen)
 
     @property
     def wear_growth(self) -> float:
@@ -188,3 +189,9 @@ class SimulationState:
         """Revolution of the last saved profile (0 if none)."""
         last = self.profiles.last
         return 0 if last is None else int(last[0])
+
+
+#: the fields that may hold an array (made read-only, copied if given writeable)
+_ARRAY_FIELDS = tuple(
+    spec.name for spec in fields(SimulationState) if "FloatArray" in str(spec.type)
+)

@@ -255,19 +255,6 @@ def test_warm_start_gives_the_same_answer(params, pin, worn, balance):
         np.testing.assert_allclose(
             warm.pressure, cold.pressure, rtol=1e-9, atol=1e-10 * cold.pressure.max()
         )
-    exact = solve(
-        worn,
-        pin,
-        loads,
-        azimuth,
-        "nlcp",
-        params,
-        balance="paper",
-        initial_offset=along
-        if balance == "paper"
-        else pin_frame(solve(worn, pin, loads, azimuth, "nlcp", params), azimuth)[0],
-    )
-    assert np.all(exact.iterations <= 2)  # starting on the root
 
 
 @pytest.mark.parametrize("balance", ["paper", "equilibrium"])
@@ -538,10 +525,6 @@ def test_cold_start_on_a_circle_gives_the_warm_answer(params, pin, model, balanc
     _, _, total = resultants(cold, circle, area, azimuth)
     assert np.all(np.abs(cold.normal_force - load) <= bound(total))
     assert np.all(cold.pressure[load == 0] == 0.0)
-    if balance_mode == "paper" and model == "nlcp":
-        # the fourth-order first step lands within round-off for (almost) every load
-        assert np.mean(cold.iterations[load > 0] == 2) >= 0.95
-    assert cold.iterations.max() <= 8
 
 
 @pytest.mark.parametrize("model", ["asymmetric-winkler", "nlcp", "mesh-independent nlcp"])

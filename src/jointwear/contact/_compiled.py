@@ -10,24 +10,30 @@ is the arithmetic: one loop per load over the nodes the pin can reach, no tempor
 and the wear of a load added to the nodes as soon as it is balanced.
 
 The window of load ``k`` is read from arrays padded by a quarter circle each side
-(``ext[c + o + pad]`` is node ``(c + o) mod N``), so no loop has a modulo; loops run
-over ``range(size)`` of window views, because an index that could be negative is
-wrapped around by numba, which turns the loads into gathers (3x slower). ``fastmath``
+(``ext[c + o + pad]`` is node ``(c + o) mod N``), so no loop has a modulo; loops index
+them by unsigned offsets (``uint64``), because an index that could be negative is
+wrapped around by numba, which turns the loads into gathers (3x slower), and a window
+view per evaluation would cost its reference counting. ``fastmath``
 only reassociates the sums and contracts to FMA: no approximate division or square
 root. Arguments travel in tuples:
 
-* ``nodes``: ``(gap_ext, area_ext, cos_o, sin_o)``, the padded node gaps ``r_j - R_p``
-  [m] and spring areas [m^2], and ``cos``/``sin`` of the window offsets ``o dtheta``;
+* ``nodes``: ``(gap_ext, area_ext, cos_o, sin_o, half_cos)``, the padded node gaps
+  ``r_j - R_p`` [m] and spring areas [m^2], ``cos``/``sin`` of the window offsets
+  ``o dtheta`` and ``cos((n - 1/2) dtheta)`` (:func:`_reach`);
 * ``grid``: ``(pad, quarter, dtheta, rp, exponent, coefficient)``;
 * ``lines``: per load ``(centre, cos_shift, sin_shift, load_gap, load_area, gap_min,
   lower, upper, shift)``, the node nearest the load line, the load line's angle from
   it, a gap and area factor per load (the symmetric law's circle), the smallest gap
   the pin can meet, the bracket of the offset [m] and the angle [rad];
 * ``line``: one load's ``(base, cos_shift, sin_shift, load_gap, load_area)``;
-* ``work``: the window scratch of one load, rows ``_COS`` .. ``_ALONG`` by offset.
+* ``work``: the window scratch of one load, one array per row ``_DEPTH`` .. ``_PRESS``
+  (:func:`scratch`), by offset from the window's start.
 
 Every helper is inlined into :func:`revolution` (``inline="always"``): a call that
-passes arrays costs reference counting of each, which made a revolution twice as slow.
+passes arrays costs reference counting of each, which made a revolution twice as slow;
+and :func:`revolution` itself is compiled without reference counting (``_nrt=False``),
+whose atomic operations on the arrays passed between the inlined helpers still took a
+fifth of a revolution.
 """
 
 from __future__ import annotations
@@ -35,7 +41,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, uint64
 
 #: results per load (``status``)
 CONVERGED, NOT_CONVERGED = 0, 1
@@ -44,62 +50,54 @@ CONVERGED, NOT_CONVERGED = 0, 1
 #: nor a division; beyond, the closed form
 _SHORT_SERIES, _LONG_SERIES = 1e-4, 1e-2
 _EPS = 2.220446049250313e-16
+#: steps from the last full evaluation up to ``_REUSE R_p`` in all move the depths by
+#: their second-order Taylor polynomial to within ``eps s / 16`` (see :func:`_balance`)
+_REUSE = (_EPS / 64.0) ** (1.0 / 3.0)
 _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
-#: spring laws of :func:`_springs`: ``p = k delta`` and ``p = k delta^1.5``
-_LINEAR, _HERTZIAN = 1, 2
-#: rows of ``work``; the first five are set once per load by :func:`_prepare`
-_COS, _SIN2, _WEIGHT, _GAP, _SIDE, _PRESS, _DEPTH, _ALONG = range(8)
+#: spring laws of :func:`_springs`: ``p = k delta``, ``p = k delta^1.5`` and the latter
+#: with its curvature
+_LINEAR, _HERTZIAN, _CURVED = 1, 2, 3
+#: rows of ``work``: per node of the window, depth [m], its first and second derivative
+#: in the offset, ``k A_j cos(phi_j)``, ``k A_j sin(phi_j)`` and ``p / k``
+_DEPTH, _ALONG, _CURVE, _WEIGHT, _SIDE, _PRESS = range(6)
+
+
+def scratch(quarter: int) -> tuple[np.ndarray, ...]:
+    """The window scratch of :func:`revolution`: one array per row of ``work`` (rows of one
+    2-D array are not vectorised), ``2 quarter + 1`` long."""
+    size = 2 * quarter + 1
+    return tuple(np.zeros(size) for _ in range(6))
 
 
 @njit(inline="always", **_FLAGS)
-def _prepare(nodes, grid, line, width, work):
-    """One load's window geometry into ``work`` (rows ``_COS`` .. ``_SIDE``).
-
-    ``cos(phi_j)``, ``sin^2(phi_j)`` (angle addition from the tables), ``k A_j
-    cos(phi_j)``, the gap ``g_j`` [m] and ``k A_j sin(phi_j)``: what every evaluation of
-    the load reads, computed once instead of once per evaluation.
-    """
-    gap_ext, area_ext, cos_o, sin_o = nodes
-    quarter, coefficient = grid[1], grid[5]
-    base, cs, ss, load_gap, load_area = line
-    start, first, size = base - width, quarter - width, 2 * width + 1
-    gap, area = gap_ext[start : start + size], area_ext[start : start + size]
-    co, so = cos_o[first : first + size], sin_o[first : first + size]
-    rows = work[:, first : first + size]
-    factor = coefficient * load_area
-    for j in range(size):
-        c = co[j] * cs - so[j] * ss
-        sn = so[j] * cs + co[j] * ss
-        rows[_COS, j] = c
-        rows[_SIN2, j] = sn * sn
-        rows[_WEIGHT, j] = factor * area[j] * c
-        rows[_GAP, j] = gap[j] + load_gap
-        rows[_SIDE, j] = factor * area[j] * sn
-
-
-@njit(inline="always", **_FLAGS)
-def _evaluate(s, rp, exponent, width, work):
+def _evaluate(s, rp, exponent, nodes, grid, line, width, work, curved):
     """Springs of one load at offset ``s`` [m]: (force [N], slope [N/m], curvature [N/m^2]).
 
-    Reads the window prepared in ``work``, writes ``p / k`` and the depth [m] of each
-    node to its rows ``_PRESS`` and ``_DEPTH``; the curvature only for linear springs
-    (NaN otherwise). Each combination of exponent (1 or 1.5) and curvature form is a
-    loop of its own whose constants LLVM folds: a branch (or an untaken ``pow``) inside
-    the loop keeps it from being vectorised (up to 10x slower).
+    The window geometry and the springs in one pass (:func:`_springs`); the curvature
+    for linear springs, and for ``delta^1.5`` where ``curved`` (NaN otherwise). Each
+    combination of exponent (1 or 1.5) and
+    curvature form is a loop of its own whose constants LLVM folds: a branch (or an
+    untaken ``pow``) inside the loop keeps it from being vectorised (up to 10x slower).
     """
     terms = _series_terms(s, rp)
     # (literal arguments: each call below is a loop of its own)
     if exponent == 1.0:
         if terms == 4:
-            return _springs(s, rp, width, work, _LINEAR, 4)
+            return _springs(s, nodes, grid, line, width, work, _LINEAR, 4)
         if terms == 8:
-            return _springs(s, rp, width, work, _LINEAR, 8)
-        return _springs(s, rp, width, work, _LINEAR, 0)
+            return _springs(s, nodes, grid, line, width, work, _LINEAR, 8)
+        return _springs(s, nodes, grid, line, width, work, _LINEAR, 0)
+    if curved:
+        if terms == 4:
+            return _springs(s, nodes, grid, line, width, work, _CURVED, 4)
+        if terms == 8:
+            return _springs(s, nodes, grid, line, width, work, _CURVED, 8)
+        return _springs(s, nodes, grid, line, width, work, _CURVED, 0)
     if terms == 4:
-        return _springs(s, rp, width, work, _HERTZIAN, 4)
+        return _springs(s, nodes, grid, line, width, work, _HERTZIAN, 4)
     if terms == 8:
-        return _springs(s, rp, width, work, _HERTZIAN, 8)
-    return _springs(s, rp, width, work, _HERTZIAN, 0)
+        return _springs(s, nodes, grid, line, width, work, _HERTZIAN, 8)
+    return _springs(s, nodes, grid, line, width, work, _HERTZIAN, 0)
 
 
 @njit(inline="always", **_FLAGS)
@@ -145,73 +143,107 @@ def _spring(depth, law):
 
 
 @njit(inline="always", **_FLAGS)
-def _springs(s, rp, width, work, law, terms):
+def _springs(s, nodes, grid, line, width, work, law, terms):
     """``sum_j p_j A_j cos(phi_j)``, its slope in ``s`` and (linear springs) its curvature.
 
-    ``law`` is ``_LINEAR`` (``p = k delta``) or ``_HERTZIAN`` (``p = k delta^1.5``).
+    ``law`` is ``_LINEAR`` (``p = k delta``), ``_HERTZIAN`` (``p = k delta^1.5``) or
+    ``_CURVED`` (the same with its curvature, for a cold start). The
+    window's geometry comes with it: ``cos(phi_j)`` and ``sin(phi_j)`` by angle addition
+    from the tables, the gap and the spring area of each node; every row of ``work`` is
+    written (what a later :func:`_springs_moved` and the wear read).
     Linear springs: between two nodes coming into contact the force is linear in ``s``
     but for the pin's curvature, ``f'' = sum_j k A_j cos(phi_j) delta_j''`` over the nodes
     in contact, a few flops more; with it the step is Chebyshev's. For ``delta^1.5`` the
-    curvature would cost a division per node (``p'' ~ delta^-1/2``), more than the third
-    evaluation it saves a cold start: NaN (the step uses ``kappa``).
+    curvature costs a division per node (``p'' = 3 / (4 sqrt(delta))``): taken where a
+    start is cold (it saves the third evaluation), else NaN (the step uses ``kappa``).
     """
-    first, size = work.shape[1] // 2 - width, 2 * width + 1
-    rows = work[:, first : first + size]
+    gap, area, co, so = nodes[0], nodes[1], nodes[2], nodes[3]
+    quarter, rp, coefficient = grid[1], grid[3], grid[5]
+    base, cs, ss, load_gap, load_area = line
+    # unsigned offsets: numba wraps a possibly negative index (a gather), and a slice per
+    # array would cost its reference counting per evaluation
+    start, first = uint64(base - width), uint64(quarter - width)
+    depth, slopes, bends, weights, sides, press = work
+    factor = coefficient * load_area
     total = 0.0
     slope = 0.0
     second = 0.0
     s2 = s * s
     inv_rp = 1.0 / rp
-    for j in range(size):
-        c, sin2, weight = rows[_COS, j], rows[_SIN2, j], rows[_WEIGHT, j]
+    for j in range(uint64(2 * width + 1)):
+        c = co[first + j] * cs - so[first + j] * ss
+        sn = so[first + j] * cs + co[first + j] * ss
+        sin2 = sn * sn
+        spring = factor * area[start + j]
+        weight = spring * c
         x = s2 * sin2
         curv, inv_root = _pin_curvature(x, rp, inv_rp, terms)
-        d = s * c - rows[_GAP, j] - curv
+        d = s * c - (gap[start + j] + load_gap) - curv
         along = c - s * sin2 * inv_root  # d depth / ds
+        bend = -sin2 * inv_root * (1.0 + x * inv_root * inv_root)  # d2 depth / ds2
         p, stiffness = _spring(d, law)
         total += weight * p
         slope += weight * stiffness * along
-        if law == _LINEAR:  # d2 depth / ds2 where in contact
-            second -= weight * stiffness * sin2 * inv_root * (1.0 + x * inv_root * inv_root)
-        rows[_PRESS, j] = p
-        rows[_DEPTH, j] = d
-        rows[_ALONG, j] = along
+        if law == _LINEAR:  # where in contact
+            second += weight * stiffness * bend
+        if law == _CURVED:  # p'' = 1.125 / p' in contact
+            bent = 1.125 / stiffness if stiffness > 0.0 else 0.0
+            second += weight * (bent * along * along + stiffness * bend)
+        depth[j] = d
+        slopes[j] = along
+        bends[j] = bend
+        weights[j] = weight
+        sides[j] = spring * sn
+        press[j] = p
     if law == _HERTZIAN:
         second = np.nan
     return total, slope, second
 
 
 @njit(inline="always", **_FLAGS)
-def _springs_moved(s, step, width, work, law):
-    """:func:`_springs` after a small step [m] from the last evaluation, without the pin
-    curvature: ``delta_j += step delta_j'`` (the neglected ``step^2 delta_j'' / 2`` is below
-    ``eps s / 16``, see :func:`_balance`); the slope keeps the last ``delta_j'``."""
-    first, size = work.shape[1] // 2 - width, 2 * width + 1
-    rows = work[:, first : first + size]
+def _springs_moved(step, width, work, law):
+    """:func:`_springs` after a small step [m] from the last evaluation, without geometry or
+    pin curvature: ``delta_j += step delta_j' + step^2 delta_j'' / 2`` and ``delta_j' +=
+    step delta_j''``, with ``delta_j''`` of the last full evaluation (the neglected terms
+    are below ``eps s / 16`` within ``_REUSE R_p`` of it, see :func:`_balance`)."""
+    depth, slopes, bends, weights, _, press = work
     total = 0.0
     slope = 0.0
-    for j in range(size):
-        weight, along = rows[_WEIGHT, j], rows[_ALONG, j]
-        d = rows[_DEPTH, j] + step * along
+    second = 0.0
+    half = 0.5 * step
+    for j in range(uint64(2 * width + 1)):
+        weight, along, bend = weights[j], slopes[j], bends[j]
+        d = depth[j] + step * (along + half * bend)
+        along += step * bend
         p, stiffness = _spring(d, law)
         total += weight * p
         slope += weight * stiffness * along
-        rows[_PRESS, j] = p
-        rows[_DEPTH, j] = d
-    return total, slope
+        if law == _LINEAR:
+            second += weight * stiffness * bend
+        depth[j] = d
+        slopes[j] = along
+        press[j] = p
+    if law == _HERTZIAN:
+        second = np.nan
+    return total, slope, second
 
 
 @njit(inline="always", **_FLAGS)
-def _reach(s, gap_min, dtheta, quarter):
+def _reach(s, gap_min, half_cos, quarter, hint):
     """Window half-width [nodes] holding every node that can touch at offset ``s`` [m].
 
-    A node's depth is at most ``s cos(phi) - g_min``: none beyond ``arccos(g_min / s)``
-    (a window of half-width ``W`` holds the nodes within ``(W - 1/2) dtheta``).
+    A node's depth is at most ``s cos(phi) - g_min``: none beyond ``arccos(g_min / s)``;
+    a window of half-width ``W`` holds the nodes within ``(W - 1/2) dtheta``, so ``W`` is
+    one more than the first ``n`` with ``cos((n - 1/2) dtheta) <= g_min / s``
+    (``half_cos[n]``, ``half_cos[0] = 1``), searched from ``hint``.
     """
-    if s <= gap_min:
-        return 1
-    width = math.ceil(math.acos(gap_min / s) / dtheta + 0.5) + 1
-    return min(max(width, 1), quarter)
+    ratio = gap_min / s if s > 0.0 else 1.0
+    n = min(max(hint, 0), quarter)
+    while n > 0 and half_cos[n - 1] <= ratio:
+        n -= 1
+    while n <= quarter and half_cos[n] > ratio:
+        n += 1
+    return min(n + 1, quarter)
 
 
 @njit(inline="always", **_FLAGS)
@@ -228,7 +260,15 @@ def _step(s, f, slope, total, second, curvature):
 
 
 @njit(inline="always", **_FLAGS)
-def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work):
+def _moves(law, step, width, work):
+    """:func:`_springs_moved` with the law as a literal."""
+    if law == _LINEAR:
+        return _springs_moved(step, width, work, _LINEAR)
+    return _springs_moved(step, width, work, _HERTZIAN)
+
+
+@njit(inline="always", **_FLAGS)
+def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hint, cold):
     """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
 
     Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
@@ -237,34 +277,39 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work):
     ``s`` moves the sum by more than its own round-off there is nothing left to
     bisect); or a bracket collapsed to round-off around a residual its slope explains.
     The state returned is the last one evaluated (``work``).
+
+    Steps that stay within ``_REUSE R_p`` in all of the last full evaluation (and within
+    its window) move the depths by their Taylor polynomial (:func:`_springs_moved`): the
+    pin-curvature term's third derivative is at most ``6.2 s / R_p^3`` for ``s <= R_p /
+    2``, so the neglected cubic terms stay below ``eps s / 16``.
     """
     atol, ulps, max_iterations, curvature = solver
-    quarter, dtheta, rp, exponent = grid[1], grid[2], grid[3], grid[4]
+    quarter, rp, exponent = grid[1], grid[3], grid[4]
+    half_cos = nodes[4]
     lo, hi = lower, upper
     s = min(max(s, lo), hi)
-    # a little wider than the start's reach: the steps rarely need more
-    prepared = min(quarter, _reach(s, gap_min, dtheta, quarter) + 2)
-    _prepare(nodes, grid, line, prepared, work)
     hits = 0
     width = 1
+    limit = -np.inf  # largest offset the window of the last full evaluation holds
+    travel = np.inf
     total = 0.0
     slope = 0.0
-    # a step below this [m] moves every depth by step * delta' to within eps s / 16:
-    # |delta''| <= 2 / R_p while s <= R_p / 2
-    small = math.sqrt(_EPS * abs(s) * rp / 32.0) if s <= 0.5 * rp else 0.0
+    small = _REUSE * rp if s <= 0.5 * rp else 0.0
     law = _LINEAR if exponent == 1.0 else _HERTZIAN
     previous = np.nan
     for it in range(1, max_iterations + 1):
-        reach = _reach(s, gap_min, dtheta, quarter)
-        if abs(s - previous) <= small and reach <= width:
-            total, slope = _springs_moved(s, s - previous, width, work, law)
-            second = np.nan
+        step = s - previous
+        if travel + abs(step) <= small and s <= limit:
+            travel += abs(step)
+            total, slope, second = _moves(law, step, width, work)
         else:
-            width = reach
-            if width > prepared:
-                prepared = width
-                _prepare(nodes, grid, line, prepared, work)
-            total, slope, second = _evaluate(s, rp, exponent, width, work)
+            width = _reach(s, gap_min, half_cos, quarter, hint)
+            hint = width - 1
+            limit = np.inf if width >= quarter else gap_min / half_cos[width - 1]
+            travel = 0.0
+            total, slope, second = _evaluate(
+                s, rp, exponent, nodes, grid, line, width, work, cold
+            )
         previous = s
         f = total - load
         error = abs(f)
@@ -292,9 +337,9 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work):
     return s, total, slope, width, max_iterations, False
 
 
-@njit(**_FLAGS)
+@njit(_nrt=False, **_FLAGS)
 def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
-               floats, counts, wear_ext):  # fmt: skip
+               floats, counts, wear_ext, scale, wear, work, press_bits):  # fmt: skip
     """Balance every load of a revolution and add its wear ``p ds / k`` per node.
 
     Loads are solved in order. With ``have_guess`` each starts from ``guess`` [m];
@@ -302,17 +347,27 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     step) plus the predecessor's own miss (on a worn contour the force curve moves with
     the azimuth, smoothly from load to load), the first one from the conformal estimate
     ``conformal`` [m] (three evaluations a load, against two warm). Out: ``floats`` rows
-    offset [m], force [N], tangential force [N], left and right half-angle [rad], peak
-    pressure [Pa]; ``counts`` rows iterations, springs left and right, status.
+    offset [m], force [N], tangential force [N], left and right half-angle [rad];
+    ``counts`` rows iterations, springs left and right, status and the bits of the peak
+    ``p / k`` (a float64 read as int64). The wear of the padded window positions
+    (``wear_ext``) is folded onto the nodes and scaled by ``scale`` into ``wear`` [m].
+
+    Compiled without reference counting (``_nrt=False``: an array passed between the
+    inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
+    ``work`` (:func:`scratch`) and ``press_bits``, its pressure row read as int64 (``p
+    >= 0``: the bits order as the integers; an integer max reduction vectorises, a
+    floating-point one does not, 4x slower), come from the caller.
+
+    Returns the number of loads not balanced and the widest contact half-angle [rad].
     """
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
-    pad, quarter, dtheta, coefficient = grid[0], grid[1], grid[2], grid[5]
-    work = np.zeros((8, 2 * quarter + 1))
+    pad, quarter, dtheta = grid[0], grid[1], grid[2]
     previous_s = np.nan
     previous_total = 0.0
     previous_slope = 0.0
     drift = 0.0
+    width = 2  # the last load's window: where the next one's reach is looked for
     for k in range(load.size):
         base = centre[k] + pad
         line = (base, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
@@ -338,7 +393,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
             s = conformal[k]
         s, total, slope, width, its, ok = _balance(
             load[k], s, lower[k], upper[k], gap_min[k], nodes, grid, line, solver,
-            work,
+            work, width - 1, not have_guess,
         )  # fmt: skip
         floats[0, k] = s
         floats[1, k] = total
@@ -347,37 +402,59 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         previous_s, previous_total, previous_slope = s, total, slope
         drift = s - predicted if predicted == predicted else 0.0
         # the balanced state is the last evaluation: its wear, resultants and extent
-        first, size = quarter - width, 2 * width + 1
-        rows = work[:, first : first + size]
-        start = base - width
         floats[2, k], top, right, left = _settle(
-            sliding[k], rows, wear_ext[start : start + size], width
+            sliding[k], work, press_bits, wear_ext, base - width, width
         )
-        floats[5, k] = coefficient * top
+        counts[4, k] = top
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
-            rows[_DEPTH], width, dtheta, shifts[k], left, right
+            work[_DEPTH], width, dtheta, shifts[k], left, right
         )
+    failed = 0
+    widest = 0.0
+    for k in range(load.size):
+        failed += counts[3, k] != CONVERGED
+        widest = max(widest, floats[3, k], floats[4, k])
+    # padded position i is node (i - pad) mod N: summed in the order of i (as a bincount),
+    # the left padding, the nodes, the right padding (no modulo: an integer division each)
+    nodes_count = wear.size
+    left = wear[nodes_count - pad :]
+    for i in range(pad):
+        left[i] += wear_ext[i]
+    middle = wear_ext[pad : pad + nodes_count]
+    for j in range(nodes_count):
+        wear[j] += middle[j]
+    right = wear_ext[pad + nodes_count :]
+    for i in range(right.size):
+        wear[i] += right[i]
+    for j in range(nodes_count):
+        wear[j] *= scale
+    return failed, widest
 
 
 @njit(inline="always", **_FLAGS)
-def _settle(ds, rows, wear, width):
-    """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, peak, springs).
+def _settle(ds, work, press_bits, wear, start, width):
+    """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, bits of the
+    peak ``p / k``, springs right and left).
 
-    Every node of the window is added (``p`` is 0 out of contact): one loop, no branch.
-    The springs in contact are counted right and left of the centre column.
+    Every node of the window (offsets from ``start``) is added (``p`` is 0 out of
+    contact): no branch. The springs in contact are counted right and left of the centre
+    column.
     """
+    depth, _, _, _, sides, press = work
+    offset = uint64(start)
     sideways = 0.0
-    top = 0.0
+    top = 0
+    for j in range(uint64(2 * width + 1)):
+        p = press[j]
+        wear[offset + j] += ds * p
+        sideways += sides[j] * p
+        top = max(top, press_bits[j])
     right = 0
+    for j in range(uint64(width)):
+        right += 1 if depth[j] > 0.0 else 0
     left = 0
-    for j in range(wear.size):
-        p = rows[_PRESS, j]
-        wear[j] += ds * p
-        sideways += rows[_SIDE, j] * p
-        top = max(top, p)
-        touching = rows[_DEPTH, j] > 0.0
-        right += touching and j < width
-        left += touching and j > width
+    for j in range(uint64(width + 1), uint64(2 * width + 1)):
+        left += 1 if depth[j] > 0.0 else 0
     return sideways, top, right, left
 
 
@@ -387,12 +464,13 @@ def _extent(depth, width, dtheta, shift, n_left, n_right):
 
     ``n_left``, ``n_right``: springs in contact off the centre column (the centre
     column's side is the sign of ``shift``).
-    ``depth`` is the window (offsets ``-width .. width``). The outermost node in contact
-    each side is found by scanning in from the window's edges (a few nodes: the window
-    is the pin's reach); the edge lies between it and the next node out, interpolated
-    linearly in depth.
+    ``depth`` holds the window (offsets ``-width .. width``) first. The outermost node in
+    contact each side is found by scanning in from the window's edges (a few nodes: the
+    window is the pin's reach); the edge lies between it and the next node out,
+    interpolated linearly in depth.
     """
-    last = depth.size - 1
+    size = 2 * width + 1
+    last = size - 1
     while last >= 0 and not depth[last] > 0.0:
         last -= 1
     if last < 0:
@@ -403,7 +481,7 @@ def _extent(depth, width, dtheta, shift, n_left, n_right):
     if depth[width] > 0.0:
         n_left += shift > 0.0
         n_right += shift < 0.0
-    left = _edge(last, min(last + 1, depth.size - 1), depth, width, dtheta, shift)
+    left = _edge(last, min(last + 1, size - 1), depth, width, dtheta, shift)
     right = -_edge(first, max(first - 1, 0), depth, width, dtheta, shift)
     return max(left, 0.0), max(right, 0.0), n_left, n_right
 
@@ -421,22 +499,22 @@ def _edge(inside, outside, depth, width, dtheta, shift):
 
 
 @njit(**_FLAGS)
-def dense_pressure(offset, load, nodes, grid, lines, out):
+def dense_pressure(offset, load, nodes, grid, lines, out, work):
     """Pressure of every load at its balanced offset on all nodes [Pa] (rows of ``out``).
 
-    The same evaluation as the balance's last one, so the same numbers bit for bit.
+    One full evaluation at the balanced offset: the balance's last one, or within
+    ``eps s / 16`` of it in depth where that one was a Taylor step.
     """
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min = lines[:6]
-    pad, quarter, dtheta, rp, exponent, coefficient = grid
+    quarter, rp, exponent, coefficient = grid[1], grid[3], grid[4], grid[5]
     nodes_count = out.shape[1]
-    work = np.zeros((8, 2 * quarter + 1))
     for k in range(offset.size):
         if load[k] <= 0.0:
             continue
-        line = (centre[k] + pad, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
-        width = _reach(offset[k], gap_min[k], dtheta, quarter)
-        _prepare(nodes, grid, line, width, work)
-        _evaluate(offset[k], rp, exponent, width, work)
+        base = centre[k] + grid[0]
+        line = (base, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
+        width = _reach(offset[k], gap_min[k], nodes[4], quarter, 1)
+        _evaluate(offset[k], rp, exponent, nodes, grid, line, width, work, False)
         for o in range(-width, width + 1):
-            if work[_DEPTH, o + quarter] > 0.0:
-                out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS, o + quarter]
+            if work[_DEPTH][o + width] > 0.0:
+                out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS][o + width]

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 import os
+import threading
 from dataclasses import dataclass
 from typing import Any
 
@@ -166,16 +167,47 @@ class _Lines:
         self.shift = self.centre * dtheta - wrapped
         self.cos_shift, self.sin_shift = np.cos(self.shift), np.sin(self.shift)
         self.stencil = RadiusStencil.at(nodes, wrapped)
+        self._lower_weight = 1 - self.stencil.weight
         self.quarter = nodes // 4
         self.pad = self.quarter + 1
         offsets = np.arange(-self.quarter, self.quarter + 1)
         self.cos_o, self.sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
+        #: ``cos((n - 1/2) dtheta)`` for ``n = 1 .. quarter`` after a 1: the reach's table
+        self.half_cos = np.concatenate(
+            [[1.0], np.cos((np.arange(1, self.quarter + 1) - 0.5) * dtheta)]
+        )
         #: node of each position of an array padded by ``pad`` nodes each side
         self.padded = np.arange(-self.pad, nodes + 1 + self.pad) % nodes
         # constants of the kernel's arguments, never written (not flagged read-only:
         # numba would compile the kernel again for read-only arrays)
         self.zeros, self.ones = np.zeros(azimuth.size), np.ones(azimuth.size)
         self.zeros_padded = np.zeros(self.padded.size)
+        self._filled: dict[float, FloatArray] = {}
+        self._scratch = threading.local()
+
+    def centre_radius(self, radius: FloatArray) -> FloatArray:
+        """The radius on each load line [m]: ``self.stencil(radius)``, its weights kept."""
+        stencil = self.stencil
+        return self._lower_weight * radius.take(stencil.lower) + stencil.weight * radius.take(
+            stencil.upper
+        )
+
+    def scratch(self, module: Any) -> tuple[FloatArray, ...]:
+        """The compiled kernel's window scratch, one per thread (it writes it)."""
+        local = self._scratch
+        work = getattr(local, "work", None)
+        if work is None:
+            work = local.work = module.scratch(self.quarter)
+        return work
+
+    def filled(self, value: float) -> FloatArray:
+        """A padded array of ``value`` (kept: the kernel never writes it)."""
+        array = self._filled.get(value)
+        if array is None:
+            if len(self._filled) >= 4:
+                self._filled.clear()
+            array = self._filled[value] = np.full(self.padded.size, value)
+        return array
 
 
 def _lines(nodes: int, azimuth: FloatArray) -> _Lines:
@@ -253,42 +285,56 @@ def revolution_wear(
         )  # fmt: skip
     load, azimuth = checked_loads(load, azimuth)
     m = load.size
-    sliding = np.broadcast_to(np.asarray(sliding_distance, dtype=float).ravel(), (m,))
+    sliding = np.asarray(sliding_distance, dtype=float).ravel()
+    if sliding.size != m:
+        sliding = np.broadcast_to(sliding, (m,))
     contour.check_pin(pin)
-    nodes, grid, lines, centre_gap, padded = _arguments(
+    nodes, grid, lines, centre_gap, known = _arguments(
         contour, pin, load, azimuth, law, max_penetration
     )
     if initial_offset is None:
-        guess = conformal = np.zeros(m)
-        clearance = np.maximum(centre_gap, 1e-12 * pin.radius)
-        conformal = clearance + _conformal_depth(contour, pin.radius, law, load, clearance)
+        guess, conformal = known.zeros, np.zeros(m)
+        # the conformal estimate starts only a load without a balanced predecessor (the
+        # first, or one after a zero load): the others start from their predecessor
+        # (usually one: scalars cost less than arrays of one)
+        alone = np.flatnonzero((load > 0.0) & np.concatenate(([True], load[:-1] <= 0.0)))
+        for k in alone.tolist():
+            clearance = max(float(centre_gap[k]), 1e-12 * pin.radius)
+            conformal[k] = clearance + _conformal_depth(
+                contour, pin.radius, law, float(load[k]), clearance
+            )
     else:
-        guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), np.zeros(m)
+        guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), known.zeros
         if guess.size != m:
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
     floats = np.zeros((6, m))
-    counts = np.zeros((4, m), dtype=np.int64)
-    wear_ext = np.zeros(padded.size)
+    counts = np.zeros((5, m), dtype=np.int64)
+    work = known.scratch(module)
+    wear_ext = np.zeros(known.padded.size)
+    wear = np.zeros(contour.nodes)
     solver = (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), _curvature(law))
-    module.revolution(
+    failed, widest = module.revolution(
         load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
-        floats, counts, wear_ext,
+        floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
+        work[5].view(np.int64),
     )  # fmt: skip
     offset, total, tangential, left, right, peak = floats
-    _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
-    wear = np.bincount(padded, weights=wear_ext, minlength=contour.nodes)
-    wear *= wear_coefficient * law.coefficient
-    widest = max(float(left.max(initial=0.0)), float(right.max(initial=0.0)))
+    np.multiply(counts[4].view(np.float64), law.coefficient, out=peak)
+    if failed:
+        _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
 
     def dense() -> FloatArray:
         pressure = np.zeros((m, contour.nodes))
-        module.dense_pressure(offset, load, nodes, grid, lines, pressure)
+        # its own scratch: it may be read long after, from any thread
+        module.dense_pressure(
+            offset, load, nodes, grid, lines, pressure, module.scratch(known.quarter)
+        )
         return pressure
 
     return RevolutionWear(
         wear=wear,
         offset=offset,
-        window=int(np.ceil(widest / contour.dtheta) + 3),
+        window=math.ceil(widest / contour.dtheta) + 3,
         iterations=counts[0],
         half_angle_left=left,
         half_angle_right=right,
@@ -305,14 +351,14 @@ def revolution_wear(
 def _arguments(contour, pin, load, azimuth, law, max_penetration):
     """The compiled kernel's tuples (see :mod:`jointwear.contact._compiled`).
 
-    Returns ``nodes``, ``grid``, ``lines``, the gap on each load line [m] and the node
-    of every position of the padded arrays.
+    Returns ``nodes``, ``grid``, ``lines``, the gap on each load line [m] and the
+    :class:`_Lines` of the azimuths.
     """
     lines = _lines(contour.nodes, azimuth)
     radius = contour.radius
     rp = pin.radius
     m = load.size
-    centre_radius = lines.stencil(radius)
+    centre_radius = lines.centre_radius(radius)
     centre_gap = centre_radius - rp
     spring = contour.dtheta * contour.axial_length
     # r - R_p is exact (Sterbenz); the symmetric law's springs lie on the circle through
@@ -328,18 +374,19 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
             check_reach(np.full(m, smallest), load, azimuth, rp)
         gap_min = np.full(m, smallest)
     if law.force_area is not None:
-        area_ext, load_area = np.full(lines.padded.size, float(law.force_area)), lines.ones
+        area_ext, load_area = lines.filled(float(law.force_area)), lines.ones
     elif law.symmetric:
-        area_ext, load_area = np.full(lines.padded.size, spring), centre_radius
+        area_ext, load_area = lines.filled(spring), centre_radius
     else:
         area_ext, load_area = padded_radius * spring, lines.ones
     # the bracket: no node touches at the smallest gap; the pin's reach or the wall
     lower = gap_min
-    upper = np.full(m, 0.999 * rp)
     if max_penetration is not None:
-        np.minimum(upper, centre_gap + max_penetration, out=upper)
+        upper = np.minimum(centre_gap + max_penetration, 0.999 * rp)
+    else:
+        upper = np.full(m, 0.999 * rp)
     np.maximum(upper, lower, out=upper)
-    nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o)
+    nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o, lines.half_cos)
     grid = (
         lines.pad, lines.quarter, contour.dtheta, float(rp), float(law.exponent),
         float(law.coefficient),
@@ -348,7 +395,7 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
         lines.centre, lines.cos_shift, lines.sin_shift, load_gap, load_area, gap_min, lower,
         upper, lines.shift,
     )  # fmt: skip
-    return nodes, grid, per_load, centre_gap, lines.padded
+    return nodes, grid, per_load, centre_gap, lines
 
 
 def _numpy_revolution(

@@ -219,13 +219,18 @@ def wear_width(wear_depth: ArrayLike, threshold: float = 0.01) -> float:
     if not peak > 0:
         return 0.0
     above = depth - threshold * peak
-    after = np.roll(above, -1)
-    both = (above > 0) & (after > 0)
-    crossing = (above > 0) != (after > 0)
-    positive = np.where(above > 0, above, after)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        fraction = np.where(crossing, positive / np.abs(above - after), 0.0)
-    width = (np.count_nonzero(both) + fraction.sum()) * 2 * np.pi / depth.size
+    inside = above > 0
+    # the few intervals that cross the threshold (one end in, one out, so |a - b| > 0),
+    # the last one periodic
+    crossing = np.flatnonzero(inside[:-1] != inside[1:])
+    if inside[-1] != inside[0]:
+        crossing = np.append(crossing, depth.size - 1)
+    # crossings alternate in and out: half of them leave an interval that started inside
+    both = np.count_nonzero(inside) - crossing.size // 2
+    here = above[crossing]
+    there = above.take(crossing + 1, mode="wrap")
+    fraction = np.maximum(here, there) / np.abs(here - there)
+    width = (both + fraction.sum()) * 2 * np.pi / depth.size
     return float(min(width, 2 * np.pi))  # all worn: exactly 2 pi, not one ulp more
 
 
@@ -262,7 +267,9 @@ def worn_area(original_radius: float | ArrayLike, wear_depth: ArrayLike) -> floa
         Radial wear depth [m].
     """
     depth = np.asarray(wear_depth, dtype=float)
-    original = np.broadcast_to(np.asarray(original_radius, dtype=float), depth.shape)
+    original = np.asarray(original_radius, dtype=float)
+    if original.ndim:  # (a scalar radius broadcasts by itself)
+        original = np.broadcast_to(original, depth.shape)
     return float(0.5 * np.sum(depth * (2 * original + depth)) * 2 * np.pi / depth.size)
 
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Any
 
@@ -45,10 +46,14 @@ def checked_loads(load: ArrayLike, azimuth: ArrayLike) -> tuple[FloatArray, Floa
         azimuth = azimuth.copy()
     else:
         azimuth = np.broadcast_to(azimuth, load.shape).copy()
-    if not (np.isfinite(load).all() and np.isfinite(azimuth).all()):
-        raise ContactError("load: loads and azimuths must be finite")
-    if (load < 0).any():
-        raise ContactError("load: must be >= 0 (the azimuth gives the direction)")
+    if load.size:
+        # NaN propagates into the extremes: two reductions check every load
+        low, high = float(load.min()), float(load.max())
+        finite = math.isfinite(low) and math.isfinite(high)
+        if not (finite and np.isfinite(azimuth).all()):
+            raise ContactError("load: loads and azimuths must be finite")
+        if low < 0:
+            raise ContactError("load: must be >= 0 (the azimuth gives the direction)")
     return load, azimuth
 
 
@@ -272,6 +277,8 @@ def check_reach(lower: FloatArray, load: FloatArray, azimuth: FloatArray, pin_ra
     The ray geometry needs ``|e| < R_p``: a radial gap ``lower`` [m] as wide as the pin
     (radius ``pin_radius`` [m]) is out of its reach; ``load`` [N], ``azimuth`` [rad].
     """
+    if not np.any(lower >= 0.999 * pin_radius):
+        return
     out_of_reach = (lower >= 0.999 * pin_radius) & (load > 0)
     if np.any(out_of_reach):
         i = int(np.flatnonzero(out_of_reach)[0])
