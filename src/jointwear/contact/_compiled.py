@@ -337,9 +337,60 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     return s, total, slope, width, max_iterations, False
 
 
+@njit(inline="always", **_FLAGS)
+def _prepare(load, radius, built, nodes, grid, lines):
+    """Build the contour's arguments in place (a warm revolution): False for an input the
+    caller must check (a load not finite or negative, a pin that does not fit, a load
+    line out of the pin's reach).
+
+    ``built``: ``(mode, area, below, above, weight, rest, padded, centre_gap, spring,
+    reach)``, ``mode`` 0 (the arguments are given), 1 (springs on the circle through each
+    compression centre) or 2 (springs on the contour); ``area``: the spring areas follow
+    the radius (no fixed force area); the radius stencil of each load line (``rest`` is
+    ``1 - weight``); the padded positions' nodes; ``centre_gap`` (out) [m]; the spring
+    area per unit radius [m] and the largest penetration [m]. Each array is the one the
+    NumPy expressions of :func:`jointwear.contact.kernel._arguments` give.
+    """
+    mode, area, below, above, weight, rest, padded, centre_gap, spring, reach = built
+    gap_ext, area_ext = nodes[0], nodes[1]
+    load_gap, load_area, gap_min, upper = lines[3], lines[4], lines[5], lines[7]
+    rp = grid[3]
+    wall = 0.999 * rp
+    smallest = np.inf
+    for j in range(radius.size):
+        smallest = min(smallest, radius[j])
+    if not rp < smallest:
+        return False
+    bad = 0
+    for k in range(load.size):
+        force = load[k]
+        bad += not (0.0 <= force < np.inf)
+        centre = rest[k] * radius[below[k]] + weight[k] * radius[above[k]]
+        gap = centre - rp
+        centre_gap[k] = gap
+        if mode == 1:
+            load_gap[k] = gap
+            gap_min[k] = gap
+            if area:
+                load_area[k] = centre
+            bad += gap >= wall and force > 0.0
+        else:
+            gap_min[k] = smallest - rp
+        upper[k] = max(min(gap + reach, wall), gap_min[k])
+    if mode == 2:
+        if smallest - rp >= wall:
+            return False
+        for i in range(padded.size):
+            r = radius[padded[i]]
+            gap_ext[i] = r - rp
+            if area:
+                area_ext[i] = r * spring
+    return bad == 0
+
+
 @njit(_nrt=False, **_FLAGS)
 def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
-               floats, counts, wear_ext, scale, wear, work, press_bits):  # fmt: skip
+               floats, counts, wear_ext, scale, wear, work, press_bits, radius, built):  # fmt: skip
     """Balance every load of a revolution and add its wear ``p ds / k`` per node.
 
     Loads are solved in order. With ``have_guess`` each starts from ``guess`` [m];
@@ -358,8 +409,14 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     >= 0``: the bits order as the integers; an integer max reduction vectorises, a
     floating-point one does not, 4x slower), come from the caller.
 
+    With ``built[0]`` non-zero the contour's arguments are first built from ``radius``
+    [m] (:func:`_prepare`); for an input that fails its checks nothing else is done and
+    the number of loads not balanced is -1.
+
     Returns the number of loads not balanced and the widest contact half-angle [rad].
     """
+    if built[0] != 0 and not _prepare(load, radius, built, nodes, grid, lines):
+        return -1, 0.0
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
     pad, quarter, dtheta = grid[0], grid[1], grid[2]

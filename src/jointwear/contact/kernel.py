@@ -166,8 +166,11 @@ class _Lines:
         self.centre = np.rint(wrapped / dtheta).astype(np.int64)
         self.shift = self.centre * dtheta - wrapped
         self.cos_shift, self.sin_shift = np.cos(self.shift), np.sin(self.shift)
+        #: the azimuths this is cached for (the key's bytes): a warm revolution's context
+        self.azimuth = azimuth.copy()
+        self.finite = bool(np.isfinite(azimuth).all())
         self.stencil = RadiusStencil.at(nodes, wrapped)
-        self._lower_weight = 1 - self.stencil.weight
+        self.lower_weight = 1 - self.stencil.weight
         self.quarter = nodes // 4
         self.pad = self.quarter + 1
         offsets = np.arange(-self.quarter, self.quarter + 1)
@@ -184,11 +187,29 @@ class _Lines:
         self.zeros_padded = np.zeros(self.padded.size)
         self._filled: dict[float, FloatArray] = {}
         self._scratch = threading.local()
+        #: the kernel's ``built`` where the arguments are given (its types as a warm one's)
+        self.given = (
+            0, False, self.stencil.lower, self.stencil.upper, self.stencil.weight,
+            self.lower_weight, self.padded, self.zeros, 0.0, 0.0,
+        )  # fmt: skip
+
+    def arguments(self, dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
+                  upper):  # fmt: skip
+        """The compiled kernel's ``nodes``, ``grid`` and ``lines`` from the contour's arrays."""
+        nodes = (gap_ext, area_ext, self.cos_o, self.sin_o, self.half_cos)
+        grid = (
+            self.pad, self.quarter, dtheta, rp, float(law.exponent), float(law.coefficient),
+        )  # fmt: skip
+        lines = (
+            self.centre, self.cos_shift, self.sin_shift, load_gap, load_area, gap_min, lower,
+            upper, self.shift,
+        )  # fmt: skip
+        return nodes, grid, lines
 
     def centre_radius(self, radius: FloatArray) -> FloatArray:
         """The radius on each load line [m]: ``self.stencil(radius)``, its weights kept."""
         stencil = self.stencil
-        return self._lower_weight * radius.take(stencil.lower) + stencil.weight * radius.take(
+        return self.lower_weight * radius.take(stencil.lower) + stencil.weight * radius.take(
             stencil.upper
         )
 
@@ -283,6 +304,13 @@ def revolution_wear(
             contour, pin, load, azimuth, sliding_distance, law, wear_coefficient,
             max_penetration, initial_offset, window, tolerance, max_iterations,
         )  # fmt: skip
+    if initial_offset is not None:
+        result = _warm_revolution(
+            module, contour, pin, load, azimuth, sliding_distance, law, wear_coefficient,
+            max_penetration, initial_offset, tolerance, max_iterations,
+        )  # fmt: skip
+        if result is not None:
+            return result
     load, azimuth = checked_loads(load, azimuth)
     m = load.size
     sliding = np.asarray(sliding_distance, dtype=float).ravel()
@@ -307,6 +335,72 @@ def revolution_wear(
         guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), known.zeros
         if guess.size != m:
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
+    built = known.given
+    return _run(
+        module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
+        tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known,
+        built,
+    )  # fmt: skip
+
+
+def _warm_revolution(
+    module, contour, pin, load, azimuth, sliding, law, wear_coefficient, max_penetration,
+    initial_offset, tolerance, max_iterations,
+):  # fmt: skip
+    """:func:`revolution_wear` from guesses with the contour's arguments built and the
+    input checked by the compiled kernel (a dozen NumPy calls less).
+
+    None where the inputs are not plain float arrays of one length, or fail a check (the
+    general path then raises its error).
+    """
+    arrays = (load, azimuth, sliding, initial_offset)
+    if not all(type(a) is np.ndarray and a.dtype == np.float64 and a.ndim == 1 for a in arrays):
+        return None
+    m = load.size
+    if not (azimuth.size == sliding.size == initial_offset.size == m):
+        return None
+    known = _lines(contour.nodes, azimuth)
+    if not known.finite:
+        return None
+    rp = float(pin.radius)
+    spring = contour.dtheta * contour.axial_length
+    centre_gap = np.empty(m)
+    upper = np.empty(m)
+    # the arrays the kernel fills: as _arguments, whose NumPy expressions it evaluates
+    if law.symmetric:
+        gap_ext, load_gap, gap_min = known.zeros_padded, centre_gap, centre_gap
+        area_ext = known.filled(spring if law.force_area is None else float(law.force_area))
+        load_area = np.empty(m) if law.force_area is None else known.ones
+    else:
+        gap_ext, load_gap, gap_min = np.empty(known.padded.size), known.zeros, np.empty(m)
+        if law.force_area is None:
+            area_ext = np.empty(known.padded.size)
+        else:
+            area_ext = known.filled(float(law.force_area))
+        load_area = known.ones
+    nodes, grid, lines = known.arguments(
+        contour.dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
+    )
+    stencil = known.stencil
+    built = (
+        1 if law.symmetric else 2, law.force_area is None, stencil.lower, stencil.upper,
+        stencil.weight, known.lower_weight, known.padded, centre_gap, spring,
+        np.inf if max_penetration is None else float(max_penetration),
+    )  # fmt: skip
+    return _run(
+        module, contour, pin, load, known.azimuth, sliding, law, wear_coefficient,
+        initial_offset, tolerance, max_iterations, initial_offset, known.zeros, nodes, grid,
+        lines, centre_gap, known, built,
+    )  # fmt: skip
+
+
+def _run(
+    module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
+    tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known, built,
+):  # fmt: skip
+    """The compiled revolution and its :class:`RevolutionWear` (None: ``built`` failed a
+    check)."""
+    m = load.size
     floats = np.zeros((6, m))
     counts = np.zeros((5, m), dtype=np.int64)
     work = known.scratch(module)
@@ -316,8 +410,10 @@ def revolution_wear(
     failed, widest = module.revolution(
         load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
         floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
-        work[5].view(np.int64),
+        work[5].view(np.int64), contour.radius, built,
     )  # fmt: skip
+    if failed < 0:
+        return None
     offset, total, tangential, left, right, peak = floats
     np.multiply(counts[4].view(np.float64), law.coefficient, out=peak)
     if failed:
@@ -386,14 +482,9 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
     else:
         upper = np.full(m, 0.999 * rp)
     np.maximum(upper, lower, out=upper)
-    nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o, lines.half_cos)
-    grid = (
-        lines.pad, lines.quarter, contour.dtheta, float(rp), float(law.exponent),
-        float(law.coefficient),
-    )  # fmt: skip
-    per_load = (
-        lines.centre, lines.cos_shift, lines.sin_shift, load_gap, load_area, gap_min, lower,
-        upper, lines.shift,
+    nodes, grid, per_load = lines.arguments(
+        contour.dtheta, float(rp), law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
+        upper,
     )  # fmt: skip
     return nodes, grid, per_load, centre_gap, lines
 
