@@ -201,15 +201,23 @@ def _springs(s, nodes, grid, line, width, work, law, terms):
 
 
 @njit(inline="always", **_FLAGS)
-def _springs_moved(step, width, work, law):
+def _springs_moved(step, width, work, law, wear, start, ds, speculate):
     """:func:`_springs` after a small step [m] from the last evaluation, without geometry or
     pin curvature: ``delta_j += step delta_j' + step^2 delta_j'' / 2`` and ``delta_j' +=
     step delta_j''``, with ``delta_j''`` of the last full evaluation (the neglected terms
-    are below ``eps s / 16`` within ``_REUSE R_p`` of it, see :func:`_balance`)."""
-    depth, slopes, bends, weights, _, press = work
+    are below ``eps s / 16`` within ``_REUSE R_p`` of it, see :func:`_balance`).
+
+    With ``speculate`` (a literal) the state's wear ``p ds / k`` is added to ``wear`` (the
+    window from ``start``) in the same pass, and its tangential force summed: a warm
+    start's step is nearly always the accepted one (:func:`_unsettle` takes it back).
+    Returns force, slope, curvature and tangential force (0 without ``speculate``).
+    """
+    depth, slopes, bends, weights, sides, press = work
     total = 0.0
     slope = 0.0
     second = 0.0
+    sideways = 0.0
+    offset = uint64(start)
     half = 0.5 * step
     for j in range(uint64(2 * width + 1)):
         weight, along, bend = weights[j], slopes[j], bends[j]
@@ -220,12 +228,25 @@ def _springs_moved(step, width, work, law):
         slope += weight * stiffness * along
         if law == _LINEAR:
             second += weight * stiffness * bend
+        if speculate:
+            wear[offset + j] += ds * p
+            sideways += sides[j] * p
         depth[j] = d
         slopes[j] = along
         press[j] = p
     if law == _HERTZIAN:
         second = np.nan
-    return total, slope, second
+    return total, slope, second, sideways
+
+
+@njit(inline="always", **_FLAGS)
+def _unsettle(work, wear, start, width, ds):
+    """Take back the wear :func:`_springs_moved` added speculatively (the state in
+    ``work``)."""
+    press = work[_PRESS]
+    offset = uint64(start)
+    for j in range(uint64(2 * width + 1)):
+        wear[offset + j] -= ds * press[j]
 
 
 @njit(inline="always", **_FLAGS)
@@ -260,16 +281,22 @@ def _step(s, f, slope, total, second, curvature):
 
 
 @njit(inline="always", **_FLAGS)
-def _moves(law, step, width, work):
-    """:func:`_springs_moved` with the law as a literal."""
+def _moves(law, step, width, work, wear, start, ds, speculate):
+    """:func:`_springs_moved` with the law and ``speculate`` as literals."""
+    if speculate:
+        if law == _LINEAR:
+            return _springs_moved(step, width, work, _LINEAR, wear, start, ds, True)
+        return _springs_moved(step, width, work, _HERTZIAN, wear, start, ds, True)
     if law == _LINEAR:
-        return _springs_moved(step, width, work, _LINEAR)
-    return _springs_moved(step, width, work, _HERTZIAN)
+        return _springs_moved(step, width, work, _LINEAR, wear, start, ds, False)
+    return _springs_moved(step, width, work, _HERTZIAN, wear, start, ds, False)
 
 
 @njit(inline="always", **_FLAGS)
-def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hint, cold):
-    """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
+def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hint, cold,
+             wear, ds):  # fmt: skip
+    """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok,
+    tangential force [N] or NaN).
 
     Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
     floor); or a residual that ``ulps`` units in the last place of ``s`` explain, where
@@ -281,7 +308,10 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     Steps that stay within ``_REUSE R_p`` in all of the last full evaluation (and within
     its window) move the depths by their Taylor polynomial (:func:`_springs_moved`): the
     pin-curvature term's third derivative is at most ``6.2 s / R_p^3`` for ``s <= R_p /
-    2``, so the neglected cubic terms stay below ``eps s / 16``.
+    2``, so the neglected cubic terms stay below ``eps s / 16``. From a guess (not
+    ``cold``) these steps add the state's wear to ``wear`` (``ds`` [m]) as they go: where
+    the state returned is one of them its wear is in ``wear`` and its tangential force is
+    returned, else NaN and no wear was added.
     """
     atol, ulps, max_iterations, curvature = solver
     quarter, rp, exponent = grid[1], grid[3], grid[4]
@@ -297,11 +327,20 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     small = _REUSE * rp if s <= 0.5 * rp else 0.0
     law = _LINEAR if exponent == 1.0 else _HERTZIAN
     previous = np.nan
+    sideways = np.nan
+    base = line[0]
     for it in range(1, max_iterations + 1):
         step = s - previous
+        if sideways == sideways:  # the last state's wear was added: not accepted
+            _unsettle(work, wear, base - width, width, ds)
+            sideways = np.nan
         if travel + abs(step) <= small and s <= limit:
             travel += abs(step)
-            total, slope, second = _moves(law, step, width, work)
+            total, slope, second, sideways = _moves(
+                law, step, width, work, wear, base - width, ds, not cold
+            )
+            if cold:
+                sideways = np.nan
         else:
             width = _reach(s, gap_min, half_cos, quarter, hint)
             hint = width - 1
@@ -314,14 +353,14 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
         f = total - load
         error = abs(f)
         if error <= max(atol, 8.0 * _EPS * total):
-            return s, total, slope, width, it, True
+            return s, total, slope, width, it, True, sideways
         if slope > 0.0 and error <= ulps * _EPS * abs(s) * slope:
             # a residual a few ulp of s explain: accept it if Newton's step is below one
             # ulp (it would round to s, and a step rejected by the bracket would bisect
             # a wide one), else after one more step
             hits += 1
             if hits >= 2 or error <= _EPS * abs(s) * slope:
-                return s, total, slope, width, it, True
+                return s, total, slope, width, it, True, sideways
         if f < 0.0:
             lo = s
         else:
@@ -332,20 +371,22 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
         bracket = hi - lo
         ulp = _EPS * abs(s)
         if bracket <= 4.0 * max(ulp, 1e-300):
-            return s, total, slope, width, it, error <= 2.0 * slope * max(bracket, ulp)
+            ok = error <= 2.0 * slope * max(bracket, ulp)
+            return s, total, slope, width, it, ok, sideways
         s = new
-    return s, total, slope, width, max_iterations, False
+    return s, total, slope, width, max_iterations, False, sideways
 
 
-@njit(inline="always", **_FLAGS)
-def _prepare(load, radius, built, nodes, grid, lines):
-    """Build the contour's arguments in place (a warm revolution): False for an input the
-    caller must check (a load not finite or negative, a pin that does not fit, a load
-    line out of the pin's reach).
+@njit(_nrt=False, **_FLAGS)
+def prepare(load, radius, built, nodes, grid, lines):
+    """Build the contour's arguments of :func:`revolution` in place (a warm revolution; its
+    own function: inlined into :func:`revolution` it slowed the loop down, a cold
+    revolution by some 5 %): False for an input the caller must check (a load not finite
+    or negative, a pin that does not fit, a load line out of the pin's reach).
 
     ``built``: ``(mode, area, below, above, weight, rest, padded, centre_gap, spring,
-    reach)``, ``mode`` 0 (the arguments are given), 1 (springs on the circle through each
-    compression centre) or 2 (springs on the contour); ``area``: the spring areas follow
+    reach)``, ``mode`` 1 (springs on the circle through each compression centre) or 2
+    (springs on the contour); ``area``: the spring areas follow
     the radius (no fixed force area); the radius stencil of each load line (``rest`` is
     ``1 - weight``); the padded positions' nodes; ``centre_gap`` (out) [m]; the spring
     area per unit radius [m] and the largest penetration [m]. Each array is the one the
@@ -390,7 +431,7 @@ def _prepare(load, radius, built, nodes, grid, lines):
 
 @njit(_nrt=False, **_FLAGS)
 def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
-               floats, counts, wear_ext, scale, wear, work, press_bits, radius, built):  # fmt: skip
+               floats, counts, wear_ext, scale, wear, work, press_bits):  # fmt: skip
     """Balance every load of a revolution and add its wear ``p ds / k`` per node.
 
     Loads are solved in order. With ``have_guess`` each starts from ``guess`` [m];
@@ -409,14 +450,8 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     >= 0``: the bits order as the integers; an integer max reduction vectorises, a
     floating-point one does not, 4x slower), come from the caller.
 
-    With ``built[0]`` non-zero the contour's arguments are first built from ``radius``
-    [m] (:func:`_prepare`); for an input that fails its checks nothing else is done and
-    the number of loads not balanced is -1.
-
     Returns the number of loads not balanced and the widest contact half-angle [rad].
     """
-    if built[0] != 0 and not _prepare(load, radius, built, nodes, grid, lines):
-        return -1, 0.0
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
     pad, quarter, dtheta = grid[0], grid[1], grid[2]
@@ -448,9 +483,9 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
             s = predicted + drift
         else:
             s = conformal[k]
-        s, total, slope, width, its, ok = _balance(
+        s, total, slope, width, its, ok, sideways = _balance(
             load[k], s, lower[k], upper[k], gap_min[k], nodes, grid, line, solver,
-            work, width - 1, not have_guess,
+            work, width - 1, not have_guess, wear_ext, sliding[k],
         )  # fmt: skip
         floats[0, k] = s
         floats[1, k] = total
@@ -460,7 +495,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         drift = s - predicted if predicted == predicted else 0.0
         # the balanced state is the last evaluation: its wear, resultants and extent
         floats[2, k], top, right, left = _settle(
-            sliding[k], work, press_bits, wear_ext, base - width, width
+            sliding[k], work, press_bits, wear_ext, base - width, width, sideways
         )
         counts[4, k] = top
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
@@ -489,23 +524,29 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
 
 
 @njit(inline="always", **_FLAGS)
-def _settle(ds, work, press_bits, wear, start, width):
+def _settle(ds, work, press_bits, wear, start, width, added):
     """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, bits of the
     peak ``p / k``, springs right and left).
 
     Every node of the window (offsets from ``start``) is added (``p`` is 0 out of
-    contact): no branch. The springs in contact are counted right and left of the centre
-    column.
+    contact): no branch; unless ``added`` is a number, the tangential force of a state
+    whose wear the balance added already. The springs in contact are counted right and
+    left of the centre column.
     """
     depth, _, _, _, sides, press = work
     offset = uint64(start)
-    sideways = 0.0
+    sideways = added
     top = 0
-    for j in range(uint64(2 * width + 1)):
-        p = press[j]
-        wear[offset + j] += ds * p
-        sideways += sides[j] * p
-        top = max(top, press_bits[j])
+    if added == added:
+        for j in range(uint64(2 * width + 1)):
+            top = max(top, press_bits[j])
+    else:
+        sideways = 0.0
+        for j in range(uint64(2 * width + 1)):
+            p = press[j]
+            wear[offset + j] += ds * p
+            sideways += sides[j] * p
+            top = max(top, press_bits[j])
     right = 0
     for j in range(uint64(width)):
         right += 1 if depth[j] > 0.0 else 0

@@ -187,11 +187,6 @@ class _Lines:
         self.zeros_padded = np.zeros(self.padded.size)
         self._filled: dict[float, FloatArray] = {}
         self._scratch = threading.local()
-        #: the kernel's ``built`` where the arguments are given (its types as a warm one's)
-        self.given = (
-            0, False, self.stencil.lower, self.stencil.upper, self.stencil.weight,
-            self.lower_weight, self.padded, self.zeros, 0.0, 0.0,
-        )  # fmt: skip
 
     def arguments(self, dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
                   upper):  # fmt: skip
@@ -335,11 +330,9 @@ def revolution_wear(
         guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), known.zeros
         if guess.size != m:
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
-    built = known.given
     return _run(
         module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
         tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known,
-        built,
     )  # fmt: skip
 
 
@@ -387,19 +380,20 @@ def _warm_revolution(
         stencil.weight, known.lower_weight, known.padded, centre_gap, spring,
         np.inf if max_penetration is None else float(max_penetration),
     )  # fmt: skip
+    if not module.prepare(load, contour.radius, built, nodes, grid, lines):
+        return None
     return _run(
         module, contour, pin, load, known.azimuth, sliding, law, wear_coefficient,
         initial_offset, tolerance, max_iterations, initial_offset, known.zeros, nodes, grid,
-        lines, centre_gap, known, built,
+        lines, centre_gap, known,
     )  # fmt: skip
 
 
 def _run(
     module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
-    tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known, built,
+    tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known,
 ):  # fmt: skip
-    """The compiled revolution and its :class:`RevolutionWear` (None: ``built`` failed a
-    check)."""
+    """The compiled revolution and its :class:`RevolutionWear`."""
     m = load.size
     floats = np.zeros((6, m))
     counts = np.zeros((5, m), dtype=np.int64)
@@ -410,10 +404,8 @@ def _run(
     failed, widest = module.revolution(
         load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
         floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
-        work[5].view(np.int64), contour.radius, built,
+        work[5].view(np.int64),
     )  # fmt: skip
-    if failed < 0:
-        return None
     offset, total, tangential, left, right, peak = floats
     np.multiply(counts[4].view(np.float64), law.coefficient, out=peak)
     if failed:
