@@ -201,23 +201,15 @@ def _springs(s, nodes, grid, line, width, work, law, terms):
 
 
 @njit(inline="always", **_FLAGS)
-def _springs_moved(step, width, work, law, wear, start, ds, speculate):
+def _springs_moved(step, width, work, law):
     """:func:`_springs` after a small step [m] from the last evaluation, without geometry or
     pin curvature: ``delta_j += step delta_j' + step^2 delta_j'' / 2`` and ``delta_j' +=
     step delta_j''``, with ``delta_j''`` of the last full evaluation (the neglected terms
-    are below ``eps s / 16`` within ``_REUSE R_p`` of it, see :func:`_balance`).
-
-    With ``speculate`` (a literal) the state's wear ``p ds / k`` is added to ``wear`` (the
-    window from ``start``) in the same pass, and its tangential force summed: a warm
-    start's step is nearly always the accepted one (:func:`_unsettle` takes it back).
-    Returns force, slope, curvature and tangential force (0 without ``speculate``).
-    """
-    depth, slopes, bends, weights, sides, press = work
+    are below ``eps s / 16`` within ``_REUSE R_p`` of it, see :func:`_balance`)."""
+    depth, slopes, bends, weights, _, press = work
     total = 0.0
     slope = 0.0
     second = 0.0
-    sideways = 0.0
-    offset = uint64(start)
     half = 0.5 * step
     for j in range(uint64(2 * width + 1)):
         weight, along, bend = weights[j], slopes[j], bends[j]
@@ -228,25 +220,12 @@ def _springs_moved(step, width, work, law, wear, start, ds, speculate):
         slope += weight * stiffness * along
         if law == _LINEAR:
             second += weight * stiffness * bend
-        if speculate:
-            wear[offset + j] += ds * p
-            sideways += sides[j] * p
         depth[j] = d
         slopes[j] = along
         press[j] = p
     if law == _HERTZIAN:
         second = np.nan
-    return total, slope, second, sideways
-
-
-@njit(inline="always", **_FLAGS)
-def _unsettle(work, wear, start, width, ds):
-    """Take back the wear :func:`_springs_moved` added speculatively (the state in
-    ``work``)."""
-    press = work[_PRESS]
-    offset = uint64(start)
-    for j in range(uint64(2 * width + 1)):
-        wear[offset + j] -= ds * press[j]
+    return total, slope, second
 
 
 @njit(inline="always", **_FLAGS)
@@ -281,22 +260,16 @@ def _step(s, f, slope, total, second, curvature):
 
 
 @njit(inline="always", **_FLAGS)
-def _moves(law, step, width, work, wear, start, ds, speculate):
-    """:func:`_springs_moved` with the law and ``speculate`` as literals."""
-    if speculate:
-        if law == _LINEAR:
-            return _springs_moved(step, width, work, _LINEAR, wear, start, ds, True)
-        return _springs_moved(step, width, work, _HERTZIAN, wear, start, ds, True)
+def _moves(law, step, width, work):
+    """:func:`_springs_moved` with the law as a literal."""
     if law == _LINEAR:
-        return _springs_moved(step, width, work, _LINEAR, wear, start, ds, False)
-    return _springs_moved(step, width, work, _HERTZIAN, wear, start, ds, False)
+        return _springs_moved(step, width, work, _LINEAR)
+    return _springs_moved(step, width, work, _HERTZIAN)
 
 
 @njit(inline="always", **_FLAGS)
-def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hint, cold,
-             wear, ds):  # fmt: skip
-    """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok,
-    tangential force [N] or NaN).
+def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hint, cold):
+    """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
 
     Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
     floor); or a residual that ``ulps`` units in the last place of ``s`` explain, where
@@ -308,10 +281,7 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     Steps that stay within ``_REUSE R_p`` in all of the last full evaluation (and within
     its window) move the depths by their Taylor polynomial (:func:`_springs_moved`): the
     pin-curvature term's third derivative is at most ``6.2 s / R_p^3`` for ``s <= R_p /
-    2``, so the neglected cubic terms stay below ``eps s / 16``. From a guess (not
-    ``cold``) these steps add the state's wear to ``wear`` (``ds`` [m]) as they go: where
-    the state returned is one of them its wear is in ``wear`` and its tangential force is
-    returned, else NaN and no wear was added.
+    2``, so the neglected cubic terms stay below ``eps s / 16``.
     """
     atol, ulps, max_iterations, curvature = solver
     quarter, rp, exponent = grid[1], grid[3], grid[4]
@@ -327,20 +297,11 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     small = _REUSE * rp if s <= 0.5 * rp else 0.0
     law = _LINEAR if exponent == 1.0 else _HERTZIAN
     previous = np.nan
-    sideways = np.nan
-    base = line[0]
     for it in range(1, max_iterations + 1):
         step = s - previous
-        if sideways == sideways:  # the last state's wear was added: not accepted
-            _unsettle(work, wear, base - width, width, ds)
-            sideways = np.nan
         if travel + abs(step) <= small and s <= limit:
             travel += abs(step)
-            total, slope, second, sideways = _moves(
-                law, step, width, work, wear, base - width, ds, not cold
-            )
-            if cold:
-                sideways = np.nan
+            total, slope, second = _moves(law, step, width, work)
         else:
             width = _reach(s, gap_min, half_cos, quarter, hint)
             hint = width - 1
@@ -353,14 +314,14 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
         f = total - load
         error = abs(f)
         if error <= max(atol, 8.0 * _EPS * total):
-            return s, total, slope, width, it, True, sideways
+            return s, total, slope, width, it, True
         if slope > 0.0 and error <= ulps * _EPS * abs(s) * slope:
             # a residual a few ulp of s explain: accept it if Newton's step is below one
             # ulp (it would round to s, and a step rejected by the bracket would bisect
             # a wide one), else after one more step
             hits += 1
             if hits >= 2 or error <= _EPS * abs(s) * slope:
-                return s, total, slope, width, it, True, sideways
+                return s, total, slope, width, it, True
         if f < 0.0:
             lo = s
         else:
@@ -371,62 +332,9 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
         bracket = hi - lo
         ulp = _EPS * abs(s)
         if bracket <= 4.0 * max(ulp, 1e-300):
-            ok = error <= 2.0 * slope * max(bracket, ulp)
-            return s, total, slope, width, it, ok, sideways
+            return s, total, slope, width, it, error <= 2.0 * slope * max(bracket, ulp)
         s = new
-    return s, total, slope, width, max_iterations, False, sideways
-
-
-@njit(_nrt=False, **_FLAGS)
-def prepare(load, radius, built, nodes, grid, lines):
-    """Build the contour's arguments of :func:`revolution` in place (a warm revolution; its
-    own function: inlined into :func:`revolution` it slowed the loop down, a cold
-    revolution by some 5 %): False for an input the caller must check (a load not finite
-    or negative, a pin that does not fit, a load line out of the pin's reach).
-
-    ``built``: ``(mode, area, below, above, weight, rest, padded, centre_gap, spring,
-    reach)``, ``mode`` 1 (springs on the circle through each compression centre) or 2
-    (springs on the contour); ``area``: the spring areas follow
-    the radius (no fixed force area); the radius stencil of each load line (``rest`` is
-    ``1 - weight``); the padded positions' nodes; ``centre_gap`` (out) [m]; the spring
-    area per unit radius [m] and the largest penetration [m]. Each array is the one the
-    NumPy expressions of :func:`jointwear.contact.kernel._arguments` give.
-    """
-    mode, area, below, above, weight, rest, padded, centre_gap, spring, reach = built
-    gap_ext, area_ext = nodes[0], nodes[1]
-    load_gap, load_area, gap_min, upper = lines[3], lines[4], lines[5], lines[7]
-    rp = grid[3]
-    wall = 0.999 * rp
-    smallest = np.inf
-    for j in range(radius.size):
-        smallest = min(smallest, radius[j])
-    if not rp < smallest:
-        return False
-    bad = 0
-    for k in range(load.size):
-        force = load[k]
-        bad += not (0.0 <= force < np.inf)
-        centre = rest[k] * radius[below[k]] + weight[k] * radius[above[k]]
-        gap = centre - rp
-        centre_gap[k] = gap
-        if mode == 1:
-            load_gap[k] = gap
-            gap_min[k] = gap
-            if area:
-                load_area[k] = centre
-            bad += gap >= wall and force > 0.0
-        else:
-            gap_min[k] = smallest - rp
-        upper[k] = max(min(gap + reach, wall), gap_min[k])
-    if mode == 2:
-        if smallest - rp >= wall:
-            return False
-        for i in range(padded.size):
-            r = radius[padded[i]]
-            gap_ext[i] = r - rp
-            if area:
-                area_ext[i] = r * spring
-    return bad == 0
+    return s, total, slope, width, max_iterations, False
 
 
 @njit(_nrt=False, **_FLAGS)
@@ -483,9 +391,9 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
             s = predicted + drift
         else:
             s = conformal[k]
-        s, total, slope, width, its, ok, sideways = _balance(
+        s, total, slope, width, its, ok = _balance(
             load[k], s, lower[k], upper[k], gap_min[k], nodes, grid, line, solver,
-            work, width - 1, not have_guess, wear_ext, sliding[k],
+            work, width - 1, not have_guess,
         )  # fmt: skip
         floats[0, k] = s
         floats[1, k] = total
@@ -495,7 +403,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         drift = s - predicted if predicted == predicted else 0.0
         # the balanced state is the last evaluation: its wear, resultants and extent
         floats[2, k], top, right, left = _settle(
-            sliding[k], work, press_bits, wear_ext, base - width, width, sideways
+            sliding[k], work, press_bits, wear_ext, base - width, width
         )
         counts[4, k] = top
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
@@ -524,29 +432,23 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
 
 
 @njit(inline="always", **_FLAGS)
-def _settle(ds, work, press_bits, wear, start, width, added):
+def _settle(ds, work, press_bits, wear, start, width):
     """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, bits of the
     peak ``p / k``, springs right and left).
 
     Every node of the window (offsets from ``start``) is added (``p`` is 0 out of
-    contact): no branch; unless ``added`` is a number, the tangential force of a state
-    whose wear the balance added already. The springs in contact are counted right and
-    left of the centre column.
+    contact): no branch. The springs in contact are counted right and left of the centre
+    column.
     """
     depth, _, _, _, sides, press = work
     offset = uint64(start)
-    sideways = added
+    sideways = 0.0
     top = 0
-    if added == added:
-        for j in range(uint64(2 * width + 1)):
-            top = max(top, press_bits[j])
-    else:
-        sideways = 0.0
-        for j in range(uint64(2 * width + 1)):
-            p = press[j]
-            wear[offset + j] += ds * p
-            sideways += sides[j] * p
-            top = max(top, press_bits[j])
+    for j in range(uint64(2 * width + 1)):
+        p = press[j]
+        wear[offset + j] += ds * p
+        sideways += sides[j] * p
+        top = max(top, press_bits[j])
     right = 0
     for j in range(uint64(width)):
         right += 1 if depth[j] > 0.0 else 0
@@ -616,3 +518,56 @@ def dense_pressure(offset, load, nodes, grid, lines, out, work):
         for o in range(-width, width + 1):
             if work[_DEPTH][o + width] > 0.0:
                 out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS][o + width]
+
+
+@njit(_nrt=False, **_FLAGS)
+def prepare(load, radius, built, nodes, grid, lines):
+    """Build the contour's arguments of :func:`revolution` in place, for a warm revolution:
+    False for an input the caller must check (a load not finite or negative, a pin that
+    does not fit, a load line out of the pin's reach).
+
+    A function of its own: inlined into :func:`revolution` it slowed its loops down (a
+    cold revolution by a few per cent), for a microsecond it saves there.
+    ``built``: ``(mode, area, below, above, weight, rest, padded, centre_gap, spring,
+    reach)``, ``mode`` 1 (springs on the circle through each compression centre) or 2
+    (springs on the contour); ``area``: the spring areas follow the radius (no fixed force
+    area); the radius stencil of each load line (``rest`` is
+    ``1 - weight``); the padded positions' nodes; ``centre_gap`` (out) [m]; the spring
+    area per unit radius [m] and the largest penetration [m]. Each array is the one the
+    NumPy expressions of :func:`jointwear.contact.kernel._arguments` give.
+    """
+    mode, area, below, above, weight, rest, padded, centre_gap, spring, reach = built
+    gap_ext, area_ext = nodes[0], nodes[1]
+    load_gap, load_area, gap_min, upper = lines[3], lines[4], lines[5], lines[7]
+    rp = grid[3]
+    wall = 0.999 * rp
+    smallest = np.inf
+    for j in range(radius.size):
+        smallest = min(smallest, radius[j])
+    if not rp < smallest:
+        return False
+    bad = 0
+    for k in range(load.size):
+        force = load[k]
+        bad += not (0.0 <= force < np.inf)
+        centre = rest[k] * radius[below[k]] + weight[k] * radius[above[k]]
+        gap = centre - rp
+        centre_gap[k] = gap
+        if mode == 1:
+            load_gap[k] = gap
+            gap_min[k] = gap
+            if area:
+                load_area[k] = centre
+            bad += gap >= wall and force > 0.0
+        else:
+            gap_min[k] = smallest - rp
+        upper[k] = max(min(gap + reach, wall), gap_min[k])
+    if mode == 2:
+        if smallest - rp >= wall:
+            return False
+        for i in range(padded.size):
+            r = radius[padded[i]]
+            gap_ext[i] = r - rp
+            if area:
+                area_ext[i] = r * spring
+    return bad == 0
