@@ -102,6 +102,14 @@ class RevolutionWear:
     _solution: ContactSolution | None = None
     _context: Any = None
 
+    @classmethod
+    def _of(cls, **fields: Any) -> RevolutionWear:
+        """The instance of ``fields`` without the frozen dataclass's ``__init__`` (its
+        ``object.__setattr__`` per field cost a few microseconds a revolution)."""
+        instance = object.__new__(cls)
+        vars(instance).update(fields)
+        return instance
+
     def solution(self) -> ContactSolution:
         """The revolution as a :class:`ContactSolution`; the (M, N) pressure, the
         eccentricity and the penetration are assembled when first read."""
@@ -137,10 +145,8 @@ class _WindowSolution(ContactSolution):
     """
 
     def __init__(self, lazy: dict[str, Any], revolution: RevolutionWear, **fields: Any):
-        for name, value in fields.items():
-            object.__setattr__(self, name, value)
-        object.__setattr__(self, "revolution", revolution)
-        object.__setattr__(self, "_lazy", lazy)
+        # the instance's dict at once: frozen, each object.__setattr__ costs its call
+        vars(self).update(fields, revolution=revolution, _lazy=lazy)
 
     def __getattr__(self, name: str) -> Any:
         # only reached for attributes not set yet: a lazy field, on first use
@@ -346,17 +352,21 @@ def _warm_revolution(
     None where the inputs are not plain float arrays of one length, or fail a check (the
     general path then raises its error).
     """
-    arrays = (load, azimuth, sliding, initial_offset)
-    if not all(type(a) is np.ndarray and a.dtype == np.float64 and a.ndim == 1 for a in arrays):
+    ndarray = np.ndarray
+    if not (type(load) is type(azimuth) is type(sliding) is type(initial_offset) is ndarray):
         return None
     m = load.size
-    if not (azimuth.size == sliding.size == initial_offset.size == m):
+    if not (
+        load.dtype == azimuth.dtype == sliding.dtype == initial_offset.dtype == np.float64
+        and load.shape == azimuth.shape == sliding.shape == initial_offset.shape == (m,)
+    ):
         return None
     known = _lines(contour.nodes, azimuth)
     if not known.finite:
         return None
     rp = float(pin.radius)
-    spring = contour.dtheta * contour.axial_length
+    dtheta = contour.dtheta
+    spring = dtheta * contour.axial_length
     centre_gap = np.empty(m)
     upper = np.empty(m)
     # the arrays the kernel fills: as _arguments, whose NumPy expressions it evaluates
@@ -372,7 +382,7 @@ def _warm_revolution(
             area_ext = known.filled(float(law.force_area))
         load_area = known.ones
     nodes, grid, lines = known.arguments(
-        contour.dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
+        dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
     )
     stencil = known.stencil
     built = (
@@ -419,10 +429,10 @@ def _run(
         )
         return pressure
 
-    return RevolutionWear(
+    return RevolutionWear._of(
         wear=wear,
         offset=offset,
-        window=math.ceil(widest / contour.dtheta) + 3,
+        window=math.ceil(widest / grid[2]) + 3,
         iterations=counts[0],
         half_angle_left=left,
         half_angle_right=right,
