@@ -521,25 +521,26 @@ def dense_pressure(offset, load, nodes, grid, lines, out, work):
 
 
 @njit(_nrt=False, **_FLAGS)
-def prepare(load, radius, built, nodes, grid, lines):
+def prepare(load, radius, rp, built, out):
     """Build the contour's arguments of :func:`revolution` in place, for a warm revolution:
     False for an input the caller must check (a load not finite or negative, a pin that
     does not fit, a load line out of the pin's reach).
 
     A function of its own: inlined into :func:`revolution` it slowed its loops down (a
     cold revolution by a few per cent), for a microsecond it saves there.
-    ``built``: ``(mode, area, below, above, weight, rest, padded, centre_gap, spring,
-    reach)``, ``mode`` 1 (springs on the circle through each compression centre) or 2
-    (springs on the contour); ``area``: the spring areas follow the radius (no fixed force
-    area); the radius stencil of each load line (``rest`` is
-    ``1 - weight``); the padded positions' nodes; ``centre_gap`` (out) [m]; the spring
-    area per unit radius [m] and the largest penetration [m]. Each array is the one the
-    NumPy expressions of :func:`jointwear.contact.kernel._arguments` give.
+    ``radius``: the node radii [m]; ``rp``: the pin's [m]. ``built``: ``(mode, area,
+    below, above, weight, rest, padded, spring, reach)``, ``mode`` 1 (springs on the circle
+    through each compression centre) or 2 (springs on the contour); ``area``: the spring
+    areas follow the radius (no fixed force area); the radius stencil of each load line
+    (``rest`` is ``1 - weight``); the padded positions' nodes; the spring area per unit
+    radius [m] and the largest penetration [m]. ``out``: ``(centre_gap, gap_ext,
+    area_ext, load_gap, load_area, gap_min, upper)``, the arrays of :func:`revolution`'s
+    ``nodes`` and ``lines`` it fills (as the NumPy expressions of
+    :func:`jointwear.contact.kernel._arguments`; those a law keeps constant are not
+    written). Plain arrays, not those tuples: a smaller signature compiles faster.
     """
-    mode, area, below, above, weight, rest, padded, centre_gap, spring, reach = built
-    gap_ext, area_ext = nodes[0], nodes[1]
-    load_gap, load_area, gap_min, upper = lines[3], lines[4], lines[5], lines[7]
-    rp = grid[3]
+    mode, area, below, above, weight, rest, padded, spring, reach = built
+    centre_gap, gap_ext, area_ext, load_gap, load_area, gap_min, upper = out
     wall = 0.999 * rp
     smallest = np.inf
     for j in range(radius.size):

@@ -387,10 +387,11 @@ def _warm_revolution(
     stencil = known.stencil
     built = (
         1 if law.symmetric else 2, law.force_area is None, stencil.lower, stencil.upper,
-        stencil.weight, known.lower_weight, known.padded, centre_gap, spring,
+        stencil.weight, known.lower_weight, known.padded, spring,
         np.inf if max_penetration is None else float(max_penetration),
     )  # fmt: skip
-    if not module.prepare(load, contour.radius, built, nodes, grid, lines):
+    out = (centre_gap, gap_ext, area_ext, load_gap, load_area, gap_min, upper)
+    if not module.prepare(load, contour.radius, rp, built, out):
         return None
     return _run(
         module, contour, pin, load, known.azimuth, sliding, law, wear_coefficient,
