@@ -149,6 +149,40 @@ def test_zero_loads_and_errors(config):
         revolution_wear(contour, pin, 1e9 * load, azimuth, sliding, law, k_d, **options)
 
 
+@pytest.mark.parametrize("model", MODELS)
+def test_warm_inputs_checked_as_cold(config, model):
+    """A warm start builds the contour's arguments in the compiled loop: the same result as
+    from lists (the general path), and the same errors for a load that is not finite or
+    negative and for a pin that does not fit."""
+    from jointwear.errors import ContactError, GeometryError
+    from jointwear.geometry import Pin
+
+    args, options = revolution_inputs(config, model, "worn")
+    contour, pin, load, azimuth, sliding, law, k_d = args
+    guess = revolution_wear(*args, **options).offset * (1 + 1e-7)
+    warm = revolution_wear(*args, initial_offset=guess, **options)
+    listed = revolution_wear(
+        contour, pin, load.tolist(), azimuth.tolist(), sliding, law, k_d,
+        initial_offset=guess.tolist(), **options,
+    )  # fmt: skip
+    assert relative(warm.wear, listed.wear) <= 1e-12
+    assert relative(warm.offset, listed.offset) <= 1e-12
+    assert relative(warm.solution().eccentricity, listed.solution().eccentricity) <= 1e-12
+    for bad, match in ((np.nan, "finite"), (np.inf, "finite"), (-1.0, ">= 0")):
+        broken = load.copy()
+        broken[7] = bad
+        with pytest.raises(ContactError, match=match):
+            revolution_wear(
+                contour, pin, broken, azimuth, sliding, law, k_d, initial_offset=guess,
+                **options,
+            )  # fmt: skip
+    with pytest.raises(GeometryError, match="clearance"):
+        revolution_wear(
+            contour, Pin(float(contour.radius.min())), load, azimuth, sliding, law, k_d,
+            initial_offset=guess, **options,
+        )  # fmt: skip
+
+
 def test_numba_is_imported_only_when_used():
     """``import jointwear`` (and a whole simulation object) does not import numba."""
     code = (

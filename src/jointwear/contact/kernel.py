@@ -102,6 +102,14 @@ class RevolutionWear:
     _solution: ContactSolution | None = None
     _context: Any = None
 
+    @classmethod
+    def _of(cls, **fields: Any) -> RevolutionWear:
+        """The instance of ``fields`` without the frozen dataclass's ``__init__`` (its
+        ``object.__setattr__`` per field cost a few microseconds a revolution)."""
+        instance = object.__new__(cls)
+        vars(instance).update(fields)
+        return instance
+
     def solution(self) -> ContactSolution:
         """The revolution as a :class:`ContactSolution`; the (M, N) pressure, the
         eccentricity and the penetration are assembled when first read."""
@@ -137,10 +145,8 @@ class _WindowSolution(ContactSolution):
     """
 
     def __init__(self, lazy: dict[str, Any], revolution: RevolutionWear, **fields: Any):
-        for name, value in fields.items():
-            object.__setattr__(self, name, value)
-        object.__setattr__(self, "revolution", revolution)
-        object.__setattr__(self, "_lazy", lazy)
+        # the instance's dict at once: frozen, each object.__setattr__ costs its call
+        vars(self).update(fields, revolution=revolution, _lazy=lazy)
 
     def __getattr__(self, name: str) -> Any:
         # only reached for attributes not set yet: a lazy field, on first use
@@ -166,8 +172,11 @@ class _Lines:
         self.centre = np.rint(wrapped / dtheta).astype(np.int64)
         self.shift = self.centre * dtheta - wrapped
         self.cos_shift, self.sin_shift = np.cos(self.shift), np.sin(self.shift)
+        #: the azimuths this is cached for (the key's bytes): a warm revolution's context
+        self.azimuth = azimuth.copy()
+        self.finite = bool(np.isfinite(azimuth).all())
         self.stencil = RadiusStencil.at(nodes, wrapped)
-        self._lower_weight = 1 - self.stencil.weight
+        self.lower_weight = 1 - self.stencil.weight
         self.quarter = nodes // 4
         self.pad = self.quarter + 1
         offsets = np.arange(-self.quarter, self.quarter + 1)
@@ -185,10 +194,23 @@ class _Lines:
         self._filled: dict[float, FloatArray] = {}
         self._scratch = threading.local()
 
+    def arguments(self, dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
+                  upper):  # fmt: skip
+        """The compiled kernel's ``nodes``, ``grid`` and ``lines`` from the contour's arrays."""
+        nodes = (gap_ext, area_ext, self.cos_o, self.sin_o, self.half_cos)
+        grid = (
+            self.pad, self.quarter, dtheta, rp, float(law.exponent), float(law.coefficient),
+        )  # fmt: skip
+        lines = (
+            self.centre, self.cos_shift, self.sin_shift, load_gap, load_area, gap_min, lower,
+            upper, self.shift,
+        )  # fmt: skip
+        return nodes, grid, lines
+
     def centre_radius(self, radius: FloatArray) -> FloatArray:
         """The radius on each load line [m]: ``self.stencil(radius)``, its weights kept."""
         stencil = self.stencil
-        return self._lower_weight * radius.take(stencil.lower) + stencil.weight * radius.take(
+        return self.lower_weight * radius.take(stencil.lower) + stencil.weight * radius.take(
             stencil.upper
         )
 
@@ -283,6 +305,13 @@ def revolution_wear(
             contour, pin, load, azimuth, sliding_distance, law, wear_coefficient,
             max_penetration, initial_offset, window, tolerance, max_iterations,
         )  # fmt: skip
+    if initial_offset is not None:
+        result = _warm_revolution(
+            module, contour, pin, load, azimuth, sliding_distance, law, wear_coefficient,
+            max_penetration, initial_offset, tolerance, max_iterations,
+        )  # fmt: skip
+        if result is not None:
+            return result
     load, azimuth = checked_loads(load, azimuth)
     m = load.size
     sliding = np.asarray(sliding_distance, dtype=float).ravel()
@@ -307,6 +336,76 @@ def revolution_wear(
         guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), known.zeros
         if guess.size != m:
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
+    return _run(
+        module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
+        tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known,
+    )  # fmt: skip
+
+
+def _warm_revolution(
+    module, contour, pin, load, azimuth, sliding, law, wear_coefficient, max_penetration,
+    initial_offset, tolerance, max_iterations,
+):  # fmt: skip
+    """:func:`revolution_wear` from guesses with the contour's arguments built and the
+    input checked by the compiled kernel (a dozen NumPy calls less).
+
+    None where the inputs are not plain float arrays of one length, or fail a check (the
+    general path then raises its error).
+    """
+    ndarray = np.ndarray
+    if not (type(load) is type(azimuth) is type(sliding) is type(initial_offset) is ndarray):
+        return None
+    m = load.size
+    if not (
+        load.dtype == azimuth.dtype == sliding.dtype == initial_offset.dtype == np.float64
+        and load.shape == azimuth.shape == sliding.shape == initial_offset.shape == (m,)
+    ):
+        return None
+    known = _lines(contour.nodes, azimuth)
+    if not known.finite:
+        return None
+    rp = float(pin.radius)
+    dtheta = contour.dtheta
+    spring = dtheta * contour.axial_length
+    centre_gap = np.empty(m)
+    upper = np.empty(m)
+    # the arrays the kernel fills: as _arguments, whose NumPy expressions it evaluates
+    if law.symmetric:
+        gap_ext, load_gap, gap_min = known.zeros_padded, centre_gap, centre_gap
+        area_ext = known.filled(spring if law.force_area is None else float(law.force_area))
+        load_area = np.empty(m) if law.force_area is None else known.ones
+    else:
+        gap_ext, load_gap, gap_min = np.empty(known.padded.size), known.zeros, np.empty(m)
+        if law.force_area is None:
+            area_ext = np.empty(known.padded.size)
+        else:
+            area_ext = known.filled(float(law.force_area))
+        load_area = known.ones
+    nodes, grid, lines = known.arguments(
+        dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
+    )
+    stencil = known.stencil
+    built = (
+        1 if law.symmetric else 2, law.force_area is None, stencil.lower, stencil.upper,
+        stencil.weight, known.lower_weight, known.padded, spring,
+        np.inf if max_penetration is None else float(max_penetration),
+    )  # fmt: skip
+    out = (centre_gap, gap_ext, area_ext, load_gap, load_area, gap_min, upper)
+    if not module.prepare(load, contour.radius, rp, built, out):
+        return None
+    return _run(
+        module, contour, pin, load, known.azimuth, sliding, law, wear_coefficient,
+        initial_offset, tolerance, max_iterations, initial_offset, known.zeros, nodes, grid,
+        lines, centre_gap, known,
+    )  # fmt: skip
+
+
+def _run(
+    module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
+    tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known,
+):  # fmt: skip
+    """The compiled revolution and its :class:`RevolutionWear`."""
+    m = load.size
     floats = np.zeros((6, m))
     counts = np.zeros((5, m), dtype=np.int64)
     work = known.scratch(module)
@@ -331,10 +430,10 @@ def revolution_wear(
         )
         return pressure
 
-    return RevolutionWear(
+    return RevolutionWear._of(
         wear=wear,
         offset=offset,
-        window=math.ceil(widest / contour.dtheta) + 3,
+        window=math.ceil(widest / grid[2]) + 3,
         iterations=counts[0],
         half_angle_left=left,
         half_angle_right=right,
@@ -386,14 +485,9 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
     else:
         upper = np.full(m, 0.999 * rp)
     np.maximum(upper, lower, out=upper)
-    nodes = (gap_ext, area_ext, lines.cos_o, lines.sin_o, lines.half_cos)
-    grid = (
-        lines.pad, lines.quarter, contour.dtheta, float(rp), float(law.exponent),
-        float(law.coefficient),
-    )  # fmt: skip
-    per_load = (
-        lines.centre, lines.cos_shift, lines.sin_shift, load_gap, load_area, gap_min, lower,
-        upper, lines.shift,
+    nodes, grid, per_load = lines.arguments(
+        contour.dtheta, float(rp), law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
+        upper,
     )  # fmt: skip
     return nodes, grid, per_load, centre_gap, lines
 
