@@ -422,14 +422,15 @@ class Simulation:
         pin = None if state is None else state.pin_wear_depth
         if pin is not None and np.any(pin):
             return self._solve_worn_pin(contour, pin, options)
+        cycle = self.load_cycle
         if state is not None and self._fused and cfg.balance == "paper" and isinstance(
             self.law, SpringLaw
         ):
             return revolution_wear(
                 contour,
                 self.pin,
-                self.load_cycle.load,
-                self.load_cycle.azimuth,
+                cycle.load,
+                cycle.azimuth,
                 self.sliding_distance,
                 self.law,
                 self.config.materials.bushing.wear_coefficient,
@@ -442,8 +443,8 @@ class Simulation:
         return solve_contact(
             contour,
             self.pin,
-            self.load_cycle.load,
-            self.load_cycle.azimuth,
+            cycle.load,
+            cycle.azimuth,
             self.law,
             self.parameters,
             **options,
@@ -875,8 +876,10 @@ class Simulation:
 
     def _contour(self, wear_depth: FloatArray) -> BushingContour:
         joint = self.config.joint
-        return BushingContour.from_wear_profile(
-            joint.bushing_radius, wear_depth, joint.axial_length
+        # built anew from the depth at every update (as a resumed run rebuilds it), never
+        # carried over: ``R + (h + dh)`` and ``(R + h) + dh`` differ in the last bits
+        return BushingContour._of_depth(
+            joint.bushing_radius, np.asarray(wear_depth, dtype=float), joint.axial_length
         )
 
     @functools.cached_property
@@ -915,7 +918,7 @@ class Simulation:
             profiles = profiles.append((revolution, depth))
         self._check_assumptions(revolution, metrics["peak_wear_depth"])
         changes.update(history=base.history.append(row), profiles=profiles)
-        return replace(base, **changes)
+        return base._evolved(changes)
 
 
 #: contact solves a run may need, above which the compiled kernel pays for loading numba

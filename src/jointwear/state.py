@@ -167,6 +167,23 @@ class SimulationState:
                 if frozen is not value:
                     object.__setattr__(self, name, frozen)
 
+    def _evolved(self, changes: dict[str, Any]) -> SimulationState:
+        """``dataclasses.replace(self, **changes)`` without re-running the checks of the
+        unchanged fields (the revolution loop makes one state per revolution)."""
+        unknown = changes.keys() - _FIELD_NAMES
+        if unknown:
+            raise TypeError(f"SimulationState has no field {sorted(unknown)[0]!r}")
+        new = object.__new__(SimulationState)
+        fields_of = new.__dict__
+        fields_of.update(self.__dict__)
+        fields_of.update(changes)
+        for name in _ARRAY_FIELDS:
+            if name in changes:
+                value = changes[name]
+                if value is not None:
+                    fields_of[name] = _frozen(value)
+        return new
+
     @property
     def wear_growth(self) -> float:
         """Growth of the deepest wear since the load cycle was solved [m]."""
@@ -195,3 +212,4 @@ class SimulationState:
 _ARRAY_FIELDS = tuple(
     spec.name for spec in fields(SimulationState) if "FloatArray" in str(spec.type)
 )
+_FIELD_NAMES = frozenset(spec.name for spec in fields(SimulationState))

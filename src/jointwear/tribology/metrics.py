@@ -173,10 +173,10 @@ def evaluate_metrics(wear_depth: ArrayLike, joint: JointGeometry) -> dict[str, f
     """
     depth = np.asarray(wear_depth, dtype=float)
     area = worn_area(joint.bushing_radius, depth)
-    peak = wear_peak(depth)
+    peak = float(depth.max())
     return {
         "peak_wear_depth": peak,
-        "wear_width": wear_width(depth, joint.width_threshold),
+        "wear_width": _width(depth, peak, joint.width_threshold),
         "wear_area": area,
         "wear_volume": wear_volume(area, joint.axial_length),
         "wear_mass": wear_mass(area, joint.axial_length, joint.density),
@@ -193,7 +193,7 @@ def wear_peak(wear_depth: ArrayLike) -> float:
     wear_depth : array_like, shape (N,)
         Radial wear depth at the nodes [m].
     """
-    return float(np.max(wear_depth))
+    return float(np.asarray(wear_depth).max())
 
 
 def wear_width(wear_depth: ArrayLike, threshold: float = 0.01) -> float:
@@ -215,14 +215,18 @@ def wear_width(wear_depth: ArrayLike, threshold: float = 0.01) -> float:
         Fraction of the peak that counts as worn [-], default 1 %.
     """
     depth = np.asarray(wear_depth, dtype=float)
-    peak = depth.max()
+    return _width(depth, depth.max(), threshold)
+
+
+def _width(depth: np.ndarray, peak: float, threshold: float) -> float:
+    """:func:`wear_width` of a float profile whose largest value is ``peak`` [rad]."""
     if not peak > 0:
         return 0.0
     above = depth - threshold * peak
     inside = above > 0
     # the few intervals that cross the threshold (one end in, one out, so |a - b| > 0),
     # the last one periodic
-    crossing = np.flatnonzero(inside[:-1] != inside[1:])
+    crossing = (inside[:-1] != inside[1:]).nonzero()[0]
     if inside[-1] != inside[0]:
         crossing = np.append(crossing, depth.size - 1)
     # crossings alternate in and out: half of them leave an interval that started inside
@@ -270,7 +274,7 @@ def worn_area(original_radius: float | ArrayLike, wear_depth: ArrayLike) -> floa
     original = np.asarray(original_radius, dtype=float)
     if original.ndim:  # (a scalar radius broadcasts by itself)
         original = np.broadcast_to(original, depth.shape)
-    return float(0.5 * np.sum(depth * (2 * original + depth)) * 2 * np.pi / depth.size)
+    return float(0.5 * (depth * (2 * original + depth)).sum() * 2 * np.pi / depth.size)
 
 
 def wear_volume(removed_area: float, axial_length: float) -> float:
