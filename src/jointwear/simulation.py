@@ -50,8 +50,13 @@ from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
 from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
-from jointwear.state import SimulationState
-from jointwear.tribology.metrics import evaluate_metrics, pin_metrics
+from jointwear.state import Deferred, SimulationState
+from jointwear.tribology.metrics import (
+    JointGeometry,
+    evaluate_metrics,
+    pin_metrics,
+    profile_metrics,
+)
 from jointwear.tribology.sliding import SLIDING_MODELS
 from jointwear.tribology.wear_laws import WearLaw
 from jointwear.tribology.wear_laws import wear_law as wear_law_of
@@ -901,14 +906,16 @@ class Simulation:
         pin_depth = changes.get("pin_wear_depth", base.pin_wear_depth)
         stopped_by = changes.get("stopped_by", base.stopped_by)
         profiles = changes.get("profiles", base.profiles)
-        metrics = evaluate_metrics(depth, self.life.joint)
-        row = {
-            "revolution": revolution,
-            **metrics,
-            "contact_iterations": float(solution.iterations.sum()),
-        }
-        if pin_depth is not None:
-            row.update(pin_metrics(pin_depth, self.config))
+        depth = np.asarray(depth, dtype=float)
+        if depth.flags.writeable:  # (the row keeps it until its metrics are computed)
+            depth = depth.copy()
+        row = _MetricsRow(
+            revolution,
+            depth,
+            self.life.joint,
+            float(solution.iterations.sum()),
+            None if pin_depth is None else pin_metrics(pin_depth, self.config),
+        )
         last = profiles.last
         last_saved = 0 if last is None else int(last[0])
         targets = self._profile_targets
@@ -916,9 +923,44 @@ class Simulation:
         due = bisect.bisect_right(targets, last_saved)
         if stopped_by is not None or (due < len(targets) and targets[due] <= revolution):
             profiles = profiles.append((revolution, depth))
-        self._check_assumptions(revolution, metrics["peak_wear_depth"])
+        self._check_assumptions(revolution, float(depth.max()))
         changes.update(history=base.history.append(row), profiles=profiles)
         return base._evolved(changes)
+
+
+class _MetricsRow(Deferred):
+    """A row of the per-update record: the revolution, the wear metrics of the profile
+    and the contact iterations. The metrics are computed when the record is read, for
+    many rows at once (each row's values as computed alone, to the bit)."""
+
+    __slots__ = ("depth", "extra", "iterations", "joint", "revolution")
+
+    def __init__(
+        self, revolution: int, depth: FloatArray, joint: JointGeometry, iterations: float,
+        extra: dict[str, float] | None,
+    ) -> None:
+        self.revolution, self.depth, self.joint = revolution, depth, joint
+        self.iterations, self.extra = iterations, extra
+
+    @classmethod
+    def resolve(cls, items: list[_MetricsRow]) -> list[dict[str, Any]]:
+        first = items[0]
+        if all(i.joint is first.joint and i.depth.shape == first.depth.shape for i in items):
+            stacked = profile_metrics(np.stack([i.depth for i in items]), first.joint)
+            columns = {name: values.tolist() for name, values in stacked.items()}
+            metrics = [{name: values[k] for name, values in columns.items()}
+                       for k in range(len(items))]
+        else:
+            metrics = [evaluate_metrics(i.depth, i.joint) for i in items]
+        return [
+            {
+                "revolution": i.revolution,
+                **m,
+                "contact_iterations": i.iterations,
+                **(i.extra or {}),
+            }
+            for i, m in zip(items, metrics, strict=True)
+        ]
 
 
 #: contact solves a run may need, above which the compiled kernel pays for loading numba
