@@ -50,7 +50,7 @@ from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
 from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
-from jointwear.state import Deferred, SimulationState
+from jointwear.state import Deferred, SimulationState, _frozen
 from jointwear.tribology.metrics import (
     JointGeometry,
     evaluate_metrics,
@@ -425,7 +425,7 @@ class Simulation:
         options = {"balance": cfg.balance, "tolerance": cfg.tolerance,
                    "max_iterations": cfg.max_iterations}
         pin = None if state is None else state.pin_wear_depth
-        if pin is not None and np.any(pin):
+        if pin is not None and pin.any():
             return self._solve_worn_pin(contour, pin, options)
         cycle = self.load_cycle
         if state is not None and self._fused and cfg.balance == "paper" and isinstance(
@@ -652,11 +652,18 @@ class Simulation:
     def _apply(self, step: WearStep) -> SimulationState:
         """The state after a contour update, cut short where a ``[life]`` limit is reached."""
         base, interval = step.base, step.interval
-        stop = self.life.first_reached(step.depth_at, interval)
+        end = step.depth_at(interval)
+        # (the end of the interval is the limits' first question, and usually the answer)
+        stop = self.life.first_reached(
+            lambda revolutions: end if revolutions == interval else step.depth_at(revolutions),
+            interval,
+        )
         stopped_by = None
-        if stop is not None:
+        if stop is None:
+            depth = end
+        else:
             interval, stopped_by = stop
-        depth = step.depth_at(interval)
+            depth = step.depth_at(interval)
         adaptive = step.end_rate is not None
         if stopped_by is None:
             # the contour must stay inside the wall (a run without a wall limit cannot
@@ -668,6 +675,7 @@ class Simulation:
                 ).wear_depth
             else:
                 depth = _grown(step.contour, depth - base.wear_depth)
+                depth.setflags(write=False)  # its own array: the state keeps it uncopied
         profiles = base.profiles
         if adaptive:
             # saved profiles inside the jump: the corrector's quadratic in the revolution
@@ -906,9 +914,9 @@ class Simulation:
         pin_depth = changes.get("pin_wear_depth", base.pin_wear_depth)
         stopped_by = changes.get("stopped_by", base.stopped_by)
         profiles = changes.get("profiles", base.profiles)
-        depth = np.asarray(depth, dtype=float)
-        if depth.flags.writeable:  # (the row keeps it until its metrics are computed)
-            depth = depth.copy()
+        depth = _frozen(np.asarray(depth, dtype=float))  # the row keeps it until it is read
+        if "wear_depth" in changes:
+            changes["wear_depth"] = depth
         row = _MetricsRow(
             revolution,
             depth,
@@ -1068,7 +1076,8 @@ def _grown(contour: BushingContour, increment: FloatArray) -> FloatArray:
     contour unless it would be refused (it then raises as the update does)."""
     depth = contour.wear_depth + increment
     radius = contour.radius + increment
-    if not (np.isfinite(radius).all() and radius.min() > 0.0):
+    # (a NaN fails both comparisons)
+    if not (radius.min() > 0.0 and radius.max() < np.inf):
         return update_contour(contour, increment).wear_depth
     return depth
 
