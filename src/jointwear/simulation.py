@@ -50,7 +50,7 @@ from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
 from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
-from jointwear.state import Deferred, SimulationState, _frozen
+from jointwear.state import Deferred, SimulationState
 from jointwear.tribology.metrics import (
     JointGeometry,
     evaluate_metrics,
@@ -914,7 +914,10 @@ class Simulation:
         pin_depth = changes.get("pin_wear_depth", base.pin_wear_depth)
         stopped_by = changes.get("stopped_by", base.stopped_by)
         profiles = changes.get("profiles", base.profiles)
-        depth = _frozen(np.asarray(depth, dtype=float))  # the row keeps it until it is read
+        depth = np.asarray(depth, dtype=float)
+        if depth.flags.writeable:  # the row keeps it until it is read
+            depth = depth.copy()
+            depth.setflags(write=False)
         if "wear_depth" in changes:
             changes["wear_depth"] = depth
         row = _MetricsRow(
