@@ -719,11 +719,13 @@ class Simulation:
             offset = revolution.offset
         else:
             offset = _along_load(solution, self.load_cycle.azimuth)
-        return {
-            "warm_offset": offset,
-            "warm_slope": _slope(previous_offset, offset, interval),
-            "window": _window_nodes(solution, contour),
-        }
+        slope = _slope(previous_offset, offset, interval)
+        # arrays of this solve alone, never written again: the state keeps them uncopied
+        offset.setflags(write=False)
+        if slope is not None:
+            slope.setflags(write=False)
+        window = _window_nodes(solution, contour)
+        return {"warm_offset": offset, "warm_slope": slope, "window": window}
 
     # ---------------------------------------------------------------- coupling
     def _use_load_of(self, state: SimulationState) -> None:
