@@ -50,8 +50,13 @@ from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
 from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
-from jointwear.state import SimulationState
-from jointwear.tribology.metrics import evaluate_metrics, pin_metrics
+from jointwear.state import Deferred, SimulationState
+from jointwear.tribology.metrics import (
+    JointGeometry,
+    evaluate_metrics,
+    pin_metrics,
+    profile_metrics,
+)
 from jointwear.tribology.sliding import SLIDING_MODELS
 from jointwear.tribology.wear_laws import WearLaw
 from jointwear.tribology.wear_laws import wear_law as wear_law_of
@@ -420,16 +425,17 @@ class Simulation:
         options = {"balance": cfg.balance, "tolerance": cfg.tolerance,
                    "max_iterations": cfg.max_iterations}
         pin = None if state is None else state.pin_wear_depth
-        if pin is not None and np.any(pin):
+        if pin is not None and pin.any():
             return self._solve_worn_pin(contour, pin, options)
+        cycle = self.load_cycle
         if state is not None and self._fused and cfg.balance == "paper" and isinstance(
             self.law, SpringLaw
         ):
             return revolution_wear(
                 contour,
                 self.pin,
-                self.load_cycle.load,
-                self.load_cycle.azimuth,
+                cycle.load,
+                cycle.azimuth,
                 self.sliding_distance,
                 self.law,
                 self.config.materials.bushing.wear_coefficient,
@@ -442,8 +448,8 @@ class Simulation:
         return solve_contact(
             contour,
             self.pin,
-            self.load_cycle.load,
-            self.load_cycle.azimuth,
+            cycle.load,
+            cycle.azimuth,
             self.law,
             self.parameters,
             **options,
@@ -646,11 +652,18 @@ class Simulation:
     def _apply(self, step: WearStep) -> SimulationState:
         """The state after a contour update, cut short where a ``[life]`` limit is reached."""
         base, interval = step.base, step.interval
-        stop = self.life.first_reached(step.depth_at, interval)
+        end = step.depth_at(interval)
+        # (the end of the interval is the limits' first question, and usually the answer)
+        stop = self.life.first_reached(
+            lambda revolutions: end if revolutions == interval else step.depth_at(revolutions),
+            interval,
+        )
         stopped_by = None
-        if stop is not None:
+        if stop is None:
+            depth = end
+        else:
             interval, stopped_by = stop
-        depth = step.depth_at(interval)
+            depth = step.depth_at(interval)
         adaptive = step.end_rate is not None
         if stopped_by is None:
             # the contour must stay inside the wall (a run without a wall limit cannot
@@ -662,6 +675,7 @@ class Simulation:
                 ).wear_depth
             else:
                 depth = _grown(step.contour, depth - base.wear_depth)
+                depth.setflags(write=False)  # its own array: the state keeps it uncopied
         profiles = base.profiles
         if adaptive:
             # saved profiles inside the jump: the corrector's quadratic in the revolution
@@ -705,11 +719,13 @@ class Simulation:
             offset = revolution.offset
         else:
             offset = _along_load(solution, self.load_cycle.azimuth)
-        return {
-            "warm_offset": offset,
-            "warm_slope": _slope(previous_offset, offset, interval),
-            "window": _window_nodes(solution, contour),
-        }
+        slope = _slope(previous_offset, offset, interval)
+        # arrays of this solve alone, never written again: the state keeps them uncopied
+        offset.setflags(write=False)
+        if slope is not None:
+            slope.setflags(write=False)
+        window = _window_nodes(solution, contour)
+        return {"warm_offset": offset, "warm_slope": slope, "window": window}
 
     # ---------------------------------------------------------------- coupling
     def _use_load_of(self, state: SimulationState) -> None:
@@ -875,8 +891,10 @@ class Simulation:
 
     def _contour(self, wear_depth: FloatArray) -> BushingContour:
         joint = self.config.joint
-        return BushingContour.from_wear_profile(
-            joint.bushing_radius, wear_depth, joint.axial_length
+        # built anew from the depth at every update (as a resumed run rebuilds it), never
+        # carried over: ``R + (h + dh)`` and ``(R + h) + dh`` differ in the last bits
+        return BushingContour._of_depth(
+            joint.bushing_radius, np.asarray(wear_depth, dtype=float), joint.axial_length
         )
 
     @functools.cached_property
@@ -898,14 +916,19 @@ class Simulation:
         pin_depth = changes.get("pin_wear_depth", base.pin_wear_depth)
         stopped_by = changes.get("stopped_by", base.stopped_by)
         profiles = changes.get("profiles", base.profiles)
-        metrics = evaluate_metrics(depth, self.life.joint)
-        row = {
-            "revolution": revolution,
-            **metrics,
-            "contact_iterations": float(solution.iterations.sum()),
-        }
-        if pin_depth is not None:
-            row.update(pin_metrics(pin_depth, self.config))
+        depth = np.asarray(depth, dtype=float)
+        if depth.flags.writeable:  # the row keeps it until it is read
+            depth = depth.copy()
+            depth.setflags(write=False)
+        if "wear_depth" in changes:
+            changes["wear_depth"] = depth
+        row = _MetricsRow(
+            revolution,
+            depth,
+            self.life.joint,
+            float(solution.iterations.sum()),
+            None if pin_depth is None else pin_metrics(pin_depth, self.config),
+        )
         last = profiles.last
         last_saved = 0 if last is None else int(last[0])
         targets = self._profile_targets
@@ -913,9 +936,44 @@ class Simulation:
         due = bisect.bisect_right(targets, last_saved)
         if stopped_by is not None or (due < len(targets) and targets[due] <= revolution):
             profiles = profiles.append((revolution, depth))
-        self._check_assumptions(revolution, metrics["peak_wear_depth"])
+        self._check_assumptions(revolution, float(depth.max()))
         changes.update(history=base.history.append(row), profiles=profiles)
-        return replace(base, **changes)
+        return base._evolved(changes)
+
+
+class _MetricsRow(Deferred):
+    """A row of the per-update record: the revolution, the wear metrics of the profile
+    and the contact iterations. The metrics are computed when the record is read, for
+    many rows at once (each row's values as computed alone, to the bit)."""
+
+    __slots__ = ("depth", "extra", "iterations", "joint", "revolution")
+
+    def __init__(
+        self, revolution: int, depth: FloatArray, joint: JointGeometry, iterations: float,
+        extra: dict[str, float] | None,
+    ) -> None:
+        self.revolution, self.depth, self.joint = revolution, depth, joint
+        self.iterations, self.extra = iterations, extra
+
+    @classmethod
+    def resolve(cls, items: list[_MetricsRow]) -> list[dict[str, Any]]:
+        first = items[0]
+        if all(i.joint is first.joint and i.depth.shape == first.depth.shape for i in items):
+            stacked = profile_metrics(np.stack([i.depth for i in items]), first.joint)
+            columns = {name: values.tolist() for name, values in stacked.items()}
+            metrics = [{name: values[k] for name, values in columns.items()}
+                       for k in range(len(items))]
+        else:
+            metrics = [evaluate_metrics(i.depth, i.joint) for i in items]
+        return [
+            {
+                "revolution": i.revolution,
+                **m,
+                "contact_iterations": i.iterations,
+                **(i.extra or {}),
+            }
+            for i, m in zip(items, metrics, strict=True)
+        ]
 
 
 #: contact solves a run may need, above which the compiled kernel pays for loading numba
@@ -1023,7 +1081,8 @@ def _grown(contour: BushingContour, increment: FloatArray) -> FloatArray:
     contour unless it would be refused (it then raises as the update does)."""
     depth = contour.wear_depth + increment
     radius = contour.radius + increment
-    if not (np.isfinite(radius).all() and radius.min() > 0.0):
+    # (a NaN fails both comparisons)
+    if not (radius.min() > 0.0 and radius.max() < np.inf):
         return update_contour(contour, increment).wear_depth
     return depth
 

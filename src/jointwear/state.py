@@ -18,9 +18,29 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["Log", "SimulationState"]
+__all__ = ["Deferred", "Log", "SimulationState"]
 
 FloatArray = NDArray[np.float64]
+
+#: deferred items a log holds at most before it computes them (bounds the memory they hold)
+DEFERRED_ITEMS = 256
+
+
+class Deferred:
+    """A log item computed when first read, together with the deferred items before it.
+
+    A subclass stands for a value that costs less computed for many items at once
+    (:meth:`resolve`); :class:`Log` replaces it by its value when the log is read, or
+    when :data:`DEFERRED_ITEMS` of them are waiting. The value must not depend on which
+    other items it is computed with.
+    """
+
+    __slots__ = ()
+
+    @classmethod
+    def resolve(cls, items: list[Any]) -> list[Any]:
+        """The values of ``items`` (consecutive items of this class), in order."""
+        raise NotImplementedError
 
 
 class Log(Sequence[Any]):
@@ -31,12 +51,13 @@ class Log(Sequence[Any]):
     simulation does once per run or checkpoint.
     """
 
-    __slots__ = ("_item", "_length", "_parent")
+    __slots__ = ("_deferred", "_item", "_length", "_parent")
 
     def __init__(self) -> None:
         self._item: Any = None
         self._parent: Log | None = None
         self._length = 0
+        self._deferred = 0
 
     @classmethod
     def of(cls, items: Iterable[Any]) -> Log:
@@ -50,7 +71,28 @@ class Log(Sequence[Any]):
         """A new log with ``item`` at the end."""
         new = Log.__new__(Log)
         new._item, new._parent, new._length = item, self, self._length + 1
+        new._deferred = self._deferred + 1 if isinstance(item, Deferred) else 0
+        if new._deferred >= DEFERRED_ITEMS:
+            new._resolve()
         return new
+
+    def _resolve(self) -> None:
+        """Compute the deferred items that end at this node (the value replaces each)."""
+        nodes: list[Log] = []
+        node: Log | None = self
+        while node is not None and isinstance(node._item, Deferred):
+            nodes.append(node)
+            node = node._parent
+        nodes.reverse()
+        while nodes:
+            kind = type(nodes[0]._item)
+            run = 1
+            while run < len(nodes) and type(nodes[run]._item) is kind:
+                run += 1
+            values = kind.resolve([n._item for n in nodes[:run]])
+            for done, value in zip(nodes[:run], values, strict=True):
+                done._item, done._deferred = value, 0
+            del nodes[:run]
 
     def __len__(self) -> int:
         return self._length
@@ -66,6 +108,8 @@ class Log(Sequence[Any]):
         out: list[Any] = []
         node: Log | None = self
         while node is not None and node._length:
+            if isinstance(node._item, Deferred):
+                node._resolve()
             out.append(node._item)
             node = node._parent
         out.reverse()
@@ -74,7 +118,11 @@ class Log(Sequence[Any]):
     @property
     def last(self) -> Any:
         """The newest item (``None`` for an empty log)."""
-        return self._item if self._length else None
+        if not self._length:
+            return None
+        if isinstance(self._item, Deferred):
+            self._resolve()
+        return self._item
 
     def columns(self) -> dict[str, list[Any]]:
         """Rows that are mappings, as one list per key (keys of the first row)."""
@@ -167,6 +215,23 @@ class SimulationState:
                 if frozen is not value:
                     object.__setattr__(self, name, frozen)
 
+    def _evolved(self, changes: dict[str, Any]) -> SimulationState:
+        """``dataclasses.replace(self, **changes)`` without re-running the checks of the
+        unchanged fields (the revolution loop makes one state per revolution)."""
+        unknown = changes.keys() - _FIELD_NAMES
+        if unknown:
+            raise TypeError(f"SimulationState has no field {sorted(unknown)[0]!r}")
+        new = object.__new__(SimulationState)
+        fields_of = new.__dict__
+        fields_of.update(self.__dict__)
+        fields_of.update(changes)
+        for name in _ARRAY_FIELDS:
+            if name in changes:
+                value = changes[name]
+                if value is not None:
+                    fields_of[name] = _frozen(value)
+        return new
+
     @property
     def wear_growth(self) -> float:
         """Growth of the deepest wear since the load cycle was solved [m]."""
@@ -195,3 +260,4 @@ class SimulationState:
 _ARRAY_FIELDS = tuple(
     spec.name for spec in fields(SimulationState) if "FloatArray" in str(spec.type)
 )
+_FIELD_NAMES = frozenset(spec.name for spec in fields(SimulationState))

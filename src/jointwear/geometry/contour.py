@@ -169,6 +169,30 @@ class BushingContour:
         return cls(radius + wear, axial_length, float(radius), wear)
 
     @classmethod
+    def _of_depth(cls, radius: float, wear: FloatArray, axial_length: float) -> BushingContour:
+        """:meth:`from_wear_profile` of a float array, without building what is known valid.
+
+        The revolution loop builds one contour per update from the state's wear depth;
+        a profile the checks would refuse goes through them (and raises).
+        """
+        radii = radius + wear
+        if not (
+            wear.dtype == np.float64 and wear.ndim == 1 and wear.size >= 16
+            and 0.0 < axial_length < np.inf and radii.min() > 0.0 and radii.max() < np.inf
+        ):
+            return cls.from_wear_profile(radius, wear, axial_length)
+        if wear.flags.writeable:
+            wear = wear.copy()
+            wear.setflags(write=False)
+        radii.setflags(write=False)
+        contour = object.__new__(cls)
+        # the fields as __post_init__ leaves them
+        contour.__dict__.update(
+            radius=radii, axial_length=axial_length, original_radius=float(radius), wear=wear
+        )
+        return contour
+
+    @classmethod
     def from_points(
         cls,
         x: ArrayLike,

@@ -40,6 +40,7 @@ __all__ = [
     "evaluate_metrics",
     "operating_values",
     "pin_metrics",
+    "profile_metrics",
     "removed_area",
     "wear_mass",
     "wear_peak",
@@ -172,17 +173,74 @@ def evaluate_metrics(wear_depth: ArrayLike, joint: JointGeometry) -> dict[str, f
         Radius, clearance, axial length, wall thickness, density, width threshold.
     """
     depth = np.asarray(wear_depth, dtype=float)
-    area = worn_area(joint.bushing_radius, depth)
-    peak = wear_peak(depth)
+    peak = float(depth.max())
+    return _metrics(
+        peak, _width(depth, peak, joint.width_threshold),
+        worn_area(joint.bushing_radius, depth), joint,
+    )  # fmt: skip
+
+
+def _metrics(peak: Any, width: Any, area: Any, joint: JointGeometry) -> dict[str, Any]:
+    """:data:`WEAR_METRICS` from the peak [m], width [rad] and removed area [m^2]."""
     return {
         "peak_wear_depth": peak,
-        "wear_width": wear_width(depth, joint.width_threshold),
+        "wear_width": width,
         "wear_area": area,
         "wear_volume": wear_volume(area, joint.axial_length),
         "wear_mass": wear_mass(area, joint.axial_length, joint.density),
         "min_wall_thickness": joint.bushing_thickness - peak,
         "max_clearance": joint.clearance + peak,
     }
+
+
+def profile_metrics(wear_depth: ArrayLike, joint: JointGeometry) -> dict[str, np.ndarray]:
+    """:func:`evaluate_metrics` of each row of a stack of profiles, one array per metric.
+
+    Each row's values are those of the row alone, to the bit (the reductions run along
+    the rows as on a single profile), so the per-update record of a run does not depend
+    on how its rows were grouped.
+
+    Parameters
+    ----------
+    wear_depth : array_like, shape (K, N)
+        ``K`` radial wear-depth profiles at the nodes [m].
+    joint : JointGeometry
+        Radius, clearance, axial length, wall thickness, density, width threshold.
+    """
+    depth = np.asarray(wear_depth, dtype=float)
+    nodes = depth.shape[1]
+    peak = depth.max(axis=1)
+    radius = np.asarray(joint.bushing_radius, dtype=float)
+    area = 0.5 * (depth * (2 * radius + depth)).sum(axis=1) * 2 * np.pi / nodes
+    return _metrics(peak, _widths(depth, peak, joint.width_threshold), area, joint)
+
+
+def _widths(depth: np.ndarray, peak: np.ndarray, threshold: float) -> np.ndarray:
+    """:func:`wear_width` of each row of ``depth`` (largest values ``peak``) [rad]."""
+    out = np.zeros(depth.shape[0])
+    worn = peak > 0
+    if not worn.any():
+        return out
+    rows, nodes = depth[worn], depth.shape[1]
+    above = rows - (threshold * peak[worn])[:, None]
+    inside = above > 0
+    # the intervals that cross the threshold, in node order, the periodic one last
+    row, crossing = (inside != np.roll(inside, -1, axis=1)).nonzero()
+    count = np.bincount(row, minlength=rows.shape[0])
+    both = np.count_nonzero(inside, axis=1) - count // 2
+    here = above[row, crossing]
+    there = above[row, (crossing + 1) % nodes]
+    fraction = np.maximum(here, there) / np.abs(here - there)
+    # each row's fractions summed as a row of their own (a segmented sum would add them
+    # in another order)
+    total = np.zeros(rows.shape[0])
+    start = np.concatenate(([0], np.cumsum(count)[:-1]))
+    for size in np.unique(count[count > 0]).tolist():
+        members = np.flatnonzero(count == size)
+        total[members] = fraction[start[members, None] + np.arange(size)].sum(axis=1)
+    width = (both + total) * 2 * np.pi / nodes
+    out[worn] = np.minimum(width, 2 * np.pi)  # all worn: exactly 2 pi, not one ulp more
+    return out
 
 
 def wear_peak(wear_depth: ArrayLike) -> float:
@@ -193,7 +251,7 @@ def wear_peak(wear_depth: ArrayLike) -> float:
     wear_depth : array_like, shape (N,)
         Radial wear depth at the nodes [m].
     """
-    return float(np.max(wear_depth))
+    return float(np.asarray(wear_depth).max())
 
 
 def wear_width(wear_depth: ArrayLike, threshold: float = 0.01) -> float:
@@ -215,14 +273,18 @@ def wear_width(wear_depth: ArrayLike, threshold: float = 0.01) -> float:
         Fraction of the peak that counts as worn [-], default 1 %.
     """
     depth = np.asarray(wear_depth, dtype=float)
-    peak = depth.max()
+    return _width(depth, depth.max(), threshold)
+
+
+def _width(depth: np.ndarray, peak: float, threshold: float) -> float:
+    """:func:`wear_width` of a float profile whose largest value is ``peak`` [rad]."""
     if not peak > 0:
         return 0.0
     above = depth - threshold * peak
     inside = above > 0
     # the few intervals that cross the threshold (one end in, one out, so |a - b| > 0),
     # the last one periodic
-    crossing = np.flatnonzero(inside[:-1] != inside[1:])
+    crossing = (inside[:-1] != inside[1:]).nonzero()[0]
     if inside[-1] != inside[0]:
         crossing = np.append(crossing, depth.size - 1)
     # crossings alternate in and out: half of them leave an interval that started inside
@@ -270,7 +332,7 @@ def worn_area(original_radius: float | ArrayLike, wear_depth: ArrayLike) -> floa
     original = np.asarray(original_radius, dtype=float)
     if original.ndim:  # (a scalar radius broadcasts by itself)
         original = np.broadcast_to(original, depth.shape)
-    return float(0.5 * np.sum(depth * (2 * original + depth)) * 2 * np.pi / depth.size)
+    return float(0.5 * (depth * (2 * original + depth)).sum() * 2 * np.pi / depth.size)
 
 
 def wear_volume(removed_area: float, axial_length: float) -> float:
