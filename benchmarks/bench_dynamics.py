@@ -94,7 +94,7 @@ def bench_revolutions(quick: bool) -> None:
         config = paper(**{"dynamics.revolutions_settle": settle})
 
         def solve(config=config):
-            return ci.solve_contact_impact(config, compare=False)
+            return ci.solve_contact_impact(config, compare=False, compiled=True)
 
         result = paired(solve, solve, 5 if quick else 15)
         (ref_wall, ref_cpu), (wall, cpu) = result["reference"], result["compiled"]
@@ -103,9 +103,9 @@ def bench_revolutions(quick: bool) -> None:
         row(f"{label}: compiled right-hand side", ms(wall, cpu), target)
         row(f"{label}: speed-up", f"{ref_wall / wall:.2f}x wall, {ref_cpu / cpu:.2f}x CPU")
     config = paper(**{"dynamics.revolutions_settle": 0})
-    fast = ci.solve_contact_impact(config, compare=False)
+    fast = ci.solve_contact_impact(config, compare=False, compiled=True)
     with python_rhs():
-        reference = ci.solve_contact_impact(config, compare=False)
+        reference = ci.solve_contact_impact(config, compare=False, compiled=True)
     difference = np.abs(fast.load.load - reference.load.load).max() / reference.load.load.max()
     row(
         "one revolution: max |compiled - reference| / peak (normal force); RHS evaluations",
@@ -172,7 +172,7 @@ config = load_config({path!r}, overrides={{"dynamics.model": "contact-impact",
 t1 = time.perf_counter()
 ci.impact_kernel()
 t2 = time.perf_counter()
-ci.solve_contact_impact(config, compare=False)
+ci.solve_contact_impact(config, compare=False, compiled=True)
 t3 = time.perf_counter()
 print(t2 - t1, t3 - t2)
 """

@@ -375,3 +375,14 @@ def test_compiled_dynamics_follows_from_the_config_alone(
 ) -> None:
     settings = {"simulation.update_contour": True, "dynamics.revolutions_settle": 2, **overrides}
     assert ci.compiled_dynamics(impact_config(paper_config, **settings)) is compiled
+
+
+def test_compiled_and_python_right_hand_sides_give_the_same_revolution(
+    paper_config: Config,
+) -> None:
+    config = impact_config(paper_config, **{"dynamics.revolutions_settle": 0})
+    fast = ci.solve_contact_impact(config, compare=False, compiled=True)
+    reference = ci.solve_contact_impact(config, compare=False, compiled=False)
+    np.testing.assert_array_equal(fast.load.load, reference.load.load)
+    np.testing.assert_array_equal(fast.load.azimuth, reference.load.azimuth)
+    assert fast.history.evaluations == reference.history.evaluations

@@ -196,6 +196,7 @@ def solve_contact_impact(
     config: Config,
     contour: BushingContour | None = None,
     compare: bool = True,
+    compiled: bool | None = None,
 ) -> ContactImpactSolution:
     """Integrate the contact–impact slider–crank and sample one settled revolution.
 
@@ -209,6 +210,10 @@ def solve_contact_impact(
         Bushing contour for the distributed force laws (default: unworn circle).
     compare : bool
         Also run the massless-link model and report the load difference.
+    compiled : bool, optional
+        Run the compiled right-hand side where it can (``True``) or the Python one
+        (``False``); default: as :func:`compiled_dynamics` decides for the run. Both give
+        the same bits.
 
     Returns
     -------
@@ -226,7 +231,9 @@ def solve_contact_impact(
     omega = config.mechanism.crank_speed
     steps = config.simulation.steps_per_revolution
     contact = JointContact.from_config(config, contour)
-    system = SliderCrankContactSystem(mechanism, omega, contact, compiled_dynamics(config))
+    if compiled is None:
+        compiled = compiled_dynamics(config) is None
+    system = SliderCrankContactSystem(mechanism, omega, contact, None if compiled else False)
     y0, _ = _initial_state(system, max(steps, 64))
     run = integrate_revolution(system, y0, settings, steps, dense=False)
     states = run.states
