@@ -240,7 +240,10 @@ def solve(
     window_pressure = profile * scale[:, None]
     force = window_pressure * area
     pressure = np.zeros((load.size, nodes))
-    np.put_along_axis(pressure, index, window_pressure, axis=1)
+    # a window holds each node at most once (2 width + 1 <= nodes): one flat scatter,
+    # without put_along_axis's index broadcasting (a fifth of the solve)
+    rows = np.arange(load.size)[:, None] * nodes
+    pressure.reshape(-1)[rows + index] = window_pressure
     half_angle = np.where(narrow, 0.0, np.minimum(a / r_b, 0.5 * np.pi))
     contact = window_pressure > 0
     return ContactSolution(
