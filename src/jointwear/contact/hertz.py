@@ -242,8 +242,8 @@ def solve(
     pressure = np.zeros((load.size, nodes))
     # a window holds each node at most once (2 width + 1 <= nodes): one flat scatter,
     # without put_along_axis's index broadcasting (a fifth of the solve)
-    rows = np.arange(load.size)[:, None] * nodes
-    pressure.reshape(-1)[rows + index] = window_pressure
+    row_start = np.arange(load.size)[:, None] * nodes
+    pressure.reshape(-1)[row_start + index] = window_pressure
     half_angle = np.where(narrow, 0.0, np.minimum(a / r_b, 0.5 * np.pi))
     contact = window_pressure > 0
     return ContactSolution(

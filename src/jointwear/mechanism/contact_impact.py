@@ -231,9 +231,8 @@ def solve_contact_impact(
     omega = config.mechanism.crank_speed
     steps = config.simulation.steps_per_revolution
     contact = JointContact.from_config(config, contour)
-    if compiled is None:
-        compiled = compiled_dynamics(config) is None
-    system = SliderCrankContactSystem(mechanism, omega, contact, None if compiled else False)
+    choice = compiled_dynamics(config) if compiled is None else (None if compiled else False)
+    system = SliderCrankContactSystem(mechanism, omega, contact, choice)
     y0, _ = _initial_state(system, max(steps, 64))
     run = integrate_revolution(system, y0, settings, steps, dense=False)
     states = run.states
