@@ -248,7 +248,8 @@ class WearStep:
         """
         depth, rate, end = self.base.wear_depth, self.rate, self.end_rate
         if end is None:
-            return depth + rate * revolutions
+            # (1 x is exact: a per-revolution update skips the product)
+            return depth + (rate if revolutions == 1 else rate * revolutions)
         if revolutions == self.interval:
             return depth + 0.5 * self.interval * (rate + end)
         tau = revolutions
@@ -420,12 +421,14 @@ class Simulation:
         if state is not None and state.warm_offset is not None:
             guess = state.warm_offset
             if state.warm_slope is not None and ahead:
-                guess = guess + ahead * state.warm_slope
+                # (one revolution ahead: the slope itself, 1 x is exact)
+                slope = state.warm_slope if ahead == 1 else ahead * state.warm_slope
+                guess = guess + slope
             warm = {"initial_offset": guess, "window": state.window}
-        options = {"balance": cfg.balance, "tolerance": cfg.tolerance,
-                   "max_iterations": cfg.max_iterations}
         pin = None if state is None else state.pin_wear_depth
         if pin is not None and pin.any():
+            options = {"balance": cfg.balance, "tolerance": cfg.tolerance,
+                       "max_iterations": cfg.max_iterations}
             return self._solve_worn_pin(contour, pin, options)
         cycle = self.load_cycle
         if state is not None and self._fused and cfg.balance == "paper" and isinstance(
@@ -452,7 +455,9 @@ class Simulation:
             cycle.azimuth,
             self.law,
             self.parameters,
-            **options,
+            balance=cfg.balance,
+            tolerance=cfg.tolerance,
+            max_iterations=cfg.max_iterations,
             **warm,
         )
 
@@ -958,22 +963,26 @@ class _MetricsRow(Deferred):
     @classmethod
     def resolve(cls, items: list[_MetricsRow]) -> list[dict[str, Any]]:
         first = items[0]
-        if all(i.joint is first.joint and i.depth.shape == first.depth.shape for i in items):
-            stacked = profile_metrics(np.stack([i.depth for i in items]), first.joint)
-            columns = {name: values.tolist() for name, values in stacked.items()}
-            metrics = [{name: values[k] for name, values in columns.items()}
-                       for k in range(len(items))]
+        if not all(i.joint is first.joint and i.depth.shape == first.depth.shape for i in items):
+            rows = [evaluate_metrics(i.depth, i.joint) for i in items]
+            names = ("revolution", *rows[0], "contact_iterations")
+            columns = [[row[name] for row in rows] for name in names[1:-1]]
         else:
-            metrics = [evaluate_metrics(i.depth, i.joint) for i in items]
-        return [
-            {
-                "revolution": i.revolution,
-                **m,
-                "contact_iterations": i.iterations,
-                **(i.extra or {}),
-            }
-            for i, m in zip(items, metrics, strict=True)
+            stacked = profile_metrics(np.stack([i.depth for i in items]), first.joint)
+            names = ("revolution", *stacked, "contact_iterations")
+            columns = [values.tolist() for values in stacked.values()]
+        # a dict per row by zip of the columns (a run has a row per revolution)
+        rows = [
+            dict(zip(names, row, strict=True))
+            for row in zip(
+                [i.revolution for i in items], *columns, [i.iterations for i in items],
+                strict=True,
+            )
         ]
+        for row, item in zip(rows, items, strict=True):
+            if item.extra:
+                row.update(item.extra)
+        return rows
 
 
 #: contact solves a run may need, above which the compiled kernel pays for loading numba
@@ -1067,7 +1076,9 @@ def _slope(previous: FloatArray | None, offset: FloatArray, interval: int) -> Fl
     """Change of the pin offset per revolution between two solves [m]."""
     if previous is None or previous.shape != offset.shape or interval <= 0:
         return None
-    return (offset - previous) / interval
+    change = offset - previous
+    # (x / 1 is exact: a per-revolution update skips the division)
+    return change if interval == 1 else change / interval
 
 
 def _along_load(solution: ContactSolution, azimuth: FloatArray) -> FloatArray:

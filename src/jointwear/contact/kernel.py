@@ -41,6 +41,8 @@ ROUND_OFF_ULPS = 4.0
 _COMPILED: Any = None
 #: per (nodes, azimuths): the load lines' node indices, shifts and radius stencil
 _AZIMUTH_CACHE: dict[tuple[int, bytes], _Lines] = {}
+#: the read-only azimuth array of the last call, its node count and lines
+_LAST_LINES: list[tuple[FloatArray, int, _Lines] | None] = [None]
 
 
 def compiled_available() -> bool:
@@ -193,6 +195,7 @@ class _Lines:
         self.zeros_padded = np.zeros(self.padded.size)
         self._filled: dict[float, FloatArray] = {}
         self._scratch = threading.local()
+        self._plan: tuple[SpringLaw, float, float, _WarmPlan] | None = None
 
     def arguments(self, dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
                   upper):  # fmt: skip
@@ -222,6 +225,17 @@ class _Lines:
             work = local.work = module.scratch(self.quarter)
         return work
 
+    def warm_plan(self, law: SpringLaw, spring: float, max_penetration: float | None) -> _WarmPlan:
+        """The :class:`_WarmPlan` of ``law`` with spring area per unit radius ``spring`` [m]
+        and largest penetration ``max_penetration`` [m] (the last one asked is kept)."""
+        reach = np.inf if max_penetration is None else float(max_penetration)
+        last = self._plan
+        if last is not None and last[0] is law and last[1] == spring and last[2] == reach:
+            return last[3]
+        plan = _WarmPlan(self, law, spring, reach)
+        self._plan = (law, spring, reach, plan)
+        return plan
+
     def filled(self, value: float) -> FloatArray:
         """A padded array of ``value`` (kept: the kernel never writes it)."""
         array = self._filled.get(value)
@@ -233,12 +247,18 @@ class _Lines:
 
 
 def _lines(nodes: int, azimuth: FloatArray) -> _Lines:
+    last = _LAST_LINES[0]
+    # the same read-only azimuths as the last call (a run's revolutions): no key to hash
+    if last is not None and last[0] is azimuth and last[1] == nodes:
+        return last[2]
     key = (nodes, azimuth.tobytes())
     lines = _AZIMUTH_CACHE.get(key)
     if lines is None:
         if len(_AZIMUTH_CACHE) >= 4:
             _AZIMUTH_CACHE.pop(next(iter(_AZIMUTH_CACHE)))
         lines = _AZIMUTH_CACHE[key] = _Lines(nodes, azimuth)
+    if not azimuth.flags.writeable:
+        _LAST_LINES[0] = (azimuth, nodes, lines)
     return lines
 
 
@@ -365,39 +385,47 @@ def _warm_revolution(
     if not known.finite:
         return None
     rp = float(pin.radius)
-    dtheta = contour.dtheta
-    spring = dtheta * contour.axial_length
+    plan = known.warm_plan(law, contour.dtheta * contour.axial_length, max_penetration)
     centre_gap = np.empty(m)
     upper = np.empty(m)
     # the arrays the kernel fills: as _arguments, whose NumPy expressions it evaluates
     if law.symmetric:
         gap_ext, load_gap, gap_min = known.zeros_padded, centre_gap, centre_gap
-        area_ext = known.filled(spring if law.force_area is None else float(law.force_area))
+        area_ext = plan.area_ext
         load_area = np.empty(m) if law.force_area is None else known.ones
     else:
         gap_ext, load_gap, gap_min = np.empty(known.padded.size), known.zeros, np.empty(m)
-        if law.force_area is None:
-            area_ext = np.empty(known.padded.size)
-        else:
-            area_ext = known.filled(float(law.force_area))
+        area_ext = np.empty(known.padded.size) if plan.area_ext is None else plan.area_ext
         load_area = known.ones
-    nodes, grid, lines = known.arguments(
-        dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
-    )
-    stencil = known.stencil
-    built = (
-        1 if law.symmetric else 2, law.force_area is None, stencil.lower, stencil.upper,
-        stencil.weight, known.lower_weight, known.padded, spring,
-        np.inf if max_penetration is None else float(max_penetration),
-    )  # fmt: skip
     out = (centre_gap, gap_ext, area_ext, load_gap, load_area, gap_min, upper)
-    if not module.prepare(load, contour.radius, rp, built, out):
+    if not module.prepare(load, contour.radius, rp, plan.built, out):
         return None
+    nodes, grid, lines = known.arguments(
+        contour.dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
+    )
     return _run(
         module, contour, pin, load, known.azimuth, sliding, law, wear_coefficient,
         initial_offset, tolerance, max_iterations, initial_offset, known.zeros, nodes, grid,
         lines, centre_gap, known,
     )  # fmt: skip
+
+
+class _WarmPlan:
+    """What a warm revolution's arguments keep from one revolution to the next, for one
+    law: :func:`jointwear.contact._compiled.prepare`'s ``built`` and the spring areas
+    of a law that fixes them."""
+
+    def __init__(self, known: _Lines, law: SpringLaw, spring: float, reach: float) -> None:
+        stencil = known.stencil
+        self.built = (
+            1 if law.symmetric else 2, law.force_area is None, stencil.lower, stencil.upper,
+            stencil.weight, known.lower_weight, known.padded, spring, reach,
+        )  # fmt: skip
+        self.area_ext = None
+        if law.force_area is not None:
+            self.area_ext = known.filled(float(law.force_area))
+        elif law.symmetric:
+            self.area_ext = known.filled(spring)
 
 
 def _run(
