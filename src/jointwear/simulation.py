@@ -796,15 +796,17 @@ class Simulation:
             self._warned.add(key)
             warnings.warn(message, WearFeedbackWarning, stacklevel=3)
 
-    def _check_assumptions(self, revolution: int, peak: float) -> None:
+    def _check_assumptions(self, revolution: int, wear_depth: FloatArray) -> None:
         """Say once when the continuous-contact assumption of the load is in doubt.
 
-        ``peak``: the deepest wear [m] at ``revolution``.
+        ``wear_depth``: the wear profile [m] at ``revolution``.
         """
         cycle = self.load_cycle
-        if cycle.model != "massless-link":
+        if cycle.model != "massless-link" or {"clearance", "load"} <= self._warned:
             return
         clearance = self.config.joint.clearance
+        # (the peak only until its warning was given: a run checks at every update)
+        peak = clearance if "clearance" in self._warned else float(wear_depth.max())
         if peak >= clearance:
             self._warn_once(
                 "clearance",
@@ -941,7 +943,7 @@ class Simulation:
         due = bisect.bisect_right(targets, last_saved)
         if stopped_by is not None or (due < len(targets) and targets[due] <= revolution):
             profiles = profiles.append((revolution, depth))
-        self._check_assumptions(revolution, float(depth.max()))
+        self._check_assumptions(revolution, depth)
         changes.update(history=base.history.append(row), profiles=profiles)
         return base._evolved(changes)
 

@@ -115,6 +115,22 @@ def pressure_profile(x: ArrayLike, a: ArrayLike, p0: ArrayLike) -> FloatArray:
     return np.where(a > 0, p0 * np.sqrt(inside), 0.0)
 
 
+def _window_profile(x: FloatArray, a: FloatArray, p0: FloatArray) -> FloatArray:
+    """:func:`pressure_profile` of an (M, W) window, row ``k`` with half-width ``a[k]``
+    [m] and peak ``p0[k]`` [Pa], at arc positions ``x`` [m]: the same values, computed
+    in place (a revolution's window is the bulk of a Hertz solve)."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = x / a[:, None]
+    np.multiply(ratio, ratio, out=ratio)
+    np.subtract(1.0, ratio, out=ratio)
+    np.maximum(ratio, 0.0, out=ratio)
+    np.sqrt(ratio, out=ratio)
+    np.multiply(ratio, p0[:, None], out=ratio)
+    if not np.all(a > 0):
+        ratio[~(a > 0)] = 0.0
+    return ratio
+
+
 @dataclass(frozen=True)
 class HertzLaw:
     """Hertz model bound to its parameters (closed form, no spring balance).
@@ -217,13 +233,17 @@ def solve(
     cos_phi = cos_o * cos_s - sin_o * sin_s
     sin_phi = sin_o * cos_s + cos_o * sin_s
     index = (centre[:, None] + offsets) % nodes
-    profile = pressure_profile(r_b[:, None] * phi, a[:, None], p0[:, None])
+    profile = _window_profile(r_b[:, None] * phi, a, p0)
     # Hertz knows nothing of the geometry: past a quarter of the circumference its
     # ellipse would wrap onto the back of the bushing, where a smaller pin cannot
-    # touch (and where cos(beta) < 0 would make springs pull). Cut it at 90 degrees.
-    profile[np.abs(phi) >= 0.5 * np.pi] = 0.0
-    # contacts narrower than a node: share the load between the two nearest nodes
-    narrow = (profile > 0).sum(axis=1) == 0
+    # touch (and where cos(beta) < 0 would make springs pull). Cut it at 90 degrees
+    # (|shift| <= dtheta / 2: a window short of it has nothing to cut).
+    if (width + 0.5) * dtheta >= 0.5 * np.pi:
+        profile[np.abs(phi) >= 0.5 * np.pi] = 0.0
+    # contacts narrower than a node: share the load between the two nearest nodes. The
+    # centre column is the nearest node (|phi| = |shift| <= dtheta / 2, and the profile
+    # falls with |phi| in floating point too): no node is inside where it is not
+    narrow = profile[:, width] <= 0.0
     if np.any(narrow & (load > 0)):
         rows = np.flatnonzero(narrow & (load > 0))
         pos = wrapped[rows] / dtheta
@@ -255,8 +275,9 @@ def solve(
         tangential_force=(force * sin_phi).sum(axis=1),
         half_angle_left=half_angle,
         half_angle_right=half_angle,
-        springs_left=(contact & (phi > 0)).sum(axis=1),
-        springs_right=(contact & (phi < 0)).sum(axis=1),
+        # (phi grows along a row, and only the centre column's sign is its shift's)
+        springs_left=contact[:, width + 1 :].sum(axis=1) + (contact[:, width] & (shift > 0)),
+        springs_right=contact[:, :width].sum(axis=1) + (contact[:, width] & (shift < 0)),
         iterations=np.zeros(load.size, dtype=np.int64),
         model="hertz",
     )
