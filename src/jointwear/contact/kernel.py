@@ -19,7 +19,7 @@ import math
 import os
 import threading
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -117,47 +117,53 @@ class RevolutionWear:
         eccentricity and the penetration are assembled when first read."""
         if self._solution is not None:
             return self._solution
-        _, _, azimuth, law, centre_gap = self._context
-        lazy = {
-            "pressure": self._dense,
-            "eccentricity": lambda: (
-                self.offset[:, None] * np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
-            ),
-            "penetration": lambda: np.maximum(self.offset - centre_gap, 0.0),
-        }
-        return _WindowSolution(
-            lazy,
-            self,
-            normal_force=self.normal_force,
-            tangential_force=self.tangential_force,
-            half_angle_left=self.half_angle_left,
-            half_angle_right=self.half_angle_right,
-            springs_left=self.springs_left,
-            springs_right=self.springs_right,
-            iterations=self.iterations,
-            model=law.name,
-        )
+        return _WindowSolution(self)
+
+    def _eccentricity(self) -> FloatArray:
+        azimuth = self._context[2]
+        return self.offset[:, None] * np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
+
+    def _penetration(self) -> FloatArray:
+        return np.maximum(self.offset - self._context[4], 0.0)
 
 
 class _WindowSolution(ContactSolution):
-    """A :class:`ContactSolution` whose bulkier fields are assembled when first read.
+    """A :class:`ContactSolution` whose fields are taken from its :class:`RevolutionWear`
+    when first read, the bulkier ones assembled then.
 
     Inside a run only the wear (``revolution``), the iterations and the half-angles are
     read; the dense pressure alone would be an (M, N) array per revolution.
     """
 
-    def __init__(self, lazy: dict[str, Any], revolution: RevolutionWear, **fields: Any):
-        # the instance's dict at once: frozen, each object.__setattr__ costs its call
-        vars(self).update(fields, revolution=revolution, _lazy=lazy)
+    #: fields assembled on first read, by the method of the revolution that builds them
+    _ASSEMBLED: ClassVar[dict[str, str]] = {
+        "pressure": "_dense", "eccentricity": "_eccentricity", "penetration": "_penetration"
+    }
+    #: fields that are the revolution's own
+    _SHARED = frozenset(
+        {"normal_force", "tangential_force", "half_angle_left", "half_angle_right",
+         "springs_left", "springs_right", "iterations"}
+    )  # fmt: skip
+
+    def __init__(self, revolution: RevolutionWear):
+        # frozen: the instance's dict directly (object.__setattr__ costs its call)
+        self.__dict__["revolution"] = revolution
 
     def __getattr__(self, name: str) -> Any:
-        # only reached for attributes not set yet: a lazy field, on first use
-        lazy = self.__dict__.get("_lazy", {})
-        if name in lazy:
-            value = lazy[name]()
-            object.__setattr__(self, name, value)
-            return value
-        raise AttributeError(name)
+        # only reached for attributes not set yet: a field, on first use
+        revolution = self.__dict__.get("revolution")
+        if revolution is None:
+            raise AttributeError(name)
+        if name in self._SHARED:
+            value = getattr(revolution, name)
+        elif name in self._ASSEMBLED:
+            value = getattr(revolution, self._ASSEMBLED[name])()
+        elif name == "model":
+            value = revolution._context[3].name
+        else:
+            raise AttributeError(name)
+        self.__dict__[name] = value
+        return value
 
     @property
     def loads(self) -> int:
