@@ -440,7 +440,7 @@ def _run(
 ):  # fmt: skip
     """The compiled revolution and its :class:`RevolutionWear`."""
     m = load.size
-    floats = np.zeros((6, m))
+    floats = np.zeros((5, m))
     counts = np.zeros((5, m), dtype=np.int64)
     work = known.scratch(module)
     wear_ext = np.zeros(known.padded.size)
@@ -451,8 +451,10 @@ def _run(
         floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
         work[5].view(np.int64),
     )  # fmt: skip
-    offset, total, tangential, left, right, peak = floats
-    np.multiply(counts[4].view(np.float64), law.coefficient, out=peak)
+    offset, total, tangential, left, right = floats
+    # the peak p / k of each load, as bits: the pressure in place of them
+    peak = counts[4].view(np.float64)
+    peak *= law.coefficient
     if failed:
         _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
 
