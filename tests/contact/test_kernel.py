@@ -194,3 +194,27 @@ def test_numba_is_imported_only_when_used():
         [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env
     )
     assert out.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize("shape", ["circle", "worn"])
+@pytest.mark.parametrize("model", MODELS)
+def test_warm_arguments_are_the_numpy_ones(config, model, shape):
+    """The compiled warm entry fills the kernel's arguments with the NumPy expressions of
+    the general path, evaluated in one loop: every array and constant the same, to
+    round-off (the compiler may contract a product and a sum). Gaps are differences of
+    radii: their round-off is a few ulp of the radius, not of the gap."""
+    args, options = revolution_inputs(config, model, shape)
+    contour, pin, load, azimuth, _, law, _ = args
+    reach = options["max_penetration"]
+    warm = kernel._warm_arguments(kernel._compiled(), contour, pin, load, azimuth, law, reach)
+    assert warm is not None
+    cold = kernel._arguments(contour, pin, load, azimuth, law, reach)
+    radius_ulps = 4 * np.finfo(float).eps * float(contour.radius.max())
+    # (nodes, grid, lines): the positions of the gaps in each tuple
+    gaps = ({0}, set(), {3, 5, 6, 7})
+    for built, expected, gap in zip(warm[:3], cold[:3], gaps, strict=True):
+        assert len(built) == len(expected)
+        for position, (a, b) in enumerate(zip(built, expected, strict=True)):
+            atol = radius_ulps if position in gap else 0.0
+            np.testing.assert_allclose(a, b, rtol=4e-16, atol=atol)
+    np.testing.assert_allclose(warm[3], cold[3], rtol=0, atol=radius_ulps)

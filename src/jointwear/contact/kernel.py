@@ -387,14 +387,31 @@ def _warm_revolution(
         and load.shape == azimuth.shape == sliding.shape == initial_offset.shape == (m,)
     ):
         return None
+    arguments = _warm_arguments(module, contour, pin, load, azimuth, law, max_penetration)
+    if arguments is None:
+        return None
+    nodes, grid, lines, centre_gap, known = arguments
+    return _run(
+        module, contour, pin, load, known.azimuth, sliding, law, wear_coefficient,
+        initial_offset, tolerance, max_iterations, initial_offset, known.zeros, nodes, grid,
+        lines, centre_gap, known,
+    )  # fmt: skip
+
+
+def _warm_arguments(module, contour, pin, load, azimuth, law, max_penetration):
+    """:func:`_arguments` of float arrays, filled by the compiled ``prepare``: its NumPy
+    expressions evaluated in one loop, and its checks (None where one fails: the caller
+    takes the general path, which raises the error).
+    """
     known = _lines(contour.nodes, azimuth)
     if not known.finite:
         return None
+    m = load.size
     rp = float(pin.radius)
     plan = known.warm_plan(law, contour.dtheta * contour.axial_length, max_penetration)
     centre_gap = np.empty(m)
     upper = np.empty(m)
-    # the arrays the kernel fills: as _arguments, whose NumPy expressions it evaluates
+    # the arrays the kernel fills: those of _arguments, laid out as there
     if law.symmetric:
         gap_ext, load_gap, gap_min = known.zeros_padded, centre_gap, centre_gap
         area_ext = plan.area_ext
@@ -409,11 +426,7 @@ def _warm_revolution(
     nodes, grid, lines = known.arguments(
         contour.dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
     )
-    return _run(
-        module, contour, pin, load, known.azimuth, sliding, law, wear_coefficient,
-        initial_offset, tolerance, max_iterations, initial_offset, known.zeros, nodes, grid,
-        lines, centre_gap, known,
-    )  # fmt: skip
+    return nodes, grid, lines, centre_gap, known
 
 
 class _WarmPlan:
