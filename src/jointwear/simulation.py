@@ -44,7 +44,7 @@ from jointwear import mechanism
 from jointwear.config import Config
 from jointwear.contact import ContactParameters, ContactSolution, contact_law
 from jointwear.contact import solve as solve_contact
-from jointwear.contact.kernel import revolution_wear
+from jointwear.contact.kernel import WarmRevolutions, revolution_wear
 from jointwear.contact.laws import SpringLaw
 from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
 from jointwear.errors import WearFeedbackWarning
@@ -324,6 +324,7 @@ class Simulation:
         self.schedule = DynamicsSchedule.from_config(config)
         self._warned: set[str] = set()
         self._sliding: tuple[mechanism.LoadCycle, FloatArray] | None = None
+        self._warm_kernel: tuple[mechanism.LoadCycle, WarmRevolutions | None] | None = None
 
     # ---------------------------------------------------------------- stages
     @property
@@ -434,6 +435,13 @@ class Simulation:
         if state is not None and self._fused and cfg.balance == "paper" and isinstance(
             self.law, SpringLaw
         ):
+            if warm:
+                revolutions = self._warm_revolutions(cycle)
+                solved = None if revolutions is None else revolutions(contour, guess)
+                if solved is not None:
+                    return solved.solution()
+            # (a cold start, or inputs the warm revolutions refuse: the general path,
+            # which raises where they were wrong)
             return revolution_wear(
                 contour,
                 self.pin,
@@ -460,6 +468,22 @@ class Simulation:
             max_iterations=cfg.max_iterations,
             **warm,
         )
+
+    def _warm_revolutions(self, cycle: mechanism.LoadCycle) -> WarmRevolutions | None:
+        """The compiled kernel's warm revolutions of ``cycle``, set up once per cycle
+        (None without the kernel: :func:`revolution_wear` takes the NumPy path)."""
+        kept = self._warm_kernel
+        if kept is None or kept[0] is not cycle:
+            cfg = self.config.contact
+            revolutions = WarmRevolutions.of(
+                self.pin, cycle.load, cycle.azimuth, self.sliding_distance, self.law,
+                self.config.materials.bushing.wear_coefficient, nodes=cfg.nodes,
+                axial_length=self.config.joint.axial_length,
+                max_penetration=self.parameters.bushing_thickness, tolerance=cfg.tolerance,
+                max_iterations=cfg.max_iterations, compiled=self._compiled,
+            )  # fmt: skip
+            kept = self._warm_kernel = (cycle, revolutions)
+        return kept[1]
 
     def _solve_worn_pin(
         self, contour: BushingContour, pin_depth: FloatArray, options: dict[str, Any]

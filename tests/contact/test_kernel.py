@@ -204,9 +204,13 @@ def test_warm_arguments_are_the_numpy_ones(config, model, shape):
     round-off (the compiler may contract a product and a sum). Gaps are differences of
     radii: their round-off is a few ulp of the radius, not of the gap."""
     args, options = revolution_inputs(config, model, shape)
-    contour, pin, load, azimuth, _, law, _ = args
+    contour, pin, load, azimuth, sliding, law, k_d = args
     reach = options["max_penetration"]
-    warm = kernel._warm_arguments(kernel._compiled(), contour, pin, load, azimuth, law, reach)
+    revolutions = kernel.WarmRevolutions.of(
+        pin, load, azimuth, sliding, law, k_d, nodes=contour.nodes,
+        axial_length=contour.axial_length, max_penetration=reach,
+    )  # fmt: skip
+    warm = revolutions.arguments(contour)
     assert warm is not None
     cold = kernel._arguments(contour, pin, load, azimuth, law, reach)
     radius_ulps = 4 * np.finfo(float).eps * float(contour.radius.max())

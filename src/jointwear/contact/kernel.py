@@ -32,7 +32,7 @@ from jointwear.errors import ContactError
 from jointwear.geometry.contour import BushingContour, Pin, RadiusStencil
 from jointwear.tribology.archard import wear_depth
 
-__all__ = ["RevolutionWear", "compiled_available", "revolution_wear"]
+__all__ = ["RevolutionWear", "WarmRevolutions", "compiled_available", "revolution_wear"]
 
 FloatArray = NDArray[np.float64]
 
@@ -175,6 +175,7 @@ class _Lines:
     """Contour-independent data of the load lines: node nearest each, and its shift."""
 
     def __init__(self, nodes: int, azimuth: FloatArray) -> None:
+        self.nodes = nodes
         dtheta = 2 * np.pi / nodes
         wrapped = np.mod(azimuth, 2 * np.pi)
         self.centre = np.rint(wrapped / dtheta).astype(np.int64)
@@ -201,7 +202,6 @@ class _Lines:
         self.zeros_padded = np.zeros(self.padded.size)
         self._filled: dict[float, FloatArray] = {}
         self._scratch = threading.local()
-        self._plan: tuple[SpringLaw, float, float, _WarmPlan] | None = None
 
     def arguments(self, dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
                   upper):  # fmt: skip
@@ -230,17 +230,6 @@ class _Lines:
         if work is None:
             work = local.work = module.scratch(self.quarter)
         return work
-
-    def warm_plan(self, law: SpringLaw, spring: float, max_penetration: float | None) -> _WarmPlan:
-        """The :class:`_WarmPlan` of ``law`` with spring area per unit radius ``spring`` [m]
-        and largest penetration ``max_penetration`` [m] (the last one asked is kept)."""
-        reach = np.inf if max_penetration is None else float(max_penetration)
-        last = self._plan
-        if last is not None and last[0] is law and last[1] == spring and last[2] == reach:
-            return last[3]
-        plan = _WarmPlan(self, law, spring, reach)
-        self._plan = (law, spring, reach, plan)
-        return plan
 
     def filled(self, value: float) -> FloatArray:
         """A padded array of ``value`` (kept: the kernel never writes it)."""
@@ -332,10 +321,11 @@ def revolution_wear(
             max_penetration, initial_offset, window, tolerance, max_iterations,
         )  # fmt: skip
     if initial_offset is not None:
-        result = _warm_revolution(
-            module, contour, pin, load, azimuth, sliding_distance, law, wear_coefficient,
-            max_penetration, initial_offset, tolerance, max_iterations,
+        warm = WarmRevolutions._of_module(
+            module, pin, load, azimuth, sliding_distance, law, wear_coefficient,
+            contour.nodes, contour.axial_length, max_penetration, tolerance, max_iterations,
         )  # fmt: skip
+        result = None if warm is None else warm(contour, initial_offset)
         if result is not None:
             return result
     load, azimuth = checked_loads(load, azimuth)
@@ -368,83 +358,134 @@ def revolution_wear(
     )  # fmt: skip
 
 
-def _warm_revolution(
-    module, contour, pin, load, azimuth, sliding, law, wear_coefficient, max_penetration,
-    initial_offset, tolerance, max_iterations,
-):  # fmt: skip
-    """:func:`revolution_wear` from guesses with the contour's arguments built and the
-    input checked by the compiled kernel (a dozen NumPy calls less).
+class WarmRevolutions:
+    """Warm-started compiled revolutions of one load cycle, on contours that change.
 
-    None where the inputs are not plain float arrays of one length, or fail a check (the
-    general path then raises its error).
+    A run solves the same loads on a new contour at every update: what stays the same
+    (the loads, azimuths and sliding distances, checked once to be plain float arrays;
+    the load lines, the law's constants, the scratch) is set up here once. A call builds
+    the contour's arguments in one compiled loop (``prepare``: the NumPy expressions of
+    the general path, which it also checks) and runs the revolution from the guesses.
+    Build it with :meth:`of`.
     """
-    ndarray = np.ndarray
-    if not (type(load) is type(azimuth) is type(sliding) is type(initial_offset) is ndarray):
-        return None
-    m = load.size
-    if not (
-        load.dtype == azimuth.dtype == sliding.dtype == initial_offset.dtype == np.float64
-        and load.shape == azimuth.shape == sliding.shape == initial_offset.shape == (m,)
-    ):
-        return None
-    arguments = _warm_arguments(module, contour, pin, load, azimuth, law, max_penetration)
-    if arguments is None:
-        return None
-    nodes, grid, lines, centre_gap, known = arguments
-    return _run(
-        module, contour, pin, load, known.azimuth, sliding, law, wear_coefficient,
-        initial_offset, tolerance, max_iterations, initial_offset, known.zeros, nodes, grid,
-        lines, centre_gap, known,
-    )  # fmt: skip
 
-
-def _warm_arguments(module, contour, pin, load, azimuth, law, max_penetration):
-    """:func:`_arguments` of float arrays, filled by the compiled ``prepare``: its NumPy
-    expressions evaluated in one loop, and its checks (None where one fails: the caller
-    takes the general path, which raises the error).
-    """
-    known = _lines(contour.nodes, azimuth)
-    if not known.finite:
-        return None
-    m = load.size
-    rp = float(pin.radius)
-    plan = known.warm_plan(law, contour.dtheta * contour.axial_length, max_penetration)
-    centre_gap = np.empty(m)
-    upper = np.empty(m)
-    # the arrays the kernel fills: those of _arguments, laid out as there
-    if law.symmetric:
-        gap_ext, load_gap, gap_min = known.zeros_padded, centre_gap, centre_gap
-        area_ext = plan.area_ext
-        load_area = np.empty(m) if law.force_area is None else known.ones
-    else:
-        gap_ext, load_gap, gap_min = np.empty(known.padded.size), known.zeros, np.empty(m)
-        area_ext = np.empty(known.padded.size) if plan.area_ext is None else plan.area_ext
-        load_area = known.ones
-    out = (centre_gap, gap_ext, area_ext, load_gap, load_area, gap_min, upper)
-    if not module.prepare(load, contour.radius, rp, plan.built, out):
-        return None
-    nodes, grid, lines = known.arguments(
-        contour.dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
-    )
-    return nodes, grid, lines, centre_gap, known
-
-
-class _WarmPlan:
-    """What a warm revolution's arguments keep from one revolution to the next, for one
-    law: :func:`jointwear.contact._compiled.prepare`'s ``built`` and the spring areas
-    of a law that fixes them."""
-
-    def __init__(self, known: _Lines, law: SpringLaw, spring: float, reach: float) -> None:
+    def __init__(
+        self, module: Any, pin: Pin, load: FloatArray, azimuth: FloatArray,
+        sliding: FloatArray, law: PowerLaw, wear_coefficient: float, known: _Lines,
+        axial_length: float, reach: float, tolerance: float, max_iterations: int,
+    ) -> None:  # fmt: skip
+        self.module, self.pin, self.law, self.known = module, pin, law, known
+        self.load, self.sliding, self.wear_coefficient = load, sliding, wear_coefficient
+        self.nodes, self.axial_length = known.nodes, axial_length
+        self.tolerance, self.max_iterations = tolerance, max_iterations
+        self.rp = float(pin.radius)
+        spring = 2.0 * np.pi / self.nodes * axial_length
         stencil = known.stencil
+        #: ``prepare``'s ``built``
         self.built = (
             1 if law.symmetric else 2, law.force_area is None, stencil.lower, stencil.upper,
             stencil.weight, known.lower_weight, known.padded, spring, reach,
         )  # fmt: skip
+        #: the spring areas, where the law fixes them
         self.area_ext = None
         if law.force_area is not None:
             self.area_ext = known.filled(float(law.force_area))
         elif law.symmetric:
             self.area_ext = known.filled(spring)
+
+    @classmethod
+    def of(
+        cls, pin: Pin, load: FloatArray, azimuth: FloatArray, sliding_distance: FloatArray,
+        law: SpringLaw, wear_coefficient: float, *, nodes: int, axial_length: float,
+        max_penetration: float | None = None, tolerance: float = 1e-12,
+        max_iterations: int = 100, compiled: bool | None = None,
+    ) -> WarmRevolutions | None:  # fmt: skip
+        """The warm revolutions of a load cycle, or None where the compiled kernel does
+        not apply (law, numba, ``compiled=False``) or the inputs are not plain float
+        arrays of one length with finite azimuths (:func:`revolution_wear` then serves).
+
+        Parameters are those of :func:`revolution_wear`; ``nodes`` and ``axial_length``
+        [m] those of the contours to come.
+        """
+        applies = isinstance(law, PowerLaw) and law.exponent in (1.0, 1.5)
+        module = _compiled() if applies and compiled is not False else None
+        if module is None:
+            return None
+        return cls._of_module(
+            module, pin, load, azimuth, sliding_distance, law, wear_coefficient, nodes,
+            axial_length, max_penetration, tolerance, max_iterations,
+        )  # fmt: skip
+
+    @classmethod
+    def _of_module(
+        cls, module, pin, load, azimuth, sliding, law, wear_coefficient, nodes, axial_length,
+        max_penetration, tolerance, max_iterations,
+    ):  # fmt: skip
+        ndarray = np.ndarray
+        if not (type(load) is type(azimuth) is type(sliding) is ndarray):
+            return None
+        m = load.size
+        if not (
+            load.dtype == azimuth.dtype == sliding.dtype == np.float64
+            and load.shape == azimuth.shape == sliding.shape == (m,)
+        ):
+            return None
+        known = _lines(nodes, azimuth)
+        if not known.finite:
+            return None
+        reach = np.inf if max_penetration is None else float(max_penetration)
+        return cls(
+            module, pin, load, known.azimuth, sliding, law, wear_coefficient, known,
+            axial_length, reach, tolerance, max_iterations,
+        )  # fmt: skip
+
+    def __call__(
+        self, contour: BushingContour, initial_offset: FloatArray
+    ) -> RevolutionWear | None:
+        """The revolution on ``contour`` from the guesses ``initial_offset`` [m]; None where
+        the contour or the guesses are not those this was set up for, or a check fails
+        (:func:`revolution_wear` then raises its error)."""
+        arguments = self.arguments(contour)
+        guess = initial_offset
+        if arguments is None or not (
+            type(guess) is np.ndarray and guess.dtype == np.float64
+            and guess.shape == self.load.shape
+        ):  # fmt: skip
+            return None
+        nodes, grid, lines, centre_gap = arguments
+        known = self.known
+        return _run(
+            self.module, contour, self.pin, self.load, known.azimuth, self.sliding, self.law,
+            self.wear_coefficient, guess, self.tolerance, self.max_iterations, guess,
+            known.zeros, nodes, grid, lines, centre_gap, known,
+        )  # fmt: skip
+
+    def arguments(self, contour: BushingContour) -> tuple[Any, ...] | None:
+        """:func:`_arguments` on ``contour``, filled by the compiled ``prepare``: ``nodes``,
+        ``grid``, ``lines`` and the gap on each load line [m]; None where a check fails."""
+        if contour.nodes != self.nodes or contour.axial_length != self.axial_length:
+            return None
+        known, law = self.known, self.law
+        m = self.load.size
+        centre_gap = np.empty(m)
+        upper = np.empty(m)
+        # the arrays the kernel fills: those of _arguments, laid out as there
+        if law.symmetric:
+            gap_ext, load_gap, gap_min = known.zeros_padded, centre_gap, centre_gap
+            area_ext = self.area_ext
+            load_area = np.empty(m) if law.force_area is None else known.ones
+        else:
+            gap_ext, load_gap, gap_min = np.empty(known.padded.size), known.zeros, np.empty(m)
+            area_ext = np.empty(known.padded.size) if self.area_ext is None else self.area_ext
+            load_area = known.ones
+        out = (centre_gap, gap_ext, area_ext, load_gap, load_area, gap_min, upper)
+        if not self.module.prepare(self.load, contour.radius, self.rp, self.built, out):
+            return None
+        nodes, grid, lines = known.arguments(
+            contour.dtheta, self.rp, law, gap_ext, area_ext, load_gap, load_area, gap_min,
+            gap_min, upper,
+        )  # fmt: skip
+        return nodes, grid, lines, centre_gap
 
 
 def _run(
@@ -465,6 +506,8 @@ def _run(
         work[5].view(np.int64),
     )  # fmt: skip
     offset, total, tangential, left, right = floats
+    # the revolution's own: a state keeps its wear uncopied
+    wear.setflags(write=False)
     # the peak p / k of each load, as bits: the pressure in place of them
     peak = counts[4].view(np.float64)
     peak *= law.coefficient
