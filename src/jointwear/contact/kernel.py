@@ -146,8 +146,9 @@ class _WindowSolution(ContactSolution):
     )  # fmt: skip
 
     def __init__(self, revolution: RevolutionWear):
-        # frozen: the instance's dict directly (object.__setattr__ costs its call)
-        self.__dict__["revolution"] = revolution
+        # frozen: the instance's dict directly (object.__setattr__ costs its call); the
+        # iterations now, as every revolution of a run reads them
+        self.__dict__.update(revolution=revolution, iterations=revolution.iterations)
 
     def __getattr__(self, name: str) -> Any:
         # only reached for attributes not set yet: a field, on first use
