@@ -825,8 +825,11 @@ class Simulation:
 
         ``wear_depth``: the wear profile [m] at ``revolution``.
         """
+        warned = self._warned
+        if "clearance" in warned and "load" in warned:
+            return
         cycle = self.load_cycle
-        if cycle.model != "massless-link" or {"clearance", "load"} <= self._warned:
+        if cycle.model != "massless-link":
             return
         clearance = self.config.joint.clearance
         # (the peak only until its warning was given: a run checks at every update)
@@ -947,7 +950,8 @@ class Simulation:
         pin_depth = changes.get("pin_wear_depth", base.pin_wear_depth)
         stopped_by = changes.get("stopped_by", base.stopped_by)
         profiles = changes.get("profiles", base.profiles)
-        depth = np.asarray(depth, dtype=float)
+        if type(depth) is not np.ndarray or depth.dtype != np.float64:
+            depth = np.asarray(depth, dtype=float)
         if depth.flags.writeable:  # the row keeps it until it is read
             depth = depth.copy()
             depth.setflags(write=False)
@@ -1116,12 +1120,11 @@ def _along_load(solution: ContactSolution, azimuth: FloatArray) -> FloatArray:
 def _grown(contour: BushingContour, increment: FloatArray) -> FloatArray:
     """The wear depth of ``update_contour(contour, increment)`` [m], without building the
     contour unless it would be refused (it then raises as the update does)."""
-    depth = contour.wear_depth + increment
-    radius = contour.radius + increment
-    # (a NaN fails both comparisons)
-    if not (radius.min() > 0.0 and radius.max() < np.inf):
+    # the contour's radii are valid, and so are they grown by a finite increment that is
+    # nowhere negative (a NaN fails both comparisons): else the update decides
+    if not (increment.min() >= 0.0 and increment.max() < np.inf):
         return update_contour(contour, increment).wear_depth
-    return depth
+    return contour.wear_depth + increment
 
 
 def _window_nodes(solution: ContactSolution, contour: BushingContour) -> int:

@@ -226,10 +226,12 @@ class SimulationState:
         fields_of.update(self.__dict__)
         fields_of.update(changes)
         for name in _ARRAY_FIELDS:
-            if name in changes:
-                value = changes[name]
-                if value is not None:
-                    fields_of[name] = _frozen(value)
+            value = changes.get(name)
+            # (inline _frozen: a state per revolution; the loop's arrays come read-only)
+            if value is not None and not (
+                type(value) is np.ndarray and not value.flags.writeable
+            ):
+                fields_of[name] = _frozen(value)
         return new
 
     @property
