@@ -70,8 +70,10 @@ def scratch(quarter: int) -> tuple[np.ndarray, ...]:
 
 
 @njit(inline="always", **_FLAGS)
-def _evaluate(s, rp, exponent, nodes, grid, line, width, work, curved):
+def _evaluate(s, rp, exponent, nodes, grid, line, right, left, work, curved):
     """Springs of one load at offset ``s`` [m]: (force [N], slope [N/m], curvature [N/m^2]).
+
+    The window holds the nodes ``-right .. left`` of the load's centre node.
 
     The window geometry and the springs in one pass (:func:`_springs`); the curvature
     for linear springs, and for ``delta^1.5`` where ``curved`` (NaN otherwise). Each
@@ -83,21 +85,21 @@ def _evaluate(s, rp, exponent, nodes, grid, line, width, work, curved):
     # (literal arguments: each call below is a loop of its own)
     if exponent == 1.0:
         if terms == 4:
-            return _springs(s, nodes, grid, line, width, work, _LINEAR, 4)
+            return _springs(s, nodes, grid, line, right, left, work, _LINEAR, 4)
         if terms == 8:
-            return _springs(s, nodes, grid, line, width, work, _LINEAR, 8)
-        return _springs(s, nodes, grid, line, width, work, _LINEAR, 0)
+            return _springs(s, nodes, grid, line, right, left, work, _LINEAR, 8)
+        return _springs(s, nodes, grid, line, right, left, work, _LINEAR, 0)
     if curved:
         if terms == 4:
-            return _springs(s, nodes, grid, line, width, work, _CURVED, 4)
+            return _springs(s, nodes, grid, line, right, left, work, _CURVED, 4)
         if terms == 8:
-            return _springs(s, nodes, grid, line, width, work, _CURVED, 8)
-        return _springs(s, nodes, grid, line, width, work, _CURVED, 0)
+            return _springs(s, nodes, grid, line, right, left, work, _CURVED, 8)
+        return _springs(s, nodes, grid, line, right, left, work, _CURVED, 0)
     if terms == 4:
-        return _springs(s, nodes, grid, line, width, work, _HERTZIAN, 4)
+        return _springs(s, nodes, grid, line, right, left, work, _HERTZIAN, 4)
     if terms == 8:
-        return _springs(s, nodes, grid, line, width, work, _HERTZIAN, 8)
-    return _springs(s, nodes, grid, line, width, work, _HERTZIAN, 0)
+        return _springs(s, nodes, grid, line, right, left, work, _HERTZIAN, 8)
+    return _springs(s, nodes, grid, line, right, left, work, _HERTZIAN, 0)
 
 
 @njit(inline="always", **_FLAGS)
@@ -143,7 +145,7 @@ def _spring(depth, law):
 
 
 @njit(inline="always", **_FLAGS)
-def _springs(s, nodes, grid, line, width, work, law, terms):
+def _springs(s, nodes, grid, line, right, left, work, law, terms):
     """``sum_j p_j A_j cos(phi_j)``, its slope in ``s`` and (linear springs) its curvature.
 
     ``law`` is ``_LINEAR`` (``p = k delta``), ``_HERTZIAN`` (``p = k delta^1.5``) or
@@ -162,7 +164,7 @@ def _springs(s, nodes, grid, line, width, work, law, terms):
     base, cs, ss, load_gap, load_area = line
     # unsigned offsets: numba wraps a possibly negative index (a gather), and a slice per
     # array would cost its reference counting per evaluation
-    start, first = uint64(base - width), uint64(quarter - width)
+    start, first = uint64(base - right), uint64(quarter - right)
     depth, slopes, bends, weights, sides, press = work
     factor = coefficient * load_area
     total = 0.0
@@ -170,7 +172,7 @@ def _springs(s, nodes, grid, line, width, work, law, terms):
     second = 0.0
     s2 = s * s
     inv_rp = 1.0 / rp
-    for j in range(uint64(2 * width + 1)):
+    for j in range(uint64(right + left + 1)):
         c = co[first + j] * cs - so[first + j] * ss
         sn = so[first + j] * cs + co[first + j] * ss
         sin2 = sn * sn
@@ -201,7 +203,7 @@ def _springs(s, nodes, grid, line, width, work, law, terms):
 
 
 @njit(inline="always", **_FLAGS)
-def _springs_moved(step, width, work, law):
+def _springs_moved(step, size, work, law):
     """:func:`_springs` after a small step [m] from the last evaluation, without geometry or
     pin curvature: ``delta_j += step delta_j' + step^2 delta_j'' / 2`` and ``delta_j' +=
     step delta_j''``, with ``delta_j''`` of the last full evaluation (the neglected terms
@@ -211,7 +213,7 @@ def _springs_moved(step, width, work, law):
     slope = 0.0
     second = 0.0
     half = 0.5 * step
-    for j in range(uint64(2 * width + 1)):
+    for j in range(uint64(size)):
         weight, along, bend = weights[j], slopes[j], bends[j]
         d = depth[j] + step * (along + half * bend)
         along += step * bend
@@ -247,6 +249,37 @@ def _reach(s, gap_min, half_cos, quarter, hint):
 
 
 @njit(inline="always", **_FLAGS)
+def _trim(top, nodes, quarter, line, reach):
+    """Nodes right and left of the centre node [nodes] a window needs to hold every node
+    that can touch up to offset ``top`` [m], within the reach ``reach`` (:func:`_reach`).
+
+    Node ``o`` is at most ``s cos(phi_o) - g_o`` deep at offset ``s`` (the pin-curvature
+    term only lowers it), so for ``s <= top`` it touches only if ``top cos(phi_o) >
+    g_o``. The reach bounds the window from the global smallest gap ``g_min``; on a worn
+    contour the gaps near the load line are larger, and the worn groove lags the load
+    line, so the contact lies to one side of it: late in a run the reach's symmetric
+    window is half as wide again as the contact. Each side is scanned in from the
+    reach's edge to its outermost node that can touch, plus one node (the contact edge
+    is interpolated towards the next node out, :func:`_extent`).
+    """
+    gap, co, so = nodes[0], nodes[2], nodes[3]
+    base, cs, ss, load_gap = line[0], line[1], line[2], line[3]
+    right = reach
+    while right > 1:
+        o = uint64(quarter - right)
+        if top * (co[o] * cs - so[o] * ss) > gap[uint64(base - right)] + load_gap:
+            break
+        right -= 1
+    left = reach
+    while left > 1:
+        o = uint64(quarter + left)
+        if top * (co[o] * cs - so[o] * ss) > gap[uint64(base + left)] + load_gap:
+            break
+        left -= 1
+    return min(right + 1, reach), min(left + 1, reach)
+
+
+@njit(inline="always", **_FLAGS)
 def _step(s, f, slope, total, second, curvature):
     """Chebyshev's step: with the curvature ``second`` where known, else from ``kappa``.
 
@@ -260,16 +293,17 @@ def _step(s, f, slope, total, second, curvature):
 
 
 @njit(inline="always", **_FLAGS)
-def _moves(law, step, width, work):
-    """:func:`_springs_moved` with the law as a literal."""
+def _moves(law, step, size, work):
+    """:func:`_springs_moved` over ``size`` nodes with the law as a literal."""
     if law == _LINEAR:
-        return _springs_moved(step, width, work, _LINEAR)
-    return _springs_moved(step, width, work, _HERTZIAN)
+        return _springs_moved(step, size, work, _LINEAR)
+    return _springs_moved(step, size, work, _HERTZIAN)
 
 
 @njit(inline="always", **_FLAGS)
 def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hint, cold):
-    """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, width, its, ok).
+    """Bracketed Newton for one load from ``s`` [m]: (offset, force, slope, window's nodes
+    right and left of the centre node, reach, its, ok).
 
     Accepted: ``|f| <= max(atol, 8 eps sum|f_j|)`` (the paper's 1e-12 N with a round-off
     floor); or a residual that ``ulps`` units in the last place of ``s`` explain, where
@@ -289,7 +323,9 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     lo, hi = lower, upper
     s = min(max(s, lo), hi)
     hits = 0
-    width = 1
+    right = 1
+    left = 1
+    reach = hint + 1
     limit = -np.inf  # largest offset the window of the last full evaluation holds
     travel = np.inf
     total = 0.0
@@ -301,27 +337,31 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
         step = s - previous
         if travel + abs(step) <= small and s <= limit:
             travel += abs(step)
-            total, slope, second = _moves(law, step, width, work)
+            total, slope, second = _moves(law, step, right + left + 1, work)
         else:
-            width = _reach(s, gap_min, half_cos, quarter, hint)
-            hint = width - 1
-            limit = np.inf if width >= quarter else gap_min / half_cos[width - 1]
+            reach = _reach(s, gap_min, half_cos, quarter, hint)
+            hint = reach - 1
+            # Taylor steps stay within ``small`` of s: the window holds every node that
+            # can touch up to ``s + small``, the reach up to its own bound
+            top = s + small
+            right, left = _trim(top, nodes, quarter, line, reach)
+            limit = top if reach >= quarter else min(top, gap_min / half_cos[reach - 1])
             travel = 0.0
             total, slope, second = _evaluate(
-                s, rp, exponent, nodes, grid, line, width, work, cold
+                s, rp, exponent, nodes, grid, line, right, left, work, cold
             )
         previous = s
         f = total - load
         error = abs(f)
         if error <= max(atol, 8.0 * _EPS * total):
-            return s, total, slope, width, it, True
+            return s, total, slope, right, left, reach, it, True
         if slope > 0.0 and error <= ulps * _EPS * abs(s) * slope:
             # a residual a few ulp of s explain: accept it if Newton's step is below one
             # ulp (it would round to s, and a step rejected by the bracket would bisect
             # a wide one), else after one more step
             hits += 1
             if hits >= 2 or error <= _EPS * abs(s) * slope:
-                return s, total, slope, width, it, True
+                return s, total, slope, right, left, reach, it, True
         if f < 0.0:
             lo = s
         else:
@@ -332,9 +372,9 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
         bracket = hi - lo
         ulp = _EPS * abs(s)
         if bracket <= 4.0 * max(ulp, 1e-300):
-            return s, total, slope, width, it, error <= 2.0 * slope * max(bracket, ulp)
+            return s, total, slope, right, left, reach, it, error <= 2.0 * slope * max(bracket, ulp)
         s = new
-    return s, total, slope, width, max_iterations, False
+    return s, total, slope, right, left, reach, max_iterations, False
 
 
 @njit(_nrt=False, **_FLAGS)
@@ -367,7 +407,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     previous_total = 0.0
     previous_slope = 0.0
     drift = 0.0
-    width = 2  # the last load's window: where the next one's reach is looked for
+    reach = 2  # the last load's reach: where the next one's is looked for
     for k in range(load.size):
         base = centre[k] + pad
         line = (base, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
@@ -391,9 +431,9 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
             s = predicted + drift
         else:
             s = conformal[k]
-        s, total, slope, width, its, ok = _balance(
+        s, total, slope, right, left, reach, its, ok = _balance(
             load[k], s, lower[k], upper[k], gap_min[k], nodes, grid, line, solver,
-            work, width - 1, not have_guess,
+            work, reach - 1, not have_guess,
         )  # fmt: skip
         floats[0, k] = s
         floats[1, k] = total
@@ -402,12 +442,12 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         previous_s, previous_total, previous_slope = s, total, slope
         drift = s - predicted if predicted == predicted else 0.0
         # the balanced state is the last evaluation: its wear, resultants and extent
-        floats[2, k], top, right, left = _settle(
-            sliding[k], work, press_bits, wear_ext, base - width, width
+        floats[2, k], top, n_right, n_left = _settle(
+            sliding[k], work, press_bits, wear_ext, base - right, right, left
         )
         counts[4, k] = top
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
-            work[_DEPTH], width, dtheta, shifts[k], left, right
+            work[_DEPTH], right, left, dtheta, shifts[k], n_left, n_right
         )
     failed = 0
     widest = 0.0
@@ -432,11 +472,12 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
 
 
 @njit(inline="always", **_FLAGS)
-def _settle(ds, work, press_bits, wear, start, width):
+def _settle(ds, work, press_bits, wear, start, right, left):
     """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force, bits of the
     peak ``p / k``, springs right and left).
 
-    Every node of the window (offsets from ``start``) is added (``p`` is 0 out of
+    The window holds ``right`` nodes right of the centre column and ``left`` left of it
+    (offsets from ``start``). Every node of the window is added (``p`` is 0 out of
     contact): no branch. The springs in contact are counted right and left of the centre
     column.
     """
@@ -444,32 +485,32 @@ def _settle(ds, work, press_bits, wear, start, width):
     offset = uint64(start)
     sideways = 0.0
     top = 0
-    for j in range(uint64(2 * width + 1)):
+    for j in range(uint64(right + left + 1)):
         p = press[j]
         wear[offset + j] += ds * p
         sideways += sides[j] * p
         top = max(top, press_bits[j])
-    right = 0
-    for j in range(uint64(width)):
-        right += 1 if depth[j] > 0.0 else 0
-    left = 0
-    for j in range(uint64(width + 1), uint64(2 * width + 1)):
-        left += 1 if depth[j] > 0.0 else 0
-    return sideways, top, right, left
+    n_right = 0
+    for j in range(uint64(right)):
+        n_right += 1 if depth[j] > 0.0 else 0
+    n_left = 0
+    for j in range(uint64(right + 1), uint64(right + left + 1)):
+        n_left += 1 if depth[j] > 0.0 else 0
+    return sideways, top, n_right, n_left
 
 
 @njit(inline="always", **_FLAGS)
-def _extent(depth, width, dtheta, shift, n_left, n_right):
+def _extent(depth, right, left, dtheta, shift, n_left, n_right):
     """Contact half-angles left and right of the load line [rad], and springs in contact.
 
     ``n_left``, ``n_right``: springs in contact off the centre column (the centre
     column's side is the sign of ``shift``).
-    ``depth`` holds the window (offsets ``-width .. width``) first. The outermost node in
-    contact each side is found by scanning in from the window's edges (a few nodes: the
-    window is the pin's reach); the edge lies between it and the next node out,
-    interpolated linearly in depth.
+    ``depth`` holds the window (offsets ``-right .. left``) first. The outermost node in
+    contact each side is found by scanning in from the window's edges (a node or two:
+    the window is trimmed to the nodes that can touch); the edge lies between it and the
+    next node out, interpolated linearly in depth.
     """
-    size = 2 * width + 1
+    size = right + left + 1
     last = size - 1
     while last >= 0 and not depth[last] > 0.0:
         last -= 1
@@ -478,23 +519,24 @@ def _extent(depth, width, dtheta, shift, n_left, n_right):
     first = 0
     while not depth[first] > 0.0:
         first += 1
-    if depth[width] > 0.0:
+    if depth[right] > 0.0:
         n_left += shift > 0.0
         n_right += shift < 0.0
-    left = _edge(last, min(last + 1, size - 1), depth, width, dtheta, shift)
-    right = -_edge(first, max(first - 1, 0), depth, width, dtheta, shift)
-    return max(left, 0.0), max(right, 0.0), n_left, n_right
+    half_left = _edge(last, min(last + 1, size - 1), depth, right, dtheta, shift)
+    half_right = -_edge(first, max(first - 1, 0), depth, right, dtheta, shift)
+    return max(half_left, 0.0), max(half_right, 0.0), n_left, n_right
 
 
 @njit(inline="always", **_FLAGS)
-def _edge(inside, outside, depth, width, dtheta, shift):
-    """Angle of a contact edge [rad], between the last node in and the next one out."""
+def _edge(inside, outside, depth, right, dtheta, shift):
+    """Angle of a contact edge [rad], between the last node in and the next one out
+    (window positions; the centre column is position ``right``)."""
     d_in = depth[inside]
     d_out = depth[outside]
     drop = d_in - d_out
     frac = d_in / drop if drop > 0.0 else 0.0
-    phi_in = (inside - width) * dtheta + shift
-    phi_out = (outside - width) * dtheta + shift
+    phi_in = (inside - right) * dtheta + shift
+    phi_out = (outside - right) * dtheta + shift
     return phi_in + frac * (phi_out - phi_in)
 
 
@@ -508,16 +550,18 @@ def dense_pressure(offset, load, nodes, grid, lines, out, work):
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min = lines[:6]
     quarter, rp, exponent, coefficient = grid[1], grid[3], grid[4], grid[5]
     nodes_count = out.shape[1]
+    reach = 2
     for k in range(offset.size):
         if load[k] <= 0.0:
             continue
         base = centre[k] + grid[0]
         line = (base, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
-        width = _reach(offset[k], gap_min[k], nodes[4], quarter, 1)
-        _evaluate(offset[k], rp, exponent, nodes, grid, line, width, work, False)
-        for o in range(-width, width + 1):
-            if work[_DEPTH][o + width] > 0.0:
-                out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS][o + width]
+        reach = _reach(offset[k], gap_min[k], nodes[4], quarter, reach - 1)
+        right, left = _trim(offset[k], nodes, quarter, line, reach)
+        _evaluate(offset[k], rp, exponent, nodes, grid, line, right, left, work, False)
+        for o in range(-right, left + 1):
+            if work[_DEPTH][o + right] > 0.0:
+                out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS][o + right]
 
 
 @njit(_nrt=False, **_FLAGS)
