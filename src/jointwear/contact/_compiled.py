@@ -6,8 +6,15 @@ solves a revolution should not pay). The physics is that of
 :mod:`jointwear.contact.balance` (paper eqs. (5)/(7): the pin moves along the load
 line by ``s``, node ``j`` penetrates by ``s cos(phi_j) - g_j - (R_p - sqrt(R_p^2 - s^2
 sin^2(phi_j)))`` and the springs' force along the load balances the load); what differs
-is the arithmetic: one loop per load over the nodes the pin can reach, no temporaries,
+is the arithmetic: one loop per load over the nodes that can touch, no temporaries,
 and the wear of a load added to the nodes as soon as it is balanced.
+
+The window of a load is not symmetric about its load line: the pin's reach from the
+smallest gap of the contour (:func:`_reach`) bounds it, and each side is then trimmed to
+the outermost node whose depth ``s cos(phi) - g`` could be positive (:func:`_trim`). On
+a worn contour the contact lies to one side of the load line (the worn groove lags the
+load), and the gaps beside the groove exceed the contour's smallest: late in a long run
+the reach's symmetric window held ~140 nodes for ~92 in contact, the trimmed one ~94.
 
 The window of load ``k`` is read from arrays padded by a quarter circle each side
 (``ext[c + o + pad]`` is node ``(c + o) mod N``), so no loop has a modulo; loops index
@@ -27,13 +34,16 @@ root. Arguments travel in tuples:
   the pin can meet, the bracket of the offset [m] and the angle [rad];
 * ``line``: one load's ``(base, cos_shift, sin_shift, load_gap, load_area)``;
 * ``work``: the window scratch of one load, one array per row ``_DEPTH`` .. ``_PRESS``
-  (:func:`scratch`), by offset from the window's start.
+  (:func:`scratch`), by offset from the window's start (node ``-right`` of the load's
+  centre node).
 
 Every helper is inlined into :func:`revolution` (``inline="always"``): a call that
 passes arrays costs reference counting of each, which made a revolution twice as slow;
 and :func:`revolution` itself is compiled without reference counting (``_nrt=False``),
 whose atomic operations on the arrays passed between the inlined helpers still took a
-fifth of a revolution.
+fifth of a revolution, and with its array arguments declared ``noalias`` to LLVM
+(:class:`_Unaliased`), whose run-time overlap checks before each vectorised loop took a
+tenth.
 """
 
 from __future__ import annotations
@@ -175,15 +185,16 @@ def _springs(s, nodes, grid, line, right, left, work, law, terms):
     curvature costs a division per node (``p'' = 3 / (4 sqrt(delta))``): taken where a
     start is cold (it saves the third evaluation), else NaN (the step uses ``kappa``).
 
-    The loop is bound by its multiplications (the square root overlaps them), so every
-    factor common to the nodes is left out of it and applied to the sums: the load's
+    Every factor common to the nodes is left out of the loop and applied to the sums
+    (fewer multiplications, the loop's bound for linear springs): the load's
     ``k A`` factor (rows ``_WEIGHT`` and ``_SIDE`` hold ``A_j cos(phi_j)`` and ``A_j
     sin(phi_j)``), the ``1.5`` of ``delta^1.5``'s slope and the ``-1 / R_p`` of the
     second derivative (row ``_CURVE`` holds ``-R_p delta_j''``); the pin curvature is a
     series in ``y = (s / R_p)^2 sin^2(phi_j)`` with ``R_p`` folded into its coefficients,
     and ``delta_j' = cos(phi_j) - (s / R_p) sin^2(phi_j) q_j``, ``-R_p delta_j'' = sin^2
-    (phi_j) q_j^3`` with ``q_j = R_p / sqrt(R_p^2 - x_j)``: 27 vector operations per
-    node instead of 34.
+    (phi_j) q_j^3`` with ``q_j = R_p / sqrt(R_p^2 - x_j)``: ~28 vector operations per
+    8 nodes instead of 34 (a few per cent of a warm Winkler revolution; none for
+    ``delta^1.5``, whose loop waits on its square roots).
     """
     gap, area, co, so = nodes[0], nodes[1], nodes[2], nodes[3]
     quarter, rp, coefficient = grid[1], grid[3], grid[5]
@@ -346,7 +357,11 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     Steps that stay within ``_REUSE R_p`` in all of the last full evaluation (and within
     its window) move the depths by their Taylor polynomial (:func:`_springs_moved`): the
     pin-curvature term's third derivative is at most ``6.2 s / R_p^3`` for ``s <= R_p /
-    2``, so the neglected cubic terms stay below ``eps s / 16``.
+    2``, so the neglected cubic terms stay below ``eps s / 16``. A full evaluation at
+    ``s`` trims its window to the nodes that can touch up to ``s + _REUSE R_p``
+    (:func:`_trim`), so every such step finds its nodes in it; ``limit`` (the largest
+    offset the window holds) is that, or the reach's own bound where it is smaller.
+    ``hint``: the last reach [nodes], where this one's is looked for.
     """
     atol, ulps, max_iterations, curvature = solver
     quarter, rp, exponent = grid[1], grid[3], grid[4]
@@ -427,16 +442,18 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
 
     Compiled without reference counting (``_nrt=False``: an array passed between the
     inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
-    ``work`` (:func:`scratch`) and ``press_bits``, its pressure row read as int64 (``p
-    >= 0``: the bits order as the integers; an integer max reduction vectorises, a
-    floating-point one does not, 4x slower), come from the caller.
+    ``work`` (:func:`scratch`) comes from the caller. Its pressure row is read as int64
+    for the peak (``p >= 0``: the bits order as the integers; an integer max reduction
+    vectorises, a floating-point one does not, 4x slower), by a view taken here:
+    ``press_bits``, the caller's view of that row, is not read (an argument aliasing
+    another would break the ``noalias`` of :class:`_Unaliased`). Every array written
+    here must be a buffer of its own, distinct from every other argument.
 
     Returns the number of loads not balanced and the widest contact half-angle [rad].
     """
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
     pad, quarter, dtheta = grid[0], grid[1], grid[2]
-    # (not press_bits: an argument of its own would alias the row, see _Unaliased)
     bits = work[_PRESS].view(np.int64)
     previous_s = np.nan
     previous_total = 0.0
