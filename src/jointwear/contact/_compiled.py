@@ -427,7 +427,7 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
 
 @njit(_nrt=False, pipeline_class=_Unaliased, **_FLAGS)
 def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
-               floats, counts, wear_ext, scale, wear, work, press_bits):  # fmt: skip
+               floats, counts, wear_ext, scale, wear, work):  # fmt: skip
     """Balance every load of a revolution and add its wear ``p ds / k`` per node.
 
     Loads are solved in order. With ``have_guess`` each starts from ``guess`` [m];
@@ -444,10 +444,10 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
     ``work`` (:func:`scratch`) comes from the caller. Its pressure row is read as int64
     for the peak (``p >= 0``: the bits order as the integers; an integer max reduction
-    vectorises, a floating-point one does not, 4x slower), by a view taken here:
-    ``press_bits``, the caller's view of that row, is not read (an argument aliasing
-    another would break the ``noalias`` of :class:`_Unaliased`). Every array written
-    here must be a buffer of its own, distinct from every other argument.
+    vectorises, a floating-point one does not, 4x slower), by a view taken here (an
+    argument aliasing another would break the ``noalias`` of :class:`_Unaliased`).
+    Every array written here must be a buffer of its own, distinct from every other
+    argument.
 
     Returns the number of loads not balanced and the widest contact half-angle [rad].
     """

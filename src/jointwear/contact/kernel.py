@@ -504,7 +504,6 @@ def _run(
     failed, widest = module.revolution(
         load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
         floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
-        work[5].view(np.int64),
     )  # fmt: skip
     offset, total, tangential, left, right = floats
     # the revolution's own: a state keeps its wear uncopied
