@@ -436,9 +436,10 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     the azimuth, smoothly from load to load), the first one from the conformal estimate
     ``conformal`` [m] (three evaluations a load, against two warm). Out: ``floats`` rows
     offset [m], force [N], tangential force [N], left and right half-angle [rad];
-    ``counts`` rows iterations, springs left and right, status and the bits of the peak
-    ``p / k`` (a float64 read as int64). The wear of the padded window positions
-    (``wear_ext``) is folded onto the nodes and scaled by ``scale`` into ``wear`` [m].
+    ``counts`` rows iterations, springs left and right, status and the peak pressure
+    [Pa] (a float64 in the int64 row). The wear of the padded window positions
+    (``wear_ext``, zeroed here) is folded onto the nodes and scaled by ``scale`` into
+    ``wear`` [m]. Every entry of the outputs is written: the caller need not zero them.
 
     Compiled without reference counting (``_nrt=False``: an array passed between the
     inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
@@ -460,6 +461,8 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     previous_slope = 0.0
     drift = 0.0
     reach = 2  # the last load's reach: where the next one's is looked for
+    for i in range(wear_ext.size):
+        wear_ext[i] = 0.0
     for k in range(load.size):
         base = centre[k] + pad
         line = (base, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
@@ -469,6 +472,10 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
             for o in range(-quarter, quarter + 1):
                 touch = min(touch, gap_ext[base + o] + load_gap[k])
             floats[0, k] = touch
+            for row in range(1, floats.shape[0]):
+                floats[row, k] = 0.0
+            for row in range(counts.shape[0]):
+                counts[row, k] = 0
             counts[3, k] = CONVERGED
             previous_s = np.nan
             continue
@@ -504,18 +511,22 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         )
     failed = 0
     widest = 0.0
+    # the peak p / k's bits (row 4 of counts) read as floats, scaled to the pressure
+    peak = counts[4].view(np.float64)
     for k in range(load.size):
         failed += counts[3, k] != CONVERGED
         widest = max(widest, floats[3, k], floats[4, k])
-    # padded position i is node (i - pad) mod N: summed in the order of i (as a bincount),
-    # the left padding, the nodes, the right padding (no modulo: an integer division each)
+        peak[k] *= grid[5]
+    # padded position i is node (i - pad) mod N: the nodes, then the left and the right
+    # padding added (no modulo: an integer division each; no node gets both paddings,
+    # and a sum of two is the same either way round)
     nodes_count = wear.size
+    middle = wear_ext[pad : pad + nodes_count]
+    for j in range(nodes_count):
+        wear[j] = middle[j]
     left = wear[nodes_count - pad :]
     for i in range(pad):
         left[i] += wear_ext[i]
-    middle = wear_ext[pad : pad + nodes_count]
-    for j in range(nodes_count):
-        wear[j] += middle[j]
     right = wear_ext[pad + nodes_count :]
     for i in range(right.size):
         wear[i] += right[i]

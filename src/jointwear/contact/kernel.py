@@ -204,18 +204,20 @@ class _Lines:
         self._filled: dict[float, FloatArray] = {}
         self._scratch = threading.local()
 
-    def arguments(self, dtheta, rp, law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
-                  upper):  # fmt: skip
-        """The compiled kernel's ``nodes``, ``grid`` and ``lines`` from the contour's arrays."""
+    def arguments(self, gap_ext, area_ext, load_gap, load_area, gap_min, lower, upper):
+        """The compiled kernel's ``nodes`` and ``lines`` from the contour's arrays."""
         nodes = (gap_ext, area_ext, self.cos_o, self.sin_o, self.half_cos)
-        grid = (
-            self.pad, self.quarter, dtheta, rp, float(law.exponent), float(law.coefficient),
-        )  # fmt: skip
         lines = (
             self.centre, self.cos_shift, self.sin_shift, load_gap, load_area, gap_min, lower,
             upper, self.shift,
         )  # fmt: skip
-        return nodes, grid, lines
+        return nodes, lines
+
+    def grid(self, dtheta: float, rp: float, law: SpringLaw) -> tuple[Any, ...]:
+        """The compiled kernel's ``grid``: node spacing [rad], pin radius [m], the law."""
+        return (
+            self.pad, self.quarter, dtheta, rp, float(law.exponent), float(law.coefficient),
+        )  # fmt: skip
 
     def centre_radius(self, radius: FloatArray) -> FloatArray:
         """The radius on each load line [m]: ``self.stencil(radius)``, its weights kept."""
@@ -355,7 +357,8 @@ def revolution_wear(
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
     return _run(
         module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
-        tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known,
+        _solver(law, tolerance, max_iterations), guess, conformal, nodes, grid, lines,
+        centre_gap, known,
     )  # fmt: skip
 
 
@@ -378,9 +381,12 @@ class WarmRevolutions:
         self.module, self.pin, self.law, self.known = module, pin, law, known
         self.load, self.sliding, self.wear_coefficient = load, sliding, wear_coefficient
         self.nodes, self.axial_length = known.nodes, axial_length
-        self.tolerance, self.max_iterations = tolerance, max_iterations
         self.rp = float(pin.radius)
-        spring = 2.0 * np.pi / self.nodes * axial_length
+        dtheta = 2.0 * np.pi / self.nodes
+        #: the kernel's constant tuples
+        self.grid = known.grid(dtheta, self.rp, law)
+        self.solver = _solver(law, tolerance, max_iterations)
+        spring = dtheta * axial_length
         stencil = known.stencil
         #: ``prepare``'s ``built``
         self.built = (
@@ -457,8 +463,8 @@ class WarmRevolutions:
         known = self.known
         return _run(
             self.module, contour, self.pin, self.load, known.azimuth, self.sliding, self.law,
-            self.wear_coefficient, guess, self.tolerance, self.max_iterations, guess,
-            known.zeros, nodes, grid, lines, centre_gap, known,
+            self.wear_coefficient, guess, self.solver, guess, known.zeros, nodes, grid, lines,
+            centre_gap, known,
         )  # fmt: skip
 
     def arguments(self, contour: BushingContour) -> tuple[Any, ...] | None:
@@ -482,25 +488,30 @@ class WarmRevolutions:
         out = (centre_gap, gap_ext, area_ext, load_gap, load_area, gap_min, upper)
         if not self.module.prepare(self.load, contour.radius, self.rp, self.built, out):
             return None
-        nodes, grid, lines = known.arguments(
-            contour.dtheta, self.rp, law, gap_ext, area_ext, load_gap, load_area, gap_min,
-            gap_min, upper,
-        )  # fmt: skip
-        return nodes, grid, lines, centre_gap
+        nodes, lines = known.arguments(
+            gap_ext, area_ext, load_gap, load_area, gap_min, gap_min, upper
+        )
+        return nodes, self.grid, lines, centre_gap
+
+
+def _solver(law: SpringLaw, tolerance: float, max_iterations: int) -> tuple[Any, ...]:
+    """The compiled kernel's ``solver``: force tolerance [N], round-off ulps, evaluations
+    allowed, the Chebyshev step's ``kappa``."""
+    return (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), _curvature(law))
 
 
 def _run(
     module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
-    tolerance, max_iterations, guess, conformal, nodes, grid, lines, centre_gap, known,
+    solver, guess, conformal, nodes, grid, lines, centre_gap, known,
 ):  # fmt: skip
     """The compiled revolution and its :class:`RevolutionWear`."""
     m = load.size
-    floats = np.zeros((5, m))
-    counts = np.zeros((5, m), dtype=np.int64)
+    # (the kernel writes every entry of its outputs, and zeroes the padded wear)
+    floats = np.empty((5, m))
+    counts = np.empty((5, m), dtype=np.int64)
     work = known.scratch(module)
-    wear_ext = np.zeros(known.padded.size)
-    wear = np.zeros(contour.nodes)
-    solver = (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), _curvature(law))
+    wear_ext = np.empty(known.padded.size)
+    wear = np.empty(contour.nodes)
     failed, widest = module.revolution(
         load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
         floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
@@ -508,9 +519,8 @@ def _run(
     offset, total, tangential, left, right = floats
     # the revolution's own: a state keeps its wear uncopied
     wear.setflags(write=False)
-    # the peak p / k of each load, as bits: the pressure in place of them
+    # the peak pressure of each load, written as a float into the int64 row
     peak = counts[4].view(np.float64)
-    peak *= law.coefficient
     if failed:
         _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
 
@@ -577,10 +587,10 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
     else:
         upper = np.full(m, 0.999 * rp)
     np.maximum(upper, lower, out=upper)
-    nodes, grid, per_load = lines.arguments(
-        contour.dtheta, float(rp), law, gap_ext, area_ext, load_gap, load_area, gap_min, lower,
-        upper,
-    )  # fmt: skip
+    nodes, per_load = lines.arguments(
+        gap_ext, area_ext, load_gap, load_area, gap_min, lower, upper
+    )
+    grid = lines.grid(contour.dtheta, float(rp), law)
     return nodes, grid, per_load, centre_gap, lines
 
 
