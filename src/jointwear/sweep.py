@@ -1059,19 +1059,27 @@ def _run_dask(
 
     address = str(client.scheduler.address)
     token = uuid.uuid4().hex[:12]
-    futures: dict[Any, Case] = {}
+    # chunks of cases, as for local workers: a task costs the scheduler, the client and
+    # the worker a few milliseconds of the cores the cases run on
+    threads = max(1, sum(client.nthreads().values()))
+    size = max(1, len(tasks) // (threads * CHUNKS_PER_WORKER))
+    chunks = [tasks[i : i + size] for i in range(0, len(tasks), size)]
+    futures: dict[Any, Sequence[tuple[Case, dict[str, Any]]]] = {}
     try:
-        for case, task in tasks:
-            key = f"jointwear-{case.name}-{token}"
-            futures[client.submit(run_case, task, key=key, pure=False)] = case
+        for chunk in chunks:
+            key = f"jointwear-{chunk[0][0].name}-{len(chunk)}-{token}"
+            tasks_of = [task for _, task in chunk]
+            futures[client.submit(run_cases, tasks_of, key=key, pure=False)] = chunk
         for future in as_completed(list(futures), loop=client.loop):
-            case = futures[future]
+            chunk = futures[future]
             if future.status == "finished":
-                record = future.result()
+                records = future.result()
             else:
                 exc = future.exception()
-                record = _lost(case, f"{type(exc).__name__}: {_one_line(str(exc))}")
-            finish(case, record)
+                why = f"{type(exc).__name__}: {_one_line(str(exc))}"
+                records = [_lost(case, why) for case, _ in chunk]
+            for (case, _), record in zip(chunk, records, strict=True):
+                finish(case, record)
     except BaseException:
         for future in futures:
             future.cancel()
