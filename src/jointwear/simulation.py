@@ -234,6 +234,20 @@ class WearStep:
     error: float = 0.0
     pin_rate: FloatArray | None = None
 
+    @classmethod
+    def _explicit(
+        cls, base: SimulationState, interval: int, rate: FloatArray, solution: ContactSolution,
+        contour: BushingContour, pin_rate: FloatArray | None,
+    ) -> WearStep:  # fmt: skip
+        """A step of the explicit scheme, without the frozen dataclass's ``__init__`` (its
+        ``object.__setattr__`` per field: a step per revolution)."""
+        step = object.__new__(cls)
+        step.__dict__.update(
+            base=base, interval=interval, rate=rate, end_rate=None, solution=solution,
+            contour=contour, error=0.0, pin_rate=pin_rate,
+        )  # fmt: skip
+        return step
+
     def pin_depth_at(self, revolutions: int) -> FloatArray | None:
         """The pin's wear depth ``revolutions`` into the interval [m] (explicit scheme)."""
         if self.pin_rate is None:
@@ -323,6 +337,8 @@ class Simulation:
         self.life = LifeLimits.from_config(config)
         self.schedule = DynamicsSchedule.from_config(config)
         self._warned: set[str] = set()
+        #: the load cycles whose load range the continuous-contact check has seen
+        self._load_seen: dict[str, mechanism.LoadCycle] | None = None
         self._sliding: tuple[mechanism.LoadCycle, FloatArray] | None = None
         self._warm_kernel: tuple[mechanism.LoadCycle, WarmRevolutions | None] | None = None
 
@@ -614,7 +630,7 @@ class Simulation:
             None if state.pin_wear_depth is None
             else self.pin_wear_per_revolution(solution, contour)
         )
-        return WearStep(state, interval, rate, None, solution, contour, pin_rate=pin_rate)
+        return WearStep._explicit(state, interval, rate, solution, contour, pin_rate)
 
     def _adaptive_step(self, state: SimulationState, remaining: int) -> WearStep:
         """One adaptive contour update: a jump of many revolutions, error-controlled.
@@ -826,7 +842,10 @@ class Simulation:
         ``wear_depth``: the wear profile [m] at ``revolution``.
         """
         warned = self._warned
-        if "clearance" in warned and "load" in warned:
+        # (nothing left to say: both said, or the clearance said and this load cycle's
+        # range seen; a run checks at every update)
+        seen = self._load_seen is not None and self._load_seen is self._cycles
+        if "clearance" in warned and ("load" in warned or seen):
             return
         cycle = self.load_cycle
         if cycle.model != "massless-link":
@@ -844,6 +863,7 @@ class Simulation:
                 f"worn joint's dynamics feed back",
             )
         if "load" not in self._warned:
+            self._load_seen = self._cycles
             low, high = self._load_range(cycle)
             if low < 1e-3 * high:
                 self._warn_once(
