@@ -56,11 +56,12 @@ from numba.core.compiler import CompilerBase, DefaultPassBuilder
 
 #: results per load (``status``)
 CONVERGED, NOT_CONVERGED = 0, 1
-#: up to these ``(s / R_p)^2`` the pin-curvature term is taken from its series to ``y^4``,
-#: ``y^6`` and ``y^8`` (exact to ~1e-17 relative there), which need neither a square
-#: root nor a division; beyond, the closed form. The middle one is where a worn joint's
-#: offset goes (the paper's joint passes 1e-4 within its first thousand revolutions)
-_SHORT_SERIES, _MIDDLE_SERIES, _LONG_SERIES = 1e-4, 1e-3, 1e-2
+#: up to these ``(s / R_p)^2`` the pin-curvature term is taken from its series to ``y^4``
+#: and ``y^6`` (exact to ~1e-17 relative there), which need neither a square root nor a
+#: division; beyond, the closed form. The second is where a worn joint's offset goes
+#: (the paper's joint passes 1e-4 within its first thousand revolutions); a third tier
+#: to ``y^8`` (up to 1e-2) was dropped: each tier is a loop per law to compile (~8 s)
+_SHORT_SERIES, _LONG_SERIES = 1e-4, 2e-3
 _EPS = 2.220446049250313e-16
 #: steps from the last full evaluation up to ``_REUSE R_p`` in all move the depths by
 #: their second-order Taylor polynomial to within ``eps s / 16`` (see :func:`_balance`)
@@ -115,23 +116,17 @@ def _evaluate(s, rp, exponent, nodes, grid, line, right, left, work, curved):
             return _springs(s, nodes, grid, line, right, left, work, _LINEAR, 4)
         if terms == 6:
             return _springs(s, nodes, grid, line, right, left, work, _LINEAR, 6)
-        if terms == 8:
-            return _springs(s, nodes, grid, line, right, left, work, _LINEAR, 8)
         return _springs(s, nodes, grid, line, right, left, work, _LINEAR, 0)
     if curved:
         if terms == 4:
             return _springs(s, nodes, grid, line, right, left, work, _CURVED, 4)
         if terms == 6:
             return _springs(s, nodes, grid, line, right, left, work, _CURVED, 6)
-        if terms == 8:
-            return _springs(s, nodes, grid, line, right, left, work, _CURVED, 8)
         return _springs(s, nodes, grid, line, right, left, work, _CURVED, 0)
     if terms == 4:
         return _springs(s, nodes, grid, line, right, left, work, _HERTZIAN, 4)
     if terms == 6:
         return _springs(s, nodes, grid, line, right, left, work, _HERTZIAN, 6)
-    if terms == 8:
-        return _springs(s, nodes, grid, line, right, left, work, _HERTZIAN, 8)
     return _springs(s, nodes, grid, line, right, left, work, _HERTZIAN, 0)
 
 
@@ -141,9 +136,7 @@ def _series_terms(s, rp):
     ratio = s * s / (rp * rp)
     if ratio <= _SHORT_SERIES:
         return 4
-    if ratio <= _MIDDLE_SERIES:
-        return 6
-    return 8 if ratio <= _LONG_SERIES else 0
+    return 6 if ratio <= _LONG_SERIES else 0
 
 
 @njit(inline="always", **_FLAGS)
@@ -151,10 +144,10 @@ def _pin_curvature(y, rp, terms):
     """``R_p - sqrt(R_p^2 - x)`` [m] and ``q = R_p / sqrt(R_p^2 - x)`` for ``x = s^2
     sin^2(phi) = y R_p^2``.
 
-    With ``terms`` 4, 6 or 8 (``y`` up to 1e-4, 1e-3 or 1e-2) from their Taylor series in
-    ``y`` (``R_p (y/2 + y^2/8 + y^3/16 + 5 y^4/128 + ...)`` and ``1 + y/2 + 3 y^2/8 + ...``;
-    the first term left out is below ~3e-17 of the sum there), without a square root or
-    a division (the products of ``R_p`` and the coefficients are loop constants).
+    With ``terms`` 4 or 6 (``y`` up to 1e-4 or 2e-3) from their Taylor series in ``y``
+    (``R_p (y/2 + y^2/8 + y^3/16 + 5 y^4/128 + ...)`` and ``1 + y/2 + 3 y^2/8 + ...``; the
+    first term left out is below ~3e-17 of the sum there), without a square root or a
+    division (the products of ``R_p`` and the coefficients are loop constants).
     """
     if terms == 4:
         curv = y * (rp * 0.5 + y * (rp * 0.125 + y * (rp * 0.0625 + y * (rp * 0.0390625))))
@@ -163,11 +156,6 @@ def _pin_curvature(y, rp, terms):
         tail = rp * 0.0390625 + y * (rp * 0.02734375 + y * (rp * 0.0205078125))
         curv = y * (rp * 0.5 + y * (rp * 0.125 + y * (rp * 0.0625 + y * tail)))
         return curv, 1.0 + y * (0.5 + y * (0.375 + y * (0.3125 + y * (0.2734375 + y * 0.24609375))))
-    if terms == 8:
-        tail = 0.02734375 + y * (0.0205078125 + y * (0.01611328125 + y * 0.013092041015625))
-        curv = rp * y * (0.5 + y * (0.125 + y * (0.0625 + y * (0.0390625 + y * tail))))
-        tail = 0.24609375 + y * (0.2255859375 + y * (0.20947265625 + y * 0.196380615234375))
-        return curv, 1.0 + y * (0.5 + y * (0.375 + y * (0.3125 + y * (0.2734375 + y * tail))))
     x = y * rp * rp
     root = math.sqrt(rp * rp - x)
     return x / (root + rp), rp / root
