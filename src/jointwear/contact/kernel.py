@@ -336,6 +336,7 @@ def revolution_wear(
     sliding = np.asarray(sliding_distance, dtype=float).ravel()
     if sliding.size != m:
         sliding = np.broadcast_to(sliding, (m,))
+    load, sliding = _plain(load), _plain(sliding)
     contour.check_pin(pin)
     nodes, grid, lines, centre_gap, known = _arguments(
         contour, pin, load, azimuth, law, max_penetration
@@ -442,7 +443,8 @@ class WarmRevolutions:
             return None
         reach = np.inf if max_penetration is None else float(max_penetration)
         return cls(
-            module, pin, load, known.azimuth, sliding, law, wear_coefficient, known,
+            module, pin, _plain(load), known.azimuth, _plain(sliding), law, wear_coefficient,
+            known,
             axial_length, reach, tolerance, max_iterations,
         )  # fmt: skip
 
@@ -494,6 +496,15 @@ class WarmRevolutions:
         return nodes, self.grid, lines, centre_gap
 
 
+def _plain(array: FloatArray) -> FloatArray:
+    """``array`` as a writable C-contiguous array (copied only if it is not): one type for
+    every array the kernel reads, or numba compiles it again for each (~8 s on a new
+    machine, and two processes compiling at once may swap the variants in its cache)."""
+    if array.flags.writeable and array.flags.c_contiguous:
+        return array
+    return np.array(array, order="C")
+
+
 def _solver(law: SpringLaw, tolerance: float, max_iterations: int) -> tuple[Any, ...]:
     """The compiled kernel's ``solver``: force tolerance [N], round-off ulps, evaluations
     allowed, the Chebyshev step's ``kappa``."""
@@ -506,6 +517,8 @@ def _run(
 ):  # fmt: skip
     """The compiled revolution and its :class:`RevolutionWear`."""
     m = load.size
+    # (a run's guesses are often the state's read-only offsets)
+    guess = _plain(guess)
     # (the kernel writes every entry of its outputs, and zeroes the padded wear)
     floats = np.empty((5, m))
     counts = np.empty((5, m), dtype=np.int64)
