@@ -222,3 +222,38 @@ def test_warm_arguments_are_the_numpy_ones(config, model, shape):
             atol = radius_ulps if position in gap else 0.0
             np.testing.assert_allclose(a, b, rtol=4e-16, atol=atol)
     np.testing.assert_allclose(warm[3], cold[3], rtol=0, atol=radius_ulps)
+
+
+def test_one_compiled_variant_of_the_kernel():
+    """Cold and warm revolutions, read-only and scalar inputs and a whole run reach the
+    compiled kernel with the same array types: numba compiles (and caches) one variant,
+    not one per combination of read-only or strided arrays (~8 s each on a new machine)."""
+    code = """
+import numpy as np
+from jointwear import Simulation
+from jointwear.config import load_config
+from jointwear.contact import kernel
+from tests.test_fast_path import CALIBRATED, PAPER
+config = load_config(PAPER, overrides={**CALIBRATED, "simulation.revolutions": 600,
+                                       "simulation.update_every": 1})
+simulation = Simulation(config)
+state = simulation.initial_state()
+for _ in range(3):
+    state = simulation.step(state)
+cycle = simulation.load_cycle
+contour = simulation._contour(state.wear_depth)
+args = (contour, simulation.pin, cycle.load, cycle.azimuth)
+rest = (simulation.law, config.materials.bushing.wear_coefficient)
+guess = state.warm_offset  # read-only
+kernel.revolution_wear(*args, simulation.sliding_distance, *rest, initial_offset=guess)
+kernel.revolution_wear(*args, 1e-4, *rest)  # one sliding distance for every step
+kernel.revolution_wear(*args, 1e-4, *rest, initial_offset=guess.tolist())
+module = kernel._compiled()
+print(len(module.revolution.signatures), len(module.prepare.signatures))
+"""
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "src"), str(REPO)])}
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env,
+        cwd=REPO,
+    )  # fmt: skip
+    assert out.stdout.split() == ["1", "1"]
