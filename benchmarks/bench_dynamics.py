@@ -25,9 +25,7 @@ for _name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
 
 import argparse  # noqa: E402
 import math  # noqa: E402
-import subprocess  # noqa: E402
 import sys  # noqa: E402
-import tempfile  # noqa: E402
 import time  # noqa: E402
 from contextlib import contextmanager  # noqa: E402
 from pathlib import Path  # noqa: E402
@@ -37,7 +35,13 @@ import numpy as np  # noqa: E402
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))  # tests.mechanism.test_impact_integrator
 
-from benchmarks.bench_simulation import ROWS, machine, ms, row  # noqa: E402
+from benchmarks.bench_simulation import (  # noqa: E402
+    ROWS,
+    machine,
+    ms,
+    numba_start_up,
+    row,
+)
 from tests.mechanism.test_impact_integrator import reference_contacts  # noqa: E402
 
 from jointwear import load_config  # noqa: E402
@@ -181,19 +185,11 @@ print(t2 - t1, t3 - t2)
 def bench_start(quick: bool) -> None:
     """Import of the kernel and first revolution (compile or cache load), fresh processes."""
     script = _START.format(path=str(PAPER))
-    with tempfile.TemporaryDirectory() as cache:
-        runs = []
-        for _ in range(2 if quick else 3):  # the first one fills the empty cache
-            out = subprocess.run(
-                [sys.executable, "-c", script], capture_output=True, text=True, check=True,
-                env={**os.environ, "NUMBA_CACHE_DIR": cache}, cwd=REPO,
-            )  # fmt: skip
-            runs.append(tuple(map(float, out.stdout.split())))
+    compiled, loaded = numba_start_up(script, 2 if quick else 3, cwd=REPO)
     row(
         "start-up, empty numba cache: import kernel; first revolution (compiles)",
-        f"{runs[0][0]:.2f} s; {runs[0][1]:.2f} s",
+        f"{compiled[0]:.2f} s; {compiled[1]:.2f} s",
     )
-    loaded = np.median(runs[1:], axis=0)
     row(
         "start-up, cache filled: import kernel; first revolution",
         f"{loaded[0]:.2f} s; {loaded[1]:.2f} s",

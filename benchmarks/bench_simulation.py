@@ -407,6 +407,21 @@ print(json.dumps(result))
 """
 
 
+def numba_start_up(script: str, runs: int, cwd: Path | None = None):
+    """The two numbers ``script`` prints, in ``runs`` fresh processes sharing one empty
+    numba cache: those of the first (it compiles) and the medians of the others (the
+    cache loaded)."""
+    with tempfile.TemporaryDirectory() as cache:
+        numbers = []
+        for _ in range(runs):
+            out = subprocess.run(
+                [sys.executable, "-c", script], capture_output=True, text=True, check=True,
+                env={**os.environ, "NUMBA_CACHE_DIR": cache}, cwd=cwd,
+            )  # fmt: skip
+            numbers.append(tuple(map(float, out.stdout.split())))
+    return numbers[0], np.median(numbers[1:], axis=0)
+
+
 def bench_kernel_start(quick: bool) -> None:
     """Import and compile cost of the kernel, in fresh processes."""
     script = (
@@ -420,21 +435,11 @@ def bench_kernel_start(quick: bool) -> None:
         "np.full(8, 1e-4), PowerLaw(1e14, 1.5, force_area=1e-6), 1e-13); "
         "t3 = time.perf_counter(); print(t1 - t0, t3 - t2)"
     )
-    env = {**os.environ}
-    with tempfile.TemporaryDirectory() as cache:
-        rows_ = []
-        for _ in range(3):  # the first one fills the empty cache
-            run_env = {**env, "NUMBA_CACHE_DIR": cache}
-            out = subprocess.run(
-                [sys.executable, "-c", script], capture_output=True, text=True, check=True,
-                env=run_env,
-            )  # fmt: skip
-            rows_.append(tuple(map(float, out.stdout.split())))
+    compiled, loaded = numba_start_up(script, 3)
     row(
         "kernel start-up: import numba; first revolution (compile, empty cache)",
-        f"{rows_[0][0]:.2f} s; {rows_[0][1]:.2f} s",
+        f"{compiled[0]:.2f} s; {compiled[1]:.2f} s",
     )
-    loaded = np.median(rows_[1:], axis=0)
     row(
         "kernel start-up: import numba; first revolution (cache loaded)",
         f"{loaded[0]:.2f} s; {loaded[1]:.2f} s",

@@ -337,8 +337,6 @@ class Simulation:
         self.life = LifeLimits.from_config(config)
         self.schedule = DynamicsSchedule.from_config(config)
         self._warned: set[str] = set()
-        #: the load cycles whose load range the continuous-contact check has seen
-        self._load_seen: dict[str, mechanism.LoadCycle] | None = None
         self._sliding: tuple[mechanism.LoadCycle, FloatArray] | None = None
         self._warm_kernel: tuple[mechanism.LoadCycle, WarmRevolutions | None] | None = None
 
@@ -842,13 +840,13 @@ class Simulation:
         ``wear_depth``: the wear profile [m] at ``revolution``.
         """
         warned = self._warned
-        # (nothing left to say: both said, or the clearance said and this load cycle's
-        # range seen; a run checks at every update)
-        seen = self._load_seen is not None and self._load_seen is self._cycles
-        if "clearance" in warned and ("load" in warned or seen):
-            return
         cycle = self.load_cycle
-        if cycle.model != "massless-link":
+        # (nothing left to say: both said, or the clearance said and this cycle's load
+        # range seen; a run checks at every update)
+        seen = getattr(self, "_load_range_of", (None,))[0] is cycle
+        if cycle.model != "massless-link" or (
+            "clearance" in warned and ("load" in warned or seen)
+        ):
             return
         clearance = self.config.joint.clearance
         # (the peak only until its warning was given: a run checks at every update)
@@ -863,7 +861,6 @@ class Simulation:
                 f"worn joint's dynamics feed back",
             )
         if "load" not in self._warned:
-            self._load_seen = self._cycles
             low, high = self._load_range(cycle)
             if low < 1e-3 * high:
                 self._warn_once(

@@ -227,10 +227,7 @@ class SimulationState:
         fields_of.update(changes)
         for name in _ARRAY_FIELDS:
             value = changes.get(name)
-            # (inline _frozen: a state per revolution; the loop's arrays come read-only)
-            if value is not None and not (
-                type(value) is np.ndarray and not value.flags.writeable
-            ):
+            if value is not None:
                 fields_of[name] = _frozen(value)
         return new
 

@@ -41,8 +41,6 @@ ROUND_OFF_ULPS = 4.0
 _COMPILED: Any = None
 #: per (nodes, azimuths): the load lines' node indices, shifts and radius stencil
 _AZIMUTH_CACHE: dict[tuple[int, bytes], _Lines] = {}
-#: the read-only azimuth array of the last call, its node count and lines
-_LAST_LINES: list[tuple[FloatArray, int, _Lines] | None] = [None]
 
 
 def compiled_available() -> bool:
@@ -245,18 +243,12 @@ class _Lines:
 
 
 def _lines(nodes: int, azimuth: FloatArray) -> _Lines:
-    last = _LAST_LINES[0]
-    # the same read-only azimuths as the last call (a run's revolutions): no key to hash
-    if last is not None and last[0] is azimuth and last[1] == nodes:
-        return last[2]
     key = (nodes, azimuth.tobytes())
     lines = _AZIMUTH_CACHE.get(key)
     if lines is None:
         if len(_AZIMUTH_CACHE) >= 4:
             _AZIMUTH_CACHE.pop(next(iter(_AZIMUTH_CACHE)))
         lines = _AZIMUTH_CACHE[key] = _Lines(nodes, azimuth)
-    if not azimuth.flags.writeable:
-        _LAST_LINES[0] = (azimuth, nodes, lines)
     return lines
 
 
@@ -357,9 +349,9 @@ def revolution_wear(
         if guess.size != m:
             raise ContactError(f"initial_offset: need one offset per load ({m}), got {guess.size}")
     return _run(
-        module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
-        _solver(law, tolerance, max_iterations), guess, conformal, nodes, grid, lines,
-        centre_gap, known,
+        module, contour, pin, load, azimuth, sliding, law, wear_coefficient,
+        initial_offset is not None, _solver(law, tolerance, max_iterations), guess, conformal,
+        nodes, grid, lines, centre_gap, known,
     )  # fmt: skip
 
 
@@ -444,8 +436,7 @@ class WarmRevolutions:
         reach = np.inf if max_penetration is None else float(max_penetration)
         return cls(
             module, pin, _plain(load), known.azimuth, _plain(sliding), law, wear_coefficient,
-            known,
-            axial_length, reach, tolerance, max_iterations,
+            known, axial_length, reach, tolerance, max_iterations,
         )  # fmt: skip
 
     def __call__(
@@ -465,7 +456,7 @@ class WarmRevolutions:
         known = self.known
         return _run(
             self.module, contour, self.pin, self.load, known.azimuth, self.sliding, self.law,
-            self.wear_coefficient, guess, self.solver, guess, known.zeros, nodes, grid, lines,
+            self.wear_coefficient, True, self.solver, guess, known.zeros, nodes, grid, lines,
             centre_gap, known,
         )  # fmt: skip
 
@@ -512,10 +503,11 @@ def _solver(law: SpringLaw, tolerance: float, max_iterations: int) -> tuple[Any,
 
 
 def _run(
-    module, contour, pin, load, azimuth, sliding, law, wear_coefficient, initial_offset,
-    solver, guess, conformal, nodes, grid, lines, centre_gap, known,
+    module, contour, pin, load, azimuth, sliding, law, wear_coefficient, warm, solver, guess,
+    conformal, nodes, grid, lines, centre_gap, known,
 ):  # fmt: skip
-    """The compiled revolution and its :class:`RevolutionWear`."""
+    """The compiled revolution and its :class:`RevolutionWear` (``warm``: every load starts
+    from ``guess``)."""
     m = load.size
     # (a run's guesses are often the state's read-only offsets)
     guess = _plain(guess)
@@ -526,7 +518,7 @@ def _run(
     wear_ext = np.empty(known.padded.size)
     wear = np.empty(contour.nodes)
     failed, widest = module.revolution(
-        load, sliding, guess, initial_offset is not None, conformal, nodes, grid, lines, solver,
+        load, sliding, guess, warm, conformal, nodes, grid, lines, solver,
         floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
     )  # fmt: skip
     offset, total, tangential, left, right = floats

@@ -180,11 +180,6 @@ class LoadCycle:
         arrays = {}
         for name in ("time", "load", "azimuth", "relative_rotation"):
             value = np.asarray(getattr(self, name), dtype=float).ravel()
-            if name == "azimuth" and value.flags.writeable:
-                # its own read-only copy: the contact kernel knows an unchanged cycle by
-                # identity instead of hashing its azimuths at every revolution
-                value = value.copy()
-                value.setflags(write=False)
             arrays[name] = value
             object.__setattr__(self, name, value)
         steps = arrays["load"].size
