@@ -63,6 +63,8 @@ CONVERGED, NOT_CONVERGED = 0, 1
 #: to ``y^8`` (up to 1e-2) was dropped: each tier is a loop per law to compile (~8 s)
 _SHORT_SERIES, _LONG_SERIES = 1e-4, 2e-3
 _EPS = 2.220446049250313e-16
+#: doubles per vector register (AVX-512); windows are whole multiples of it
+_LANES = 8
 #: steps from the last full evaluation up to ``_REUSE R_p`` in all move the depths by
 #: their second-order Taylor polynomial to within ``eps s / 16`` (see :func:`_balance`)
 _REUSE = (_EPS / 64.0) ** (1.0 / 3.0)
@@ -324,6 +326,17 @@ def _trim(top, nodes, quarter, line, reach):
 
 
 @njit(inline="always", **_FLAGS)
+def _whole_vectors(right, left, quarter):
+    """The window ``-right .. left`` widened to a multiple of ``_LANES`` nodes (left first,
+    within a quarter circle each side): the nodes added cannot touch (their springs add
+    zeros), and the loops over the window then run without a scalar remainder (a few
+    per cent of a warm revolution)."""
+    add = -(right + left + 1) % _LANES
+    grow = min(add, quarter - left)
+    return min(right + add - grow, quarter), left + grow
+
+
+@njit(inline="always", **_FLAGS)
 def _step(s, f, slope, total, second, curvature):
     """Chebyshev's step: with the curvature ``second`` where known, else from ``kappa``.
 
@@ -395,6 +408,7 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
             # can touch up to ``s + small``, the reach up to its own bound
             top = s + small
             right, left = _trim(top, nodes, quarter, line, reach)
+            right, left = _whole_vectors(right, left, quarter)
             limit = top if reach >= quarter else min(top, gap_min / half_cos[reach - 1])
             travel = 0.0
             total, slope, second = _evaluate(
