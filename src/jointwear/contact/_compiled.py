@@ -73,7 +73,8 @@ _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contra
 #: with its curvature
 _LINEAR, _HERTZIAN, _CURVED = 1, 2, 3
 #: rows of ``work``: per node of the window, depth [m], its first and second derivative
-#: in the offset, ``k A_j cos(phi_j)``, ``k A_j sin(phi_j)`` and ``p / k``
+#: in the offset, ``k A_j cos(phi_j)``, ``k A_j sin(phi_j)`` and ``p / k`` (not written
+#: for linear springs, whose ``p / k`` is the depth's positive part)
 _DEPTH, _ALONG, _CURVE, _WEIGHT, _SIDE, _PRESS = range(6)
 
 
@@ -236,7 +237,8 @@ def _springs(s, nodes, grid, line, right, left, work, law, terms):
         bends[j] = bend
         weights[j] = weight
         sides[j] = area[start + j] * sn
-        press[j] = p
+        if law != _LINEAR:  # (linear springs: p / k is the depth's positive part)
+            press[j] = p
     factor = coefficient * load_area
     if law == _LINEAR:
         return factor * total, factor * slope, -factor * inv_rp * second
@@ -270,7 +272,8 @@ def _springs_moved(step, size, work, law, factor, inv_rp):
             second += weight * stiffness * bend
         depth[j] = d
         slopes[j] = along
-        press[j] = p
+        if law != _LINEAR:
+            press[j] = p
     if law == _LINEAR:
         return factor * total, factor * slope, -factor * inv_rp * second
     return factor * total, 1.5 * factor * slope, np.nan
@@ -459,10 +462,11 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
 
     Compiled without reference counting (``_nrt=False``: an array passed between the
     inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
-    ``work`` (:func:`scratch`) comes from the caller. Its pressure row is read as int64
-    for the peak (``p >= 0``: the bits order as the integers; an integer max reduction
-    vectorises, a floating-point one does not, 4x slower), by a view taken here (an
-    argument aliasing another would break the ``noalias`` of :class:`_Unaliased`).
+    ``work`` (:func:`scratch`) comes from the caller. Its pressure row (for linear
+    springs the depth row) is read as int64 for the peak (the bits of positive doubles
+    order as the integers; an integer max reduction vectorises, a floating-point one
+    does not, 4x slower), by a view taken here (an argument aliasing another would
+    break the ``noalias`` of :class:`_Unaliased`).
     Every array written here must be a buffer of its own, distinct from every other
     argument.
 
@@ -471,7 +475,9 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
     gap_ext = nodes[0]
     pad, quarter, dtheta = grid[0], grid[1], grid[2]
-    bits = work[_PRESS].view(np.int64)
+    # (int64 views of the rows whose largest entry is the peak p / k, see _settle)
+    press_bits, depth_bits = work[_PRESS].view(np.int64), work[_DEPTH].view(np.int64)
+    linear = grid[4] == 1.0
     previous_s = np.nan
     previous_total = 0.0
     previous_slope = 0.0
@@ -517,9 +523,14 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         previous_s, previous_total, previous_slope = s, total, slope
         drift = s - predicted if predicted == predicted else 0.0
         # the balanced state is the last evaluation: its wear, resultants and extent
-        sideways, top, n_right, n_left = _settle(
-            sliding[k], work, bits, wear_ext, base - right, right, left
-        )
+        if linear:
+            sideways, top, n_right, n_left = _settle(
+                sliding[k], work, depth_bits, wear_ext, base - right, right, left, _LINEAR
+            )
+        else:
+            sideways, top, n_right, n_left = _settle(
+                sliding[k], work, press_bits, wear_ext, base - right, right, left, _HERTZIAN
+            )
         floats[2, k] = grid[5] * load_area[k] * sideways
         counts[4, k] = top
         floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
@@ -552,9 +563,15 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
 
 
 @njit(inline="always", **_FLAGS)
-def _settle(ds, work, press_bits, wear, start, right, left):
+def _settle(ds, work, bits, wear, start, right, left, law):
     """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force over the
     load's ``k A`` factor [m^3], bits of the peak ``p / k``, springs right and left).
+
+    ``p / k`` is the row ``_PRESS``, but for linear springs (``law``) the positive part
+    of the depth, which the evaluations then need not store (a store per node and
+    evaluation: the loops of a Winkler revolution are bound by their stores). ``bits``:
+    the int64 view of the row whose largest entry is the peak (``p >= 0``: the bits
+    order as the integers; the depth's negative entries are negative integers).
 
     The window holds ``right`` nodes right of the centre column and ``left`` left of it
     (offsets from ``start``). Every node of the window is added (``p`` is 0 out of
@@ -566,17 +583,17 @@ def _settle(ds, work, press_bits, wear, start, right, left):
     sideways = 0.0
     top = 0
     for j in range(uint64(right + left + 1)):
-        p = press[j]
+        p = max(depth[j], 0.0) if law == _LINEAR else press[j]
         wear[offset + j] += ds * p
         sideways += sides[j] * p
-        top = max(top, press_bits[j])
+        top = max(top, bits[j])
     n_right = 0
     for j in range(uint64(right)):
         n_right += 1 if depth[j] > 0.0 else 0
     n_left = 0
     for j in range(uint64(right + 1), uint64(right + left + 1)):
         n_left += 1 if depth[j] > 0.0 else 0
-    return sideways, top, n_right, n_left
+    return sideways, max(top, 0), n_right, n_left
 
 
 @njit(inline="always", **_FLAGS)
@@ -640,8 +657,10 @@ def dense_pressure(offset, load, nodes, grid, lines, out, work):
         right, left = _trim(offset[k], nodes, quarter, line, reach)
         _evaluate(offset[k], rp, exponent, nodes, grid, line, right, left, work, False)
         for o in range(-right, left + 1):
-            if work[_DEPTH][o + right] > 0.0:
-                out[k, (centre[k] + o) % nodes_count] = coefficient * work[_PRESS][o + right]
+            depth = work[_DEPTH][o + right]
+            if depth > 0.0:
+                p = depth if exponent == 1.0 else work[_PRESS][o + right]
+                out[k, (centre[k] + o) % nodes_count] = coefficient * p
 
 
 @njit(_nrt=False, **_FLAGS)
