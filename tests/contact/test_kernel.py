@@ -114,6 +114,27 @@ def test_dense_pressure_is_the_balanced_state(config):
     np.testing.assert_allclose(normal, result.normal_force, rtol=1e-13)
 
 
+@pytest.mark.parametrize("model", MODELS)
+def test_springs_are_counted_when_read(config, model):
+    """The compiled path counts the springs in contact only when they are read, from the
+    balanced state: every node of the dense pressure in contact is counted once, on its
+    side of the load line, and reading the pressure first gives the same counts."""
+    args, options = revolution_inputs(config, model, "worn")
+    azimuth = args[3]
+    result = revolution_wear(*args, **options)
+    assert "springs_left" not in vars(result)
+    left, right = result.springs_left, result.springs_right
+    pressure = revolution_wear(*args, **options).solution().pressure
+    np.testing.assert_array_equal(left + right, (pressure > 0).sum(axis=1))
+    nodes = pressure.shape[1]
+    offset = np.angle(np.exp(1j * (np.arange(nodes) * 2 * np.pi / nodes - azimuth[:, None])))
+    np.testing.assert_array_equal(left, ((pressure > 0) & (offset > 0)).sum(axis=1))
+    again = revolution_wear(*args, **options)
+    _ = again.solution().pressure
+    np.testing.assert_array_equal(again.springs_left, left)
+    np.testing.assert_array_equal(again.springs_right, right)
+
+
 def test_simulation_steps_match_the_numpy_path(config):
     """Ten per-revolution updates with the kernel and with the NumPy path."""
     cfg = config.replace({"simulation.revolutions": 10, "simulation.update_contour": True})

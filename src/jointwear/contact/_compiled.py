@@ -455,10 +455,11 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     the azimuth, smoothly from load to load), the first one from the conformal estimate
     ``conformal`` [m] (three evaluations a load, against two warm). Out: ``floats`` rows
     offset [m], force [N], tangential force [N], left and right half-angle [rad];
-    ``counts`` rows iterations, springs left and right, status and the peak pressure
-    [Pa] (a float64 in the int64 row). The wear of the padded window positions
-    (``wear_ext``, zeroed here) is folded onto the nodes and scaled by ``scale`` into
-    ``wear`` [m]. Every entry of the outputs is written: the caller need not zero them.
+    ``counts`` rows iterations, status and the peak pressure [Pa] (a float64 in the
+    int64 row); the springs in contact are counted by :func:`dense_pressure`. The wear
+    of the padded window positions (``wear_ext``, zeroed here) is folded onto the nodes
+    and scaled by ``scale`` into ``wear`` [m]. Every entry of the outputs is written:
+    the caller need not zero them.
 
     Compiled without reference counting (``_nrt=False``: an array passed between the
     inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
@@ -498,7 +499,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
                 floats[row, k] = 0.0
             for row in range(counts.shape[0]):
                 counts[row, k] = 0
-            counts[3, k] = CONVERGED
+            counts[1, k] = CONVERGED
             previous_s = np.nan
             continue
         predicted = np.nan
@@ -519,29 +520,27 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         floats[0, k] = s
         floats[1, k] = total
         counts[0, k] = its
-        counts[3, k] = CONVERGED if ok else NOT_CONVERGED
+        counts[1, k] = CONVERGED if ok else NOT_CONVERGED
         previous_s, previous_total, previous_slope = s, total, slope
         drift = s - predicted if predicted == predicted else 0.0
         # the balanced state is the last evaluation: its wear, resultants and extent
         if linear:
-            sideways, top, n_right, n_left = _settle(
+            sideways, top = _settle(
                 sliding[k], work, depth_bits, wear_ext, base - right, right, left, _LINEAR
             )
         else:
-            sideways, top, n_right, n_left = _settle(
+            sideways, top = _settle(
                 sliding[k], work, press_bits, wear_ext, base - right, right, left, _HERTZIAN
             )
         floats[2, k] = grid[5] * load_area[k] * sideways
-        counts[4, k] = top
-        floats[3, k], floats[4, k], counts[1, k], counts[2, k] = _extent(
-            work[_DEPTH], right, left, dtheta, shifts[k], n_left, n_right
-        )
+        counts[2, k] = top
+        floats[3, k], floats[4, k] = _extent(work[_DEPTH], right, left, dtheta, shifts[k])
     failed = 0
     widest = 0.0
-    # the peak p / k's bits (row 4 of counts) read as floats, scaled to the pressure
-    peak = counts[4].view(np.float64)
+    # the peak p / k's bits (row 2 of counts) read as floats, scaled to the pressure
+    peak = counts[2].view(np.float64)
     for k in range(load.size):
-        failed += counts[3, k] != CONVERGED
+        failed += counts[1, k] != CONVERGED
         widest = max(widest, floats[3, k], floats[4, k])
         peak[k] *= grid[5]
     # padded position i is node (i - pad) mod N: the nodes, then the left and the right
@@ -575,8 +574,9 @@ def _settle(ds, work, bits, wear, start, right, left, law):
 
     The window holds ``right`` nodes right of the centre column and ``left`` left of it
     (offsets from ``start``). Every node of the window is added (``p`` is 0 out of
-    contact): no branch. The springs in contact are counted right and left of the centre
-    column.
+    contact): no branch. The springs in contact are not counted here (two loops more a
+    load, a twentieth of a warm Winkler revolution, for a field a run never reads):
+    :func:`dense_pressure` counts them when they are asked for.
     """
     depth, _, _, _, sides, press = work
     offset = uint64(start)
@@ -587,21 +587,13 @@ def _settle(ds, work, bits, wear, start, right, left, law):
         wear[offset + j] += ds * p
         sideways += sides[j] * p
         top = max(top, bits[j])
-    n_right = 0
-    for j in range(uint64(right)):
-        n_right += 1 if depth[j] > 0.0 else 0
-    n_left = 0
-    for j in range(uint64(right + 1), uint64(right + left + 1)):
-        n_left += 1 if depth[j] > 0.0 else 0
-    return sideways, max(top, 0), n_right, n_left
+    return sideways, max(top, 0)
 
 
 @njit(inline="always", **_FLAGS)
-def _extent(depth, right, left, dtheta, shift, n_left, n_right):
-    """Contact half-angles left and right of the load line [rad], and springs in contact.
+def _extent(depth, right, left, dtheta, shift):
+    """Contact half-angles left and right of the load line [rad].
 
-    ``n_left``, ``n_right``: springs in contact off the centre column (the centre
-    column's side is the sign of ``shift``).
     ``depth`` holds the window (offsets ``-right .. left``) first. The outermost node in
     contact each side is found by scanning in from the window's edges (a node or two:
     the window is trimmed to the nodes that can touch); the edge lies between it and the
@@ -612,16 +604,13 @@ def _extent(depth, right, left, dtheta, shift, n_left, n_right):
     while last >= 0 and not depth[last] > 0.0:
         last -= 1
     if last < 0:
-        return 0.0, 0.0, 0, 0
+        return 0.0, 0.0
     first = 0
     while not depth[first] > 0.0:
         first += 1
-    if depth[right] > 0.0:
-        n_left += shift > 0.0
-        n_right += shift < 0.0
     half_left = _edge(last, min(last + 1, size - 1), depth, right, dtheta, shift)
     half_right = -_edge(first, max(first - 1, 0), depth, right, dtheta, shift)
-    return max(half_left, 0.0), max(half_right, 0.0), n_left, n_right
+    return max(half_left, 0.0), max(half_right, 0.0)
 
 
 @njit(inline="always", **_FLAGS)
@@ -638,17 +627,24 @@ def _edge(inside, outside, depth, right, dtheta, shift):
 
 
 @njit(**_FLAGS)
-def dense_pressure(offset, load, nodes, grid, lines, out, work):
-    """Pressure of every load at its balanced offset on all nodes [Pa] (rows of ``out``).
+def dense_pressure(offset, load, nodes, grid, lines, out, springs, work):
+    """Pressure of every load at its balanced offset on all nodes [Pa] (rows of ``out``,
+    zeros; none written where ``out`` has no rows) and its springs in contact left and
+    right of the load line (rows of ``springs``; the centre column's side is the sign of
+    its angle from the load line).
 
     One full evaluation at the balanced offset: the balance's last one, or within
     ``eps s / 16`` of it in depth where that one was a Taylor step.
     """
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min = lines[:6]
+    shifts = lines[8]
     quarter, rp, exponent, coefficient = grid[1], grid[3], grid[4], grid[5]
     nodes_count = out.shape[1]
+    fill = out.shape[0] > 0
     reach = 2
     for k in range(offset.size):
+        springs[0, k] = 0
+        springs[1, k] = 0
         if load[k] <= 0.0:
             continue
         base = centre[k] + grid[0]
@@ -659,8 +655,11 @@ def dense_pressure(offset, load, nodes, grid, lines, out, work):
         for o in range(-right, left + 1):
             depth = work[_DEPTH][o + right]
             if depth > 0.0:
-                p = depth if exponent == 1.0 else work[_PRESS][o + right]
-                out[k, (centre[k] + o) % nodes_count] = coefficient * p
+                springs[0, k] += o > 0 or (o == 0 and shifts[k] > 0.0)
+                springs[1, k] += o < 0 or (o == 0 and shifts[k] < 0.0)
+                if fill:
+                    p = depth if exponent == 1.0 else work[_PRESS][o + right]
+                    out[k, (centre[k] + o) % nodes_count] = coefficient * p
 
 
 @njit(_nrt=False, **_FLAGS)

@@ -83,7 +83,9 @@ class RevolutionWear:
     normal_force, tangential_force : ndarray, shape (M,)
         Resultants along and across the load [N].
     springs_left, springs_right : ndarray of int, shape (M,)
-        Springs in contact each side of the load line.
+        Springs in contact each side of the load line (the compiled path counts them
+        when first read, by one evaluation per load at its balanced offset: a run never
+        reads them).
     """
 
     wear: FloatArray
@@ -97,7 +99,8 @@ class RevolutionWear:
     tangential_force: FloatArray
     springs_left: NDArray[np.int64]
     springs_right: NDArray[np.int64]
-    #: how to assemble the dense pressure (None: the NumPy path's solution is kept)
+    #: ``rows -> (pressure, springs)``: the dense pressure (``rows`` rows) and the springs
+    #: in contact of the compiled path (None: the NumPy path's solution is kept)
     _dense: Any = None
     _solution: ContactSolution | None = None
     _context: Any = None
@@ -109,6 +112,23 @@ class RevolutionWear:
         instance = object.__new__(cls)
         vars(instance).update(fields)
         return instance
+
+    def __getattr__(self, name: str) -> Any:
+        # only reached for a field not set: the compiled path's springs, on first read
+        assemble = vars(self).get("_dense")
+        if assemble is None or name not in ("springs_left", "springs_right"):
+            raise AttributeError(name)
+        self._keep_springs(assemble(0)[1])
+        return vars(self)[name]
+
+    def _keep_springs(self, springs: NDArray[np.int64]) -> None:
+        vars(self).setdefault("springs_left", springs[0])
+        vars(self).setdefault("springs_right", springs[1])
+
+    def _pressure(self) -> FloatArray:
+        pressure, springs = self._dense(self.offset.size)
+        self._keep_springs(springs)
+        return pressure
 
     def solution(self) -> ContactSolution:
         """The revolution as a :class:`ContactSolution`; the (M, N) pressure, the
@@ -135,7 +155,7 @@ class _WindowSolution(ContactSolution):
 
     #: fields assembled on first read, by the method of the revolution that builds them
     _ASSEMBLED: ClassVar[dict[str, str]] = {
-        "pressure": "_dense", "eccentricity": "_eccentricity", "penetration": "_penetration"
+        "pressure": "_pressure", "eccentricity": "_eccentricity", "penetration": "_penetration"
     }
     #: fields that are the revolution's own
     _SHARED = frozenset(
@@ -513,7 +533,7 @@ def _run(
     guess = _plain(guess)
     # (the kernel writes every entry of its outputs, and zeroes the padded wear)
     floats = np.empty((5, m))
-    counts = np.empty((5, m), dtype=np.int64)
+    counts = np.empty((3, m), dtype=np.int64)
     work = known.scratch(module)
     wear_ext = np.empty(known.padded.size)
     wear = np.empty(contour.nodes)
@@ -525,17 +545,18 @@ def _run(
     # the revolution's own: a state keeps its wear uncopied
     wear.setflags(write=False)
     # the peak pressure of each load, written as a float into the int64 row
-    peak = counts[4].view(np.float64)
+    peak = counts[2].view(np.float64)
     if failed:
-        _check(counts[3] == 0, offset, lines[7], load, azimuth, total - load)
+        _check(counts[1] == 0, offset, lines[7], load, azimuth, total - load)
 
-    def dense() -> FloatArray:
-        pressure = np.zeros((m, contour.nodes))
+    def dense(rows: int) -> tuple[FloatArray, NDArray[np.int64]]:
+        pressure = np.zeros((rows, contour.nodes))
+        springs = np.empty((2, m), dtype=np.int64)
         # its own scratch: it may be read long after, from any thread
         module.dense_pressure(
-            offset, load, nodes, grid, lines, pressure, module.scratch(known.quarter)
+            offset, load, nodes, grid, lines, pressure, springs, module.scratch(known.quarter)
         )
-        return pressure
+        return pressure, springs
 
     return RevolutionWear._of(
         wear=wear,
@@ -547,8 +568,6 @@ def _run(
         peak_pressure=peak,
         normal_force=total,
         tangential_force=tangential,
-        springs_left=counts[1],
-        springs_right=counts[2],
         _dense=dense,
         _context=(contour, pin, azimuth, law, centre_gap),
     )
