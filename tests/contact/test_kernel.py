@@ -115,14 +115,17 @@ def test_dense_pressure_is_the_balanced_state(config):
 
 
 @pytest.mark.parametrize("model", MODELS)
-def test_springs_are_counted_when_read(config, model):
-    """The compiled path counts the springs in contact only when they are read, from the
-    balanced state: every node of the dense pressure in contact is counted once, on its
-    side of the load line, and reading the pressure first gives the same counts."""
+def test_contact_fields_are_evaluated_when_read(config, model):
+    """The compiled path evaluates the extent, peak, tangential force and springs only
+    when one is read, from the balanced state: every node of the dense pressure in
+    contact is counted once, on its side of the load line, and reading the pressure
+    first gives the same fields."""
     args, options = revolution_inputs(config, model, "worn")
     azimuth = args[3]
     result = revolution_wear(*args, **options)
-    assert "springs_left" not in vars(result)
+    evaluated = ("half_angle_left", "half_angle_right", "peak_pressure", "tangential_force",
+                 "springs_left", "springs_right")  # fmt: skip
+    assert not set(evaluated) & set(vars(result))
     left, right = result.springs_left, result.springs_right
     pressure = revolution_wear(*args, **options).solution().pressure
     np.testing.assert_array_equal(left + right, (pressure > 0).sum(axis=1))
@@ -131,8 +134,9 @@ def test_springs_are_counted_when_read(config, model):
     np.testing.assert_array_equal(left, ((pressure > 0) & (offset > 0)).sum(axis=1))
     again = revolution_wear(*args, **options)
     _ = again.solution().pressure
-    np.testing.assert_array_equal(again.springs_left, left)
-    np.testing.assert_array_equal(again.springs_right, right)
+    for name in evaluated:
+        np.testing.assert_array_equal(getattr(again, name), getattr(result, name))
+    np.testing.assert_array_equal(result.peak_pressure, pressure.max(axis=1))
 
 
 def test_simulation_steps_match_the_numpy_path(config):

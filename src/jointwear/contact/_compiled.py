@@ -454,31 +454,28 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     step) plus the predecessor's own miss (on a worn contour the force curve moves with
     the azimuth, smoothly from load to load), the first one from the conformal estimate
     ``conformal`` [m] (three evaluations a load, against two warm). Out: ``floats`` rows
-    offset [m], force [N], tangential force [N], left and right half-angle [rad];
-    ``counts`` rows iterations, status and the peak pressure [Pa] (a float64 in the
-    int64 row); the springs in contact are counted by :func:`dense_pressure`. The wear
-    of the padded window positions (``wear_ext``, zeroed here) is folded onto the nodes
-    and scaled by ``scale`` into ``wear`` [m]. Every entry of the outputs is written:
-    the caller need not zero them.
+    offset [m] and force [N]; ``counts`` rows iterations and status. The wear of the
+    padded window positions (``wear_ext``, zeroed here) is folded onto the nodes and
+    scaled by ``scale`` into ``wear`` [m]. Every entry of the outputs is written: the
+    caller need not zero them. What a run does not read every revolution (the contact
+    extent, the tangential force, the peak pressure, the springs in contact) is not
+    computed here: :func:`balanced_state` evaluates it when it is asked for (a tenth of
+    a warm revolution).
 
     Compiled without reference counting (``_nrt=False``: an array passed between the
     inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
-    ``work`` (:func:`scratch`) comes from the caller. Its pressure row (for linear
-    springs the depth row) is read as int64 for the peak (the bits of positive doubles
-    order as the integers; an integer max reduction vectorises, a floating-point one
-    does not, 4x slower), by a view taken here (an argument aliasing another would
-    break the ``noalias`` of :class:`_Unaliased`).
-    Every array written here must be a buffer of its own, distinct from every other
-    argument.
+    ``work`` (:func:`scratch`) comes from the caller. Every array written here must be a
+    buffer of its own, distinct from every other argument (``noalias``,
+    :class:`_Unaliased`).
 
-    Returns the number of loads not balanced and the widest contact half-angle [rad].
+    Returns the number of loads not balanced and the widest window [nodes] either side
+    of a load's centre node (it holds every node in contact).
     """
-    centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper, shifts = lines
+    centre, cos_shift, sin_shift, load_gap, load_area, gap_min, lower, upper = lines[:8]
     gap_ext = nodes[0]
-    pad, quarter, dtheta = grid[0], grid[1], grid[2]
-    # (int64 views of the rows whose largest entry is the peak p / k, see _settle)
-    press_bits, depth_bits = work[_PRESS].view(np.int64), work[_DEPTH].view(np.int64)
+    pad, quarter = grid[0], grid[1]
     linear = grid[4] == 1.0
+    widest = 0
     previous_s = np.nan
     previous_total = 0.0
     previous_slope = 0.0
@@ -523,26 +520,15 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
         counts[1, k] = CONVERGED if ok else NOT_CONVERGED
         previous_s, previous_total, previous_slope = s, total, slope
         drift = s - predicted if predicted == predicted else 0.0
-        # the balanced state is the last evaluation: its wear, resultants and extent
+        widest = max(widest, right, left)
+        # the balanced state is the last evaluation: its wear
         if linear:
-            sideways, top = _settle(
-                sliding[k], work, depth_bits, wear_ext, base - right, right, left, _LINEAR
-            )
+            _settle(sliding[k], work, wear_ext, base - right, right, left, _LINEAR)
         else:
-            sideways, top = _settle(
-                sliding[k], work, press_bits, wear_ext, base - right, right, left, _HERTZIAN
-            )
-        floats[2, k] = grid[5] * load_area[k] * sideways
-        counts[2, k] = top
-        floats[3, k], floats[4, k] = _extent(work[_DEPTH], right, left, dtheta, shifts[k])
+            _settle(sliding[k], work, wear_ext, base - right, right, left, _HERTZIAN)
     failed = 0
-    widest = 0.0
-    # the peak p / k's bits (row 2 of counts) read as floats, scaled to the pressure
-    peak = counts[2].view(np.float64)
     for k in range(load.size):
         failed += counts[1, k] != CONVERGED
-        widest = max(widest, floats[3, k], floats[4, k])
-        peak[k] *= grid[5]
     # padded position i is node (i - pad) mod N: the nodes, then the left and the right
     # padding added (no modulo: an integer division each; no node gets both paddings,
     # and a sum of two is the same either way round)
@@ -562,32 +548,20 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
 
 
 @njit(inline="always", **_FLAGS)
-def _settle(ds, work, bits, wear, start, right, left, law):
-    """Add ``p ds / k`` of one load to its nodes (``wear``): (tangential force over the
-    load's ``k A`` factor [m^3], bits of the peak ``p / k``, springs right and left).
+def _settle(ds, work, wear, start, right, left, law):
+    """Add ``p ds / k`` of one load to its nodes (``wear``).
 
     ``p / k`` is the row ``_PRESS``, but for linear springs (``law``) the positive part
     of the depth, which the evaluations then need not store (a store per node and
-    evaluation: the loops of a Winkler revolution are bound by their stores). ``bits``:
-    the int64 view of the row whose largest entry is the peak (``p >= 0``: the bits
-    order as the integers; the depth's negative entries are negative integers).
-
-    The window holds ``right`` nodes right of the centre column and ``left`` left of it
-    (offsets from ``start``). Every node of the window is added (``p`` is 0 out of
-    contact): no branch. The springs in contact are not counted here (two loops more a
-    load, a twentieth of a warm Winkler revolution, for a field a run never reads):
-    :func:`dense_pressure` counts them when they are asked for.
+    evaluation). The window holds ``right`` nodes right of the centre column and
+    ``left`` left of it (offsets from ``start``). Every node of the window is added
+    (``p`` is 0 out of contact): no branch.
     """
-    depth, _, _, _, sides, press = work
+    depth, press = work[_DEPTH], work[_PRESS]
     offset = uint64(start)
-    sideways = 0.0
-    top = 0
     for j in range(uint64(right + left + 1)):
         p = max(depth[j], 0.0) if law == _LINEAR else press[j]
         wear[offset + j] += ds * p
-        sideways += sides[j] * p
-        top = max(top, bits[j])
-    return sideways, max(top, 0)
 
 
 @njit(inline="always", **_FLAGS)
@@ -627,39 +601,51 @@ def _edge(inside, outside, depth, right, dtheta, shift):
 
 
 @njit(**_FLAGS)
-def dense_pressure(offset, load, nodes, grid, lines, out, springs, work):
-    """Pressure of every load at its balanced offset on all nodes [Pa] (rows of ``out``,
-    zeros; none written where ``out`` has no rows) and its springs in contact left and
-    right of the load line (rows of ``springs``; the centre column's side is the sign of
-    its angle from the load line).
+def balanced_state(offset, load, nodes, grid, lines, pressure, floats, springs, work):
+    """What :func:`revolution` leaves out, from one full evaluation of every load at its
+    balanced offset ``offset`` [m]: the pressure on all nodes [Pa] (rows of
+    ``pressure``, zeros; none written where it has no rows); ``floats`` rows tangential
+    force [N], contact half-angles left and right of the load line [rad] and peak
+    pressure [Pa]; ``springs`` rows springs in contact left and right (the centre
+    column's side is the sign of its angle from the load line).
 
-    One full evaluation at the balanced offset: the balance's last one, or within
-    ``eps s / 16`` of it in depth where that one was a Taylor step.
+    The evaluation is the balance's last one, or within ``eps s / 16`` of it in depth
+    where that one was a Taylor step.
     """
     centre, cos_shift, sin_shift, load_gap, load_area, gap_min = lines[:6]
     shifts = lines[8]
-    quarter, rp, exponent, coefficient = grid[1], grid[3], grid[4], grid[5]
-    nodes_count = out.shape[1]
-    fill = out.shape[0] > 0
+    pad, quarter, dtheta, rp, exponent, coefficient = grid
+    nodes_count = pressure.shape[1]
+    fill = pressure.shape[0] > 0
+    depth, sides, press = work[_DEPTH], work[_SIDE], work[_PRESS]
     reach = 2
     for k in range(offset.size):
+        for row in range(floats.shape[0]):
+            floats[row, k] = 0.0
         springs[0, k] = 0
         springs[1, k] = 0
         if load[k] <= 0.0:
             continue
-        base = centre[k] + grid[0]
+        base = centre[k] + pad
         line = (base, cos_shift[k], sin_shift[k], load_gap[k], load_area[k])
         reach = _reach(offset[k], gap_min[k], nodes[4], quarter, reach - 1)
         right, left = _trim(offset[k], nodes, quarter, line, reach)
         _evaluate(offset[k], rp, exponent, nodes, grid, line, right, left, work, False)
+        sideways = 0.0
+        top = 0.0
         for o in range(-right, left + 1):
-            depth = work[_DEPTH][o + right]
-            if depth > 0.0:
+            d = depth[o + right]
+            if d > 0.0:
+                p = d if exponent == 1.0 else press[o + right]
+                sideways += sides[o + right] * p
+                top = max(top, p)
                 springs[0, k] += o > 0 or (o == 0 and shifts[k] > 0.0)
                 springs[1, k] += o < 0 or (o == 0 and shifts[k] < 0.0)
                 if fill:
-                    p = depth if exponent == 1.0 else work[_PRESS][o + right]
-                    out[k, (centre[k] + o) % nodes_count] = coefficient * p
+                    pressure[k, (centre[k] + o) % nodes_count] = coefficient * p
+        floats[0, k] = coefficient * load_area[k] * sideways
+        floats[1, k], floats[2, k] = _extent(depth, right, left, dtheta, shifts[k])
+        floats[3, k] = coefficient * top
 
 
 @njit(_nrt=False, **_FLAGS)

@@ -83,9 +83,14 @@ class RevolutionWear:
     normal_force, tangential_force : ndarray, shape (M,)
         Resultants along and across the load [N].
     springs_left, springs_right : ndarray of int, shape (M,)
-        Springs in contact each side of the load line (the compiled path counts them
-        when first read, by one evaluation per load at its balanced offset: a run never
-        reads them).
+        Springs in contact each side of the load line.
+
+    Notes
+    -----
+    A run reads the wear, the offsets, the window and the iterations of every
+    revolution, and the rest seldom: the compiled path evaluates the half-angles, the
+    peak pressure, the tangential force and the springs when one of them is first read
+    (one more evaluation per load, at its balanced offset).
     """
 
     wear: FloatArray
@@ -99,8 +104,8 @@ class RevolutionWear:
     tangential_force: FloatArray
     springs_left: NDArray[np.int64]
     springs_right: NDArray[np.int64]
-    #: ``rows -> (pressure, springs)``: the dense pressure (``rows`` rows) and the springs
-    #: in contact of the compiled path (None: the NumPy path's solution is kept)
+    #: ``rows -> (pressure, fields)``: the compiled path's dense pressure (``rows`` rows)
+    #: and the fields it leaves out (None: the NumPy path's solution is kept)
     _dense: Any = None
     _solution: ContactSolution | None = None
     _context: Any = None
@@ -113,21 +118,27 @@ class RevolutionWear:
         vars(instance).update(fields)
         return instance
 
+    #: the fields the compiled path evaluates when first read
+    _EVALUATED: ClassVar[frozenset[str]] = frozenset(
+        {"half_angle_left", "half_angle_right", "peak_pressure", "tangential_force",
+         "springs_left", "springs_right"}
+    )  # fmt: skip
+
     def __getattr__(self, name: str) -> Any:
-        # only reached for a field not set: the compiled path's springs, on first read
+        # only reached for a field not set: one the compiled path evaluates on first read
         assemble = vars(self).get("_dense")
-        if assemble is None or name not in ("springs_left", "springs_right"):
+        if assemble is None or name not in self._EVALUATED:
             raise AttributeError(name)
-        self._keep_springs(assemble(0)[1])
+        self._keep(assemble(0)[1])
         return vars(self)[name]
 
-    def _keep_springs(self, springs: NDArray[np.int64]) -> None:
-        vars(self).setdefault("springs_left", springs[0])
-        vars(self).setdefault("springs_right", springs[1])
+    def _keep(self, fields: dict[str, Any]) -> None:
+        for name, value in fields.items():
+            vars(self).setdefault(name, value)
 
     def _pressure(self) -> FloatArray:
-        pressure, springs = self._dense(self.offset.size)
-        self._keep_springs(springs)
+        pressure, fields = self._dense(self.offset.size)
+        self._keep(fields)
         return pressure
 
     def solution(self) -> ContactSolution:
@@ -532,8 +543,8 @@ def _run(
     # (a run's guesses are often the state's read-only offsets)
     guess = _plain(guess)
     # (the kernel writes every entry of its outputs, and zeroes the padded wear)
-    floats = np.empty((5, m))
-    counts = np.empty((3, m), dtype=np.int64)
+    floats = np.empty((2, m))
+    counts = np.empty((2, m), dtype=np.int64)
     work = known.scratch(module)
     wear_ext = np.empty(known.padded.size)
     wear = np.empty(contour.nodes)
@@ -541,33 +552,35 @@ def _run(
         load, sliding, guess, warm, conformal, nodes, grid, lines, solver,
         floats, counts, wear_ext, wear_coefficient * law.coefficient, wear, work,
     )  # fmt: skip
-    offset, total, tangential, left, right = floats
+    offset, total = floats
     # the revolution's own: a state keeps its wear uncopied
     wear.setflags(write=False)
-    # the peak pressure of each load, written as a float into the int64 row
-    peak = counts[2].view(np.float64)
     if failed:
         _check(counts[1] == 0, offset, lines[7], load, azimuth, total - load)
 
-    def dense(rows: int) -> tuple[FloatArray, NDArray[np.int64]]:
+    def dense(rows: int) -> tuple[FloatArray, dict[str, Any]]:
         pressure = np.zeros((rows, contour.nodes))
+        evaluated = np.empty((4, m))
         springs = np.empty((2, m), dtype=np.int64)
         # its own scratch: it may be read long after, from any thread
-        module.dense_pressure(
-            offset, load, nodes, grid, lines, pressure, springs, module.scratch(known.quarter)
-        )
-        return pressure, springs
+        module.balanced_state(
+            offset, load, nodes, grid, lines, pressure, evaluated, springs,
+            module.scratch(known.quarter),
+        )  # fmt: skip
+        tangential, left, right, peak = evaluated
+        return pressure, {
+            "tangential_force": tangential, "half_angle_left": left,
+            "half_angle_right": right, "peak_pressure": peak, "springs_left": springs[0],
+            "springs_right": springs[1],
+        }  # fmt: skip
 
     return RevolutionWear._of(
         wear=wear,
         offset=offset,
-        window=math.ceil(widest / grid[2]) + 3,
+        # (the widest window holds every node in contact, and one beyond)
+        window=widest + 2,
         iterations=counts[0],
-        half_angle_left=left,
-        half_angle_right=right,
-        peak_pressure=peak,
         normal_force=total,
-        tangential_force=tangential,
         _dense=dense,
         _context=(contour, pin, azimuth, law, centre_gap),
     )
