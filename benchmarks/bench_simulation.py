@@ -29,6 +29,7 @@ import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
+from benchlib import CALIBRATED, PAPER  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))  # tests.reference_impl
@@ -38,13 +39,6 @@ from tests.reference_impl import reference_revolution  # noqa: E402
 from jointwear import Simulation, load_config  # noqa: E402
 from jointwear.config import Config  # noqa: E402
 from jointwear.geometry import BushingContour  # noqa: E402
-
-PAPER = REPO / "examples" / "paper" / "table5_nlcp_15000r.toml"
-CALIBRATED = {
-    "joint.axial_length": 0.01867,
-    "joint.bushing_thickness": 0.003653,
-    "mechanism.spring_preload": 121.8,
-}
 
 ROWS: list[tuple[str, str, str]] = []
 

@@ -36,17 +36,12 @@ import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
+from benchlib import CALIBRATED, PAPER  # noqa: E402
 
 from jointwear import Simulation, load_config  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
 KERNEL = "src/jointwear/contact/_compiled.py"
-PAPER = REPO / "examples" / "paper" / "table5_nlcp_15000r.toml"
-CALIBRATED = {
-    "joint.axial_length": 0.01867,
-    "joint.bushing_thickness": 0.003653,
-    "mechanism.spring_preload": 121.8,
-}
 MODELS = ("winkler", "asymmetric-winkler", "nlcp")
 
 
