@@ -3,10 +3,12 @@
 :func:`revolution_wear` balances every load of a revolution (paper balance, eqs. (5)/(7))
 and accumulates Archard's wear ``K_d sum_k p_jk ds_k`` straight from each load's
 contact window; the dense (M, N) pressure is assembled only when asked for
-(:meth:`RevolutionWear.solution`). With numba installed the balance runs in a fused,
-compiled loop (:mod:`jointwear.contact._compiled`, imported on first use and cached on
-disk); without it, or with ``JOINTWEAR_NO_NUMBA=1``, the same result comes from the
-NumPy path (:func:`jointwear.contact.balance.solve_contact` and
+(:meth:`RevolutionWear.solution`), and the compiled path evaluates the contact extent,
+peak pressure, tangential force and springs in contact then too. With numba installed
+the balance runs in a fused, compiled loop (:mod:`jointwear.contact._compiled`,
+imported on first use and cached on disk); without it, or with
+``JOINTWEAR_NO_NUMBA=1``, the same result comes from the NumPy path
+(:func:`jointwear.contact.balance.solve_contact` and
 :func:`jointwear.tribology.archard.wear_depth`), which stays the readable reference.
 
 The compiled path applies to the power laws ``p = k delta^n`` with ``n`` 1 or 1.5
