@@ -15,6 +15,7 @@ the outermost node whose depth ``s cos(phi) - g`` could be positive (:func:`_tri
 a worn contour the contact lies to one side of the load line (the worn groove lags the
 load), and the gaps beside the groove exceed the contour's smallest: late in a long run
 the reach's symmetric window held ~140 nodes for ~92 in contact, the trimmed one ~94.
+The trimmed window is then widened to whole vectors of 8 nodes (:func:`_whole_vectors`).
 
 The window of load ``k`` is read from arrays padded by a quarter circle each side
 (``ext[c + o + pad]`` is node ``(c + o) mod N``), so no loop has a modulo; loops index
@@ -73,8 +74,8 @@ _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contra
 #: with its curvature
 _LINEAR, _HERTZIAN, _CURVED = 1, 2, 3
 #: rows of ``work``: per node of the window, depth [m], its first and second derivative
-#: in the offset, ``k A_j cos(phi_j)``, ``k A_j sin(phi_j)`` and ``p / k`` (not written
-#: for linear springs, whose ``p / k`` is the depth's positive part)
+#: in the offset, ``A_j cos(phi_j)``, ``A_j sin(phi_j)`` and ``p / k`` (not written for
+#: linear springs, whose ``p / k`` is the depth's positive part)
 _DEPTH, _ALONG, _CURVE, _WEIGHT, _SIDE, _PRESS = range(6)
 
 
