@@ -282,3 +282,30 @@ print(len(module.revolution.signatures), len(module.prepare.signatures))
         cwd=REPO,
     )  # fmt: skip
     assert out.stdout.split() == ["1", "1"]
+
+
+def test_one_compiled_variant_of_the_fields_read_later():
+    """The fields evaluated on read and the dense pressure reach ``balanced_state`` with
+    one set of array types, whichever is read first: one compiled variant."""
+    code = """
+from jointwear import Simulation
+from jointwear.config import load_config
+from jointwear.contact import kernel
+from tests.test_fast_path import CALIBRATED, PAPER
+config = load_config(PAPER, overrides={**CALIBRATED, "simulation.revolutions": 1})
+simulation = Simulation(config)
+cycle = simulation.load_cycle
+args = (simulation.initial_contour(), simulation.pin, cycle.load, cycle.azimuth, 1e-4,
+        simulation.law, config.materials.bushing.wear_coefficient)
+first = kernel.revolution_wear(*args)
+first.springs_left  # the fields alone: a pressure of no rows
+second = kernel.revolution_wear(*args, initial_offset=first.offset.tolist())
+second.solution().pressure  # the pressure, and the fields with it
+print(len(kernel._compiled().balanced_state.signatures), int(second.springs_left.sum() > 0))
+"""
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "src"), str(REPO)])}
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env,
+        cwd=REPO,
+    )  # fmt: skip
+    assert out.stdout.split() == ["1", "1"]
