@@ -249,6 +249,16 @@ def test_warm_arguments_are_the_numpy_ones(config, model, shape):
     np.testing.assert_allclose(warm[3], cold[3], rtol=0, atol=radius_ulps)
 
 
+def printed_by(code: str) -> list[str]:
+    """What ``code`` prints in a fresh interpreter (its own numba dispatchers), by word."""
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "src"), str(REPO)])}
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env,
+        cwd=REPO,
+    )  # fmt: skip
+    return out.stdout.split()
+
+
 def test_one_compiled_variant_of_the_kernel():
     """Cold and warm revolutions, read-only and scalar inputs and a whole run reach the
     compiled kernel with the same array types: numba compiles (and caches) one variant,
@@ -276,12 +286,7 @@ kernel.revolution_wear(*args, 1e-4, *rest, initial_offset=guess.tolist())
 module = kernel._compiled()
 print(len(module.revolution.signatures), len(module.prepare.signatures))
 """
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "src"), str(REPO)])}
-    out = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env,
-        cwd=REPO,
-    )  # fmt: skip
-    assert out.stdout.split() == ["1", "1"]
+    assert printed_by(code) == ["1", "1"]
 
 
 def test_one_compiled_variant_of_the_fields_read_later():
@@ -303,9 +308,4 @@ second = kernel.revolution_wear(*args, initial_offset=first.offset.tolist())
 second.solution().pressure  # the pressure, and the fields with it
 print(len(kernel._compiled().balanced_state.signatures), int(second.springs_left.sum() > 0))
 """
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "src"), str(REPO)])}
-    out = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env,
-        cwd=REPO,
-    )  # fmt: skip
-    assert out.stdout.split() == ["1", "1"]
+    assert printed_by(code) == ["1", "1"]
