@@ -36,9 +36,7 @@ import time  # noqa: E402
 from pathlib import Path  # noqa: E402
 
 import numpy as np  # noqa: E402
-from benchlib import CALIBRATED, PAPER  # noqa: E402
-
-from jointwear import Simulation, load_config  # noqa: E402
+from bench_simulation import kernel_inputs, paper  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
 KERNEL = "src/jointwear/contact/_compiled.py"
@@ -74,14 +72,10 @@ def load(text: str, label: str):
 def warm_arguments(model: str) -> dict:
     """The compiled revolution's inputs of a warm revolution of the paper case, after 20
     revolutions updated every revolution."""
-    overrides = {
-        **CALIBRATED, "contact.model": model, "simulation.revolutions": 15000,
-        "simulation.update_every": 1,
-    }  # fmt: skip
-    simulation = Simulation(load_config(PAPER, overrides=overrides))
-    state = simulation.initial_state()
-    for _ in range(20):
-        state = simulation.step(state)
+    simulation, state = kernel_inputs(
+        paper(**{"contact.model": model, "simulation.revolutions": 15000,
+                 "simulation.update_every": 1}), 20,
+    )  # fmt: skip
     contour = simulation._contour(state.wear_depth)
     warm = simulation._warm_revolutions(simulation.load_cycle)
     nodes, grid, lines, _ = warm.arguments(contour)

@@ -339,6 +339,8 @@ class Simulation:
         self._warned: set[str] = set()
         self._sliding: tuple[mechanism.LoadCycle, FloatArray] | None = None
         self._warm_kernel: tuple[mechanism.LoadCycle, WarmRevolutions | None] | None = None
+        #: the load cycle whose smallest and largest load are known, and those loads [N]
+        self._load_range_of: tuple[mechanism.LoadCycle, float, float] | None = None
 
     # ---------------------------------------------------------------- stages
     @property
@@ -843,14 +845,14 @@ class Simulation:
         cycle = self.load_cycle
         # (nothing left to say: both said, or the clearance said and this cycle's load
         # range seen; a run checks at every update)
-        seen = getattr(self, "_load_range_of", (None,))[0] is cycle
+        seen = self._load_range_of is not None and self._load_range_of[0] is cycle
         if cycle.model != "massless-link" or (
             "clearance" in warned and ("load" in warned or seen)
         ):
             return
         clearance = self.config.joint.clearance
         # (the peak only until its warning was given: a run checks at every update)
-        peak = clearance if "clearance" in self._warned else float(wear_depth.max())
+        peak = clearance if "clearance" in warned else float(wear_depth.max())
         if peak >= clearance:
             self._warn_once(
                 "clearance",
@@ -860,7 +862,7 @@ class Simulation:
                 f"'contact-impact' and simulation.dynamics_update = 'adaptive' to let the "
                 f"worn joint's dynamics feed back",
             )
-        if "load" not in self._warned:
+        if "load" not in warned:
             low, high = self._load_range(cycle)
             if low < 1e-3 * high:
                 self._warn_once(
@@ -872,7 +874,7 @@ class Simulation:
 
     def _load_range(self, cycle: mechanism.LoadCycle) -> tuple[float, float]:
         """Smallest and largest load of ``cycle`` [N], computed once per cycle."""
-        cached = getattr(self, "_load_range_of", None)
+        cached = self._load_range_of
         if cached is None or cached[0] is not cycle:
             cached = (cycle, float(cycle.load.min()), float(cycle.load.max()))
             self._load_range_of = cached

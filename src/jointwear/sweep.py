@@ -887,8 +887,16 @@ def _start_method() -> str:
 
 
 def run_cases(tasks: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
-    """:func:`run_case` of each task, in order (a chunk of a local sweep)."""
+    """:func:`run_case` of each task, in order (a chunk of a sweep, :func:`_chunks`)."""
     return [run_case(task) for task in tasks]
+
+
+def _chunks(tasks: Sequence[Any], workers: int) -> list[Sequence[Any]]:
+    """``tasks`` in order, cut into about :data:`CHUNKS_PER_WORKER` chunks per worker: a
+    hand-over costs the workers' cores a few milliseconds, and a chunk each would leave
+    them unbalanced at the end."""
+    size = max(1, len(tasks) // (workers * CHUNKS_PER_WORKER))
+    return [tasks[i : i + size] for i in range(0, len(tasks), size)]
 
 
 def _run_local(
@@ -918,8 +926,7 @@ def _run_local(
                 finish(case, run_case(task))
             return "serial", 1
     workers = min(workers, len(pending))
-    size = max(1, len(pending) // (workers * CHUNKS_PER_WORKER))
-    chunks = [pending[i : i + size] for i in range(0, len(pending), size)]
+    chunks = _chunks(pending, workers)
     from concurrent.futures import ProcessPoolExecutor, as_completed
     from concurrent.futures.process import BrokenProcessPool
 
@@ -1061,9 +1068,7 @@ def _run_dask(
     token = uuid.uuid4().hex[:12]
     # chunks of cases, as for local workers: a task costs the scheduler, the client and
     # the worker a few milliseconds of the cores the cases run on
-    threads = max(1, sum(client.nthreads().values()))
-    size = max(1, len(tasks) // (threads * CHUNKS_PER_WORKER))
-    chunks = [tasks[i : i + size] for i in range(0, len(tasks), size)]
+    chunks = _chunks(tasks, max(1, sum(client.nthreads().values())))
     futures: dict[Any, Sequence[tuple[Case, dict[str, Any]]]] = {}
     try:
         for chunk in chunks:

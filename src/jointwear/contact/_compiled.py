@@ -86,7 +86,7 @@ class _Unaliased(CompilerBase):
     writes with those of every other array it touches (the rows of ``work``, the padded
     node arrays, the tables, the wear): a tenth of a warm revolution. The arrays of
     :func:`revolution` are distinct buffers (the caller's scratch, its outputs and the
-    contour's arrays, read only); the peak pressure's integer view is taken inside.
+    contour's arrays, read only).
     """
 
     def define_pipelines(self):

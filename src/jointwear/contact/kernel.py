@@ -106,9 +106,10 @@ class RevolutionWear:
     tangential_force: FloatArray
     springs_left: NDArray[np.int64]
     springs_right: NDArray[np.int64]
-    #: ``rows -> (pressure, fields)``: the compiled path's dense pressure (``rows`` rows)
-    #: and the fields it leaves out (None: the NumPy path's solution is kept)
-    _dense: Any = None
+    #: ``rows -> (pressure, fields)``: the compiled path's balanced state, its dense
+    #: pressure (``rows`` rows) and the fields it leaves out (None: the NumPy path's
+    #: solution is kept)
+    _balanced: Any = None
     _solution: ContactSolution | None = None
     _context: Any = None
 
@@ -128,7 +129,7 @@ class RevolutionWear:
 
     def __getattr__(self, name: str) -> Any:
         # only reached for a field not set: one the compiled path evaluates on first read
-        assemble = vars(self).get("_dense")
+        assemble = vars(self).get("_balanced")
         if assemble is None or name not in self._EVALUATED:
             raise AttributeError(name)
         self._keep(assemble(0)[1])
@@ -139,7 +140,7 @@ class RevolutionWear:
             vars(self).setdefault(name, value)
 
     def _pressure(self) -> FloatArray:
-        pressure, fields = self._dense(self.offset.size)
+        pressure, fields = self._balanced(self.offset.size)
         self._keep(fields)
         return pressure
 
@@ -339,8 +340,7 @@ def revolution_wear(
     -------
     RevolutionWear
     """
-    applies = isinstance(law, PowerLaw) and law.exponent in (1.0, 1.5)
-    module = _compiled() if applies and compiled is not False else None
+    module = _module_for(law, compiled)
     if compiled and module is None:
         raise ContactError("contact: the compiled kernel needs numba and a power law 1 or 1.5")
     if module is None:
@@ -440,8 +440,7 @@ class WarmRevolutions:
         Parameters are those of :func:`revolution_wear`; ``nodes`` and ``axial_length``
         [m] those of the contours to come.
         """
-        applies = isinstance(law, PowerLaw) and law.exponent in (1.0, 1.5)
-        module = _compiled() if applies and compiled is not False else None
+        module = _module_for(law, compiled)
         if module is None:
             return None
         return cls._of_module(
@@ -520,6 +519,13 @@ class WarmRevolutions:
         return nodes, self.grid, lines, centre_gap
 
 
+def _module_for(law: SpringLaw, compiled: bool | None):
+    """The compiled module where it applies to ``law`` (a power law 1 or 1.5) and
+    ``compiled`` allows it (None: where numba is available), else None."""
+    applies = isinstance(law, PowerLaw) and law.exponent in (1.0, 1.5)
+    return _compiled() if applies and compiled is not False else None
+
+
 def _plain(array: FloatArray) -> FloatArray:
     """``array`` as a writable C-contiguous array (copied only if it is not): one type for
     every array the kernel reads, or numba compiles it again for each (~8 s on a new
@@ -560,7 +566,7 @@ def _run(
     if failed:
         _check(counts[1] == 0, offset, lines[7], load, azimuth, total - load)
 
-    def dense(rows: int) -> tuple[FloatArray, dict[str, Any]]:
+    def balanced(rows: int) -> tuple[FloatArray, dict[str, Any]]:
         pressure = np.zeros((rows, contour.nodes))
         evaluated = np.empty((4, m))
         springs = np.empty((2, m), dtype=np.int64)
@@ -583,7 +589,7 @@ def _run(
         window=widest + 2,
         iterations=counts[0],
         normal_force=total,
-        _dense=dense,
+        _balanced=balanced,
         _context=(contour, pin, azimuth, law, centre_gap),
     )
 
