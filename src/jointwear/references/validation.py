@@ -1,0 +1,480 @@
+r"""Validation of the wear simulation against references nobody here tuned.
+
+Each case runs :class:`jointwear.Simulation` on a joint whose answer is known
+independently and returns its deviations as rows of a table; the tests assert
+the tolerances and ``python -m jointwear.references.validation DIR`` writes the
+tables (Markdown) and figures of the documentation's Validation page.
+
+=========================  =====================================================
+``conformal``              a journal under a load fixed in the bushing, turning
+                           or oscillating, against the rigid-conformal worn bore
+                           (:mod:`jointwear.references.conformal`), up to 20
+                           clearances of wear
+``uniform``                a load turning with the pin wears the bore uniformly:
+                           depth ``K kappa F s / (2 pi R b)`` with the spread
+                           factor ``kappa`` of the contact arc in closed form
+``archard``                Archard's global form: worn volume per revolution
+                           ``K kappa sum_k N_k ds_k`` for every model and mesh
+=========================  =====================================================
+"""
+
+from __future__ import annotations
+
+import math
+import tempfile
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from jointwear.references.conformal import conformal_wear, sliding_distance
+
+__all__ = [
+    "CONFORMAL_JOINTS",
+    "ConformalComparison",
+    "conformal_comparison",
+    "main",
+    "uniform_wear_comparison",
+]
+
+FloatArray = NDArray[np.float64]
+
+#: joints for the rigid-conformal comparison: (description, config overrides)
+CONFORMAL_JOINTS: dict[str, tuple[str, dict[str, Any]]] = {
+    "bronze-40mm": (
+        "steel pin 40 mm in a bronze bushing, c = 0.05 mm (c/R = 1/400), 8 kN",
+        {
+            "joint.pin_radius": "19.95 mm",
+            "joint.clearance": "0.05 mm",
+            "joint.axial_length": "20 mm",
+            "joint.bushing_thickness": "5 mm",
+            "materials.pin": "steel",
+            "materials.bushing": "bronze",
+            "load": 8000.0,
+        },
+    ),
+    "ptfe-15mm": (
+        "the paper's steel pin 14.9 mm in PTFE, c = 0.05 mm (c/R = 1/150), 1.5 kN",
+        {
+            "joint.pin_radius": "7.45 mm",
+            "joint.clearance": "0.05 mm",
+            "joint.axial_length": "20 mm",
+            "joint.bushing_thickness": "2.5 mm",
+            "load": 1500.0,
+        },
+    ),
+}
+
+
+def _config(
+    model: str,
+    motion: str,
+    joint: str,
+    revolutions: int,
+    saved: int,
+    folder: Path,
+    extra: Mapping[str, Any] | None = None,
+) -> Any:
+    from jointwear.config import apply_overrides, config_from_dict
+
+    overrides = dict(CONFORMAL_JOINTS[joint][1])
+    load = float(overrides.pop("load"))
+    if motion == "oscillating":
+        mechanism: dict[str, Any] = {
+            "type": "oscillating", "load": load, "load_frame": "bushing",
+            "load_angle": "-90 deg", "amplitude": "25 deg", "frequency": "0.25 Hz",
+        }  # fmt: skip
+        steps = 180
+    elif motion == "turning":
+        # the pin turns once per cycle under a load fixed in the bushing
+        csv = folder / "turning.csv"
+        rows = ["time [s],force_x [N],force_y [N],rotation [deg]"]
+        rows += [f"{i * 0.01:.2f},0,{-load:.17g},{i * 18}" for i in range(21)]
+        csv.write_text("\n".join(rows) + "\n")
+        mechanism = {"type": "load-history", "file": str(csv), "frame": "bushing"}
+        steps = 20
+    else:
+        raise ValueError(f"motion: {motion!r} is neither 'oscillating' nor 'turning'")
+    data: dict[str, Any] = {
+        "mechanism": mechanism,
+        "joint": {},
+        "materials": {},
+        "contact": {"model": model},
+        "simulation": {
+            "steps_per_revolution": steps,
+            "revolutions": revolutions,
+            "update_contour": True,
+            "update_every": "adaptive",
+            "saved_profiles": saved,
+        },
+    }
+    apply_overrides(data, {**overrides, **(extra or {})})
+    return config_from_dict(data)
+
+
+@dataclass(frozen=True)
+class ConformalComparison:
+    """A worn joint against the rigid-conformal reference at its saved profiles.
+
+    Attributes
+    ----------
+    model : str
+        Contact model.
+    motion : str
+        ``"oscillating"`` (+-25 deg) or ``"turning"`` (whole turns).
+    joint : str
+        Key of :data:`CONFORMAL_JOINTS`.
+    clearance : float
+        Radial clearance ``c`` [m].
+    sliding_distance : ndarray
+        Sliding distance at each saved profile [m].
+    depth, depth_reference : ndarray
+        Peak wear depth, simulated and reference [m].
+    volume, volume_reference : ndarray
+        Worn volume, simulated and reference [m^3].
+    width, width_reference : ndarray
+        Wear width (1 % of the peak), simulated and reference [rad].
+    runtime : float
+        Wall-clock time of the simulation [s].
+    """
+
+    model: str
+    motion: str
+    joint: str
+    clearance: float
+    sliding_distance: FloatArray
+    depth: FloatArray
+    depth_reference: FloatArray
+    volume: FloatArray
+    volume_reference: FloatArray
+    width: FloatArray
+    width_reference: FloatArray
+    runtime: float
+
+    @property
+    def clearances_worn(self) -> FloatArray:
+        """Reference peak depth in clearances [-]."""
+        return self.depth_reference / self.clearance
+
+    def errors(self, from_clearances: float = 1.0) -> dict[str, float]:
+        """Largest deviations where the reference has worn ``from_clearances`` or more.
+
+        Returns
+        -------
+        dict
+            ``depth`` and ``volume``: largest relative deviation [-]; ``width``: largest
+            deviation [deg].
+        """
+        keep = self.clearances_worn >= from_clearances - 1e-9
+        return {
+            "depth": float(np.max(np.abs(self.depth[keep] / self.depth_reference[keep] - 1))),
+            "volume": float(np.max(np.abs(self.volume[keep] / self.volume_reference[keep] - 1))),
+            "width": float(
+                np.degrees(np.max(np.abs(self.width[keep] - self.width_reference[keep])))
+            ),
+        }
+
+
+def conformal_comparison(
+    model: str,
+    motion: str = "oscillating",
+    joint: str = "bronze-40mm",
+    clearances: float = 20.0,
+    saved_profiles: int = 40,
+    overrides: Mapping[str, Any] | None = None,
+) -> ConformalComparison:
+    """Run a journal under a fixed load to ``clearances`` of reference wear and compare.
+
+    Parameters
+    ----------
+    model : str
+        Contact model (``contact.model``).
+    motion : {"oscillating", "turning"}
+        +-25 deg swings, or whole turns, of the pin under a load fixed in the bushing.
+    joint : str
+        Key of :data:`CONFORMAL_JOINTS`.
+    clearances : float
+        Reference peak depth at the end of the run, in clearances [-].
+    saved_profiles : int
+        Profiles compared along the run [-].
+    overrides : mapping, optional
+        Further config overrides (dotted keys).
+    """
+    import time
+
+    from jointwear.simulation import Simulation
+    from jointwear.tribology.metrics import wear_width, worn_area
+
+    with tempfile.TemporaryDirectory() as folder:
+        probe = _config(model, motion, joint, 1, 1, Path(folder), overrides)
+        cycle = Simulation(probe).load_cycle
+        joint_cfg, wear = probe.joint, probe.materials.bushing
+        load = float(np.max(cycle.load))
+        per_cycle = float(np.sum(np.abs(cycle.relative_rotation))) * joint_cfg.bushing_radius
+        target = sliding_distance(
+            joint_cfg.clearance * (1 + clearances), load, joint_cfg.pin_radius,
+            joint_cfg.clearance, joint_cfg.axial_length, wear.wear_coefficient,
+        )  # fmt: skip
+        revolutions = max(1, math.ceil(target / per_cycle))
+        config = _config(model, motion, joint, revolutions, saved_profiles, Path(folder), overrides)
+        start = time.perf_counter()
+        result = Simulation(config).run(pressures=False)
+        runtime = time.perf_counter() - start
+    profiles = result.dataset["wear_depth"]
+    marks = profiles["revolution"].values.astype(float)
+    depths = profiles.values
+    distance = marks * per_cycle
+    references = [
+        conformal_wear(
+            s, load, joint_cfg.pin_radius, joint_cfg.clearance, joint_cfg.axial_length,
+            wear.wear_coefficient, config.simulation.width_threshold,
+        )
+        for s in distance
+    ]  # fmt: skip
+    return ConformalComparison(
+        model=model,
+        motion=motion,
+        joint=joint,
+        clearance=joint_cfg.clearance,
+        sliding_distance=distance,
+        depth=depths.max(axis=1),
+        depth_reference=np.array([r.peak_wear_depth for r in references]),
+        volume=np.array(
+            [worn_area(joint_cfg.bushing_radius, h) * joint_cfg.axial_length for h in depths]
+        ),
+        volume_reference=np.array([r.wear_volume for r in references]),
+        width=np.array([wear_width(h, config.simulation.width_threshold) for h in depths]),
+        width_reference=np.array([r.wear_width for r in references]),
+        runtime=runtime,
+    )
+
+
+def uniform_wear_comparison(
+    model: str, revolutions: int = 2000, nodes: int = 360
+) -> dict[str, float]:
+    """A load turning with the pin: uniform wear against its closed form.
+
+    The load keeps its direction in the pin's frame, so every node of the bushing
+    sees the same pressure history and the bore grows as a circle. Archard's law
+    then gives the depth per sliding distance
+
+    .. math:: \\frac{dh}{ds} = \\frac{K \\kappa(\\alpha) F}{2\\pi (R_b + h) b},
+
+    with ``kappa`` the spread factor of the contact arc (sum of the spring forces
+    over the load, :func:`jointwear.contact.winkler.spread_factor`) and ``alpha`` the
+    half-angle of the Winkler contact on the circle of clearance ``c + h``
+    (:func:`jointwear.contact.winkler.circle_force`), integrated here with
+    :func:`scipy.integrate.solve_ivp`.
+
+    Parameters
+    ----------
+    model : str
+        Contact model with linear springs (``winkler`` family) [-].
+    revolutions : int
+        Revolutions of the pin [-].
+    nodes : int
+        Nodes of the bushing and steps per revolution [-].
+
+    Returns
+    -------
+    dict
+        ``depth`` and ``depth_reference`` [m], ``nonuniformity`` (range over mean of
+        the final profile) [-], ``error`` (relative) [-].
+    """
+    from scipy import integrate, optimize
+
+    from jointwear.config import config_from_dict
+    from jointwear.contact import winkler
+    from jointwear.simulation import Simulation
+
+    load = 200.0
+    with tempfile.TemporaryDirectory() as folder:
+        csv = Path(folder) / "turning_load.csv"
+        rows = ["time [s],force_x [N],force_y [N],rotation [rad]"]
+        for i in range(nodes + 1):
+            phi = 2 * math.pi * i / nodes
+            rows.append(
+                f"{i * 1e-3:.6f},{load * math.cos(phi):.17g},{load * math.sin(phi):.17g},{phi:.17g}"
+            )
+        csv.write_text("\n".join(rows) + "\n")
+        data = {
+            "mechanism": {"type": "load-history", "file": str(csv), "frame": "bushing"},
+            "joint": {"bushing_thickness": "2.5 mm"},
+            "materials": {},
+            "contact": {"model": model, "nodes": nodes, "foundation_modulus": "constrained"},
+            "simulation": {
+                "revolutions": revolutions, "update_contour": True, "update_every": "adaptive",
+            },
+        }  # fmt: skip
+        config = config_from_dict(data)
+        result = Simulation(config).run(pressures=False)
+    depth = result.dataset["wear_depth"].values[-1]
+    joint, bushing = config.joint, config.materials.bushing
+    from jointwear.contact.laws import ContactParameters
+
+    parameters = ContactParameters.from_config(config)
+    stiffness = winkler.spring_law(parameters).coefficient
+    radius0 = joint.bushing_radius
+
+    def rate(_s: float, h: FloatArray) -> list[float]:
+        radius, clearance = radius0 + h[0], joint.clearance + h[0]
+        approach = optimize.brentq(
+            lambda a: (
+                float(
+                    winkler.circle_force(
+                        a, clearance, radius, joint.axial_length, stiffness, joint.pin_radius
+                    )[0]
+                )
+                - load
+            ),
+            1e-15,
+            joint.bushing_thickness,
+            xtol=1e-16,
+        )
+        _, alpha = winkler.circle_force(
+            approach, clearance, radius, joint.axial_length, stiffness, joint.pin_radius
+        )
+        kappa = float(winkler.spread_factor(alpha))
+        return [
+            bushing.wear_coefficient * kappa * load / (2 * math.pi * radius * joint.axial_length)
+        ]
+
+    distance = revolutions * 2 * math.pi * radius0
+    solved = integrate.solve_ivp(rate, (0.0, distance), [0.0], rtol=1e-10, atol=1e-18)
+    reference = float(solved.y[0, -1])
+    mean = float(depth.mean())
+    return {
+        "depth": mean,
+        "depth_reference": reference,
+        "nonuniformity": float((depth.max() - depth.min()) / mean),
+        "error": mean / reference - 1.0,
+    }
+
+
+def _table(rows: Iterable[Mapping[str, Any]], columns: Mapping[str, str]) -> str:
+    lines = ["| " + " | ".join(columns.values()) + " |", "|" + "---|" * len(columns)]
+    for row in rows:
+        lines.append("| " + " | ".join(str(row[key]) for key in columns) + " |")
+    return "\n".join(lines)
+
+
+def _conformal_figure(comparisons: list[ConformalComparison], path: Path) -> None:
+    from matplotlib.figure import Figure
+
+    figure = Figure(figsize=(10, 3.4), layout="constrained")
+    axes = figure.subplots(1, 3)
+    reference = comparisons[0]
+    worn = reference.clearances_worn
+    axes[0].plot(worn, reference.depth_reference / reference.clearance, "k-", lw=2.5,
+                 label="rigid-conformal")  # fmt: skip
+    axes[1].plot(worn, reference.volume_reference * 1e9, "k-", lw=2.5)
+    axes[2].plot(worn, np.degrees(reference.width_reference), "k-", lw=2.5)
+    for comparison in comparisons:
+        label = f"{comparison.model} ({comparison.motion})"
+        worn = comparison.clearances_worn
+        axes[0].plot(worn, comparison.depth / comparison.clearance, "o", ms=3, label=label)
+        axes[1].plot(worn, comparison.volume * 1e9, "o", ms=3)
+        axes[2].plot(worn, np.degrees(comparison.width), "o", ms=3)
+    for ax, ylabel in zip(
+        axes, ("peak depth [clearances]", "worn volume [mm³]", "wear width [deg]"), strict=True
+    ):
+        ax.set_xlabel("reference wear [clearances]")
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=7)
+    figure.savefig(path, dpi=110)
+
+
+def build(folder: Path) -> str:
+    """Run every validation case; write the figures into ``folder``; return Markdown tables.
+
+    Parameters
+    ----------
+    folder : pathlib.Path
+        Where the figures go (created).
+    """
+    folder.mkdir(parents=True, exist_ok=True)
+    parts: list[str] = []
+    rows = []
+    for joint, (description, _) in CONFORMAL_JOINTS.items():
+        comparisons = []
+        for model, extra in (
+            ("asymmetric-winkler", {}),
+            ("nlcp", {"contact.nlcp_variant": "mesh-independent"}),
+            ("nlcp", {}),
+        ):
+            for motion in ("oscillating", "turning"):
+                comparison = conformal_comparison(model, motion, joint, overrides=extra)
+                name = model + (" (mesh-independent)" if extra else "")
+                comparisons.append(comparison)
+                errors = comparison.errors(1.0)
+                at_end = comparison.errors(comparison.clearances_worn[-1])
+                rows.append(
+                    {
+                        "joint": description, "model": name, "motion": motion,
+                        "depth": f"{errors['depth']:.2%}", "volume": f"{errors['volume']:.2%}",
+                        "width": f"{errors['width']:.1f}°",
+                        "end": f"{at_end['depth']:.2%} / {at_end['volume']:.2%}",
+                        "time": f"{comparison.runtime:.2f} s",
+                    }
+                )  # fmt: skip
+        _conformal_figure(comparisons[::2], folder / f"conformal_{joint}.png")
+    parts.append(
+        _table(
+            rows,
+            {
+                "joint": "joint",
+                "model": "model",
+                "motion": "motion",
+                "depth": "peak depth (max dev.)",
+                "volume": "worn volume (max dev.)",
+                "width": "width (max dev.)",
+                "end": "depth / volume at 20 c",
+                "time": "run time",
+            },
+        )
+    )
+    uniform = []
+    for model in ("asymmetric-winkler", "winkler"):
+        values = uniform_wear_comparison(model)
+        uniform.append(
+            {
+                "model": model,
+                "depth": f"{values['depth'] * 1e6:.4f} µm",
+                "reference": f"{values['depth_reference'] * 1e6:.4f} µm",
+                "error": f"{values['error']:+.2e}",
+                "range": f"{values['nonuniformity']:.1e}",
+            }
+        )
+    parts.append(
+        _table(
+            uniform,
+            {
+                "model": "model",
+                "depth": "mean depth",
+                "reference": "closed form",
+                "error": "deviation",
+                "range": "(max − min) / mean",
+            },
+        )
+    )
+    return "\n\n".join(parts)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m jointwear.references.validation DIR``: figures and tables into DIR."""
+    import sys
+
+    args = sys.argv[1:] if argv is None else argv
+    folder = Path(args[0] if args else "validation")
+    tables = build(folder)
+    (folder / "tables.md").write_text(tables + "\n")
+    print(tables)
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
