@@ -49,5 +49,7 @@ def test_contact_impact_unchanged() -> None:
         "table3_winkler_120rpm.toml",
         ["dynamics.model=contact-impact", "simulation.steps_per_revolution=72"],
     )
+    # the impact integrator's adaptive steps and event times carry last-bit differences
+    # of the machine's libm into the load: the same code gives ~4e-7 apart on two CPUs
     for key, expected in GOLDEN["contact-impact"].items():
-        assert summary[key] == pytest.approx(expected, rel=1e-12, abs=0), key
+        assert summary[key] == pytest.approx(expected, rel=2e-6, abs=0), key
