@@ -13,6 +13,11 @@ package provides two references with the contact-model interface
                contours too (:mod:`jointwear.references.fem`)
 =============  ==============================================================
 
+For worn joints, :mod:`jointwear.references.conformal` gives the exact rigid-conformal
+worn bore under a fixed load, and :mod:`jointwear.references.validation` runs the
+wear simulation against it and against closed forms (the documentation's Validation
+page).
+
 :mod:`jointwear.references.compare` tabulates every contact model against them
 and :mod:`jointwear.references.calibrate` fits Winkler's and NLCP's constants to
 a reference. Submodules are imported lazily: this package is imported by

@@ -3,7 +3,7 @@ r"""Rigid-conformal wear of a journal under a load fixed in the bushing (exact r
 A dry pin under a dead load, turning or swinging in its bushing, wears the bore
 into the shape of the pin. When the pin is much stiffer than the wear is deep
 (elastic approach small against the worn depth), the worn bore *is* the pin's
-surface on the contact arc, and Archard's law fixes the pressure: the pin sinks
+surface on the contact arc, and Archard's law [1]_ fixes the pressure: the pin sinks
 along the load by ``d(t)``, so a point of the arc at angle ``beta`` from the load
 (measured at the pin's centre) must recede along its normal by ``cos(beta)`` times
 the sinking, ``K p ds = cos(beta) dd``, hence
@@ -30,7 +30,8 @@ sinking per sliding distance ``s`` in closed form,
 integrated by quadrature from first contact (``d = c``). The worn volume per sliding
 distance rises from ``K F`` (a narrow contact) to ``4 K F / \pi`` once the arc spans
 half the bore (``beta_e = pi/2``), and the groove widens as it deepens: these are
-the two properties a contact model must reproduce to predict a worn joint's life.
+the two properties a contact model must reproduce to predict a worn joint's life
+(the unworn, elastic pin in a hole is Johnson's [2]_).
 To first order in ``d / R_p`` (small clearance and wear) the solution is algebraic,
 ``s = (R b c / (K F)) (alpha / cos(alpha) - sin(alpha))`` with ``cos(alpha) = c / d``
 (:func:`small_wear_sliding_distance`).

@@ -361,35 +361,47 @@ def _table(rows: Iterable[Mapping[str, Any]], columns: Mapping[str, str]) -> str
     return "\n".join(lines)
 
 
-def _conformal_figure(comparisons: list[ConformalComparison], path: Path) -> None:
+def _conformal_figure(
+    comparisons: list[ConformalComparison], labels: list[str], path: Path
+) -> None:
     from matplotlib.figure import Figure
 
-    figure = Figure(figsize=(10, 3.4), layout="constrained")
-    axes = figure.subplots(1, 3)
-    reference = comparisons[0]
-    worn = reference.clearances_worn
-    axes[0].plot(worn, reference.depth_reference / reference.clearance, "k-", lw=2.5,
-                 label="rigid-conformal")  # fmt: skip
-    axes[1].plot(worn, reference.volume_reference * 1e9, "k-", lw=2.5)
-    axes[2].plot(worn, np.degrees(reference.width_reference), "k-", lw=2.5)
-    for comparison in comparisons:
-        label = f"{comparison.model} ({comparison.motion})"
+    figure = Figure(figsize=(12, 3.2), layout="constrained")
+    axes = figure.subplots(1, 4)
+    first = comparisons[0]
+    axes[0].plot(
+        first.clearances_worn, np.degrees(first.width_reference), "k-", lw=2.5,
+        label="rigid-conformal",
+    )  # fmt: skip
+    for comparison, label in zip(comparisons, labels, strict=True):
         worn = comparison.clearances_worn
-        axes[0].plot(worn, comparison.depth / comparison.clearance, "o", ms=3, label=label)
-        axes[1].plot(worn, comparison.volume * 1e9, "o", ms=3)
-        axes[2].plot(worn, np.degrees(comparison.width), "o", ms=3)
-    for ax, ylabel in zip(
-        axes, ("peak depth [clearances]", "worn volume [mm³]", "wear width [deg]"), strict=True
-    ):
+        axes[0].plot(worn, np.degrees(comparison.width), "o", ms=3, label=label)
+        axes[1].plot(worn, 100 * (comparison.depth / comparison.depth_reference - 1), "o-", ms=3)
+        axes[2].plot(worn, 100 * (comparison.volume / comparison.volume_reference - 1), "o-", ms=3)
+        axes[3].plot(worn, np.degrees(comparison.width - comparison.width_reference), "o-", ms=3)
+    ylabels = (
+        "wear width [deg]",
+        "peak depth deviation [%]",
+        "worn volume deviation [%]",
+        "width deviation [deg]",
+    )
+    for ax, ylabel in zip(axes, ylabels, strict=True):
         ax.set_xlabel("reference wear [clearances]")
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
+    for ax in axes[1:]:
+        ax.axhline(0.0, color="k", lw=1)
     axes[0].legend(fontsize=7)
     figure.savefig(path, dpi=110)
 
 
-def build(folder: Path) -> str:
+def build(folder: Path) -> dict[str, str]:
     """Run every validation case; write the figures into ``folder``; return Markdown tables.
+
+    Returns
+    -------
+    dict of str to str
+        Table name (``conformal_<joint>``, ``uniform``) -> Markdown table.
 
     Parameters
     ----------
@@ -397,10 +409,9 @@ def build(folder: Path) -> str:
         Where the figures go (created).
     """
     folder.mkdir(parents=True, exist_ok=True)
-    parts: list[str] = []
-    rows = []
+    parts: dict[str, str] = {}
     for joint, (description, _) in CONFORMAL_JOINTS.items():
-        comparisons = []
+        comparisons, labels, rows = [], [], []
         for model, extra in (
             ("asymmetric-winkler", {}),
             ("nlcp", {"contact.nlcp_variant": "mesh-independent"}),
@@ -408,37 +419,35 @@ def build(folder: Path) -> str:
         ):
             for motion in ("oscillating", "turning"):
                 comparison = conformal_comparison(model, motion, joint, overrides=extra)
-                name = model + (" (mesh-independent)" if extra else "")
                 comparisons.append(comparison)
-                errors = comparison.errors(1.0)
-                at_end = comparison.errors(comparison.clearances_worn[-1])
+                labels.append(model + (" (mesh-independent)" if extra else "") + f", {motion}")
+                one, two = comparison.errors(1.0), comparison.errors(2.0)
+                end = comparison.errors(comparison.clearances_worn[-1])
                 rows.append(
                     {
-                        "joint": description, "model": name, "motion": motion,
-                        "depth": f"{errors['depth']:.2%}", "volume": f"{errors['volume']:.2%}",
-                        "width": f"{errors['width']:.1f}°",
-                        "end": f"{at_end['depth']:.2%} / {at_end['volume']:.2%}",
+                        "model": model + (" (mesh-independent)" if extra else ""),
+                        "motion": motion,
+                        "one": f"{one['depth']:.2%} / {one['volume']:.2%} / {one['width']:.1f}°",
+                        "two": f"{two['depth']:.2%} / {two['volume']:.2%} / {two['width']:.1f}°",
+                        "end": f"{end['depth']:.2%} / {end['volume']:.2%} / {end['width']:.1f}°",
                         "time": f"{comparison.runtime:.2f} s",
                     }
-                )  # fmt: skip
-        _conformal_figure(comparisons[::2], folder / f"conformal_{joint}.png")
-    parts.append(
-        _table(
-            rows,
-            {
-                "joint": "joint",
-                "model": "model",
-                "motion": "motion",
-                "depth": "peak depth (max dev.)",
-                "volume": "worn volume (max dev.)",
-                "width": "width (max dev.)",
-                "end": "depth / volume at 20 c",
-                "time": "run time",
-            },
+                )
+        _conformal_figure(comparisons[::2], labels[::2], folder / f"conformal_{joint}.png")
+        columns = {
+            "model": "model",
+            "motion": "motion",
+            "one": "from 1 c",
+            "two": "from 2 c",
+            "end": "at 20 c",
+            "time": "run time",
+        }
+        parts[f"conformal_{joint}"] = (
+            f"**{description}** (largest deviation in depth / volume / width)\n\n"
+            + _table(rows, columns)
         )
-    )
     uniform = []
-    for model in ("asymmetric-winkler", "winkler"):
+    for model in ("asymmetric-winkler",):
         values = uniform_wear_comparison(model)
         uniform.append(
             {
@@ -449,19 +458,17 @@ def build(folder: Path) -> str:
                 "range": f"{values['nonuniformity']:.1e}",
             }
         )
-    parts.append(
-        _table(
-            uniform,
-            {
-                "model": "model",
-                "depth": "mean depth",
-                "reference": "closed form",
-                "error": "deviation",
-                "range": "(max − min) / mean",
-            },
-        )
+    parts["uniform"] = _table(
+        uniform,
+        {
+            "model": "model",
+            "depth": "mean depth",
+            "reference": "closed form",
+            "error": "deviation",
+            "range": "(max − min) / mean",
+        },
     )
-    return "\n\n".join(parts)
+    return parts
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -470,9 +477,9 @@ def main(argv: list[str] | None = None) -> int:
 
     args = sys.argv[1:] if argv is None else argv
     folder = Path(args[0] if args else "validation")
-    tables = build(folder)
-    (folder / "tables.md").write_text(tables + "\n")
-    print(tables)
+    for name, table in build(folder).items():
+        (folder / f"{name}.md").write_text(table + "\n")
+        print(table, end="\n\n")
     return 0
 
 
