@@ -593,6 +593,16 @@ def test_cases_carry_the_checks_of_run(tmp_path, capsys):
     assert float(rows[-1]["pv_ratio"]) == records[-1]["metrics"]["pv_ratio"]
 
 
+def test_every_check_with_a_limit_has_its_columns():
+    from jointwear.sweep import CASE_RESULTS, CHECK_COLUMNS
+    from jointwear.tribology.metrics import CHECKS
+
+    assert set(CHECK_COLUMNS) == {name for name, check in CHECKS.items() if check.limit_key}
+    for check, column in CHECK_COLUMNS.items():
+        assert CASE_RESULTS[column][0] == CHECKS[check].unit
+        assert CASE_RESULTS[f"{check}_ratio"][0] == "1"
+
+
 def test_cases_without_limits_have_no_ratios(serial):
     """The paper's bushing names no limits: values are reported, no ratio, none exceeded."""
     _, result = serial

@@ -69,7 +69,7 @@ from jointwear.errors import ConfigError, DataError, JointwearError
 from jointwear.io import atomic_write, check_out, check_tree, read_input, write_json
 from jointwear.registry import suggest
 from jointwear.resources import check_case_count
-from jointwear.tribology.metrics import CHECKS, WEAR_METRICS
+from jointwear.tribology.metrics import CHECKS, WEAR_METRICS, engineering_checks
 from jointwear.units import DIMENSIONS, to_si
 
 __all__ = [
@@ -691,8 +691,6 @@ def case_checks(result: Any) -> dict[str, Any]:
         the value was not computed), ``worst_limit_ratio`` [-] and ``exceeded_limits``
         (the exceeded checks, space-separated).
     """
-    from jointwear.tribology.metrics import engineering_checks
-
     joints = result.joints
     checked = [
         engineering_checks(result.joint_data(joint if len(joints) > 1 else None), result.config)
