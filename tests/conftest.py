@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -20,6 +22,15 @@ settings.load_profile("default")
 
 REPO = Path(__file__).resolve().parents[1]
 PAPER_CONFIG = REPO / "tests" / "data" / "paper_joint.toml"
+
+
+def strict_json(text: str) -> Any:
+    """``json.loads`` that refuses ``NaN`` and ``Infinity``, which are not JSON."""
+
+    def refuse(name: str) -> Any:
+        raise ValueError(f"not JSON: {name}")
+
+    return json.loads(text, parse_constant=refuse)
 
 
 def scar(

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
@@ -13,7 +12,8 @@ from scipy.stats import norm
 from jointwear.cli import main
 from jointwear.config import Config
 from jointwear.errors import ConfigError
-from jointwear.life import life_plan, parse_distribution, run_life
+from jointwear.life import life_plan, life_quantiles, parse_distribution, run_life
+from tests.conftest import strict_json
 
 KD = "materials.bushing.wear_coefficient"
 SIGMA = 0.4
@@ -57,10 +57,14 @@ def test_life_distribution_is_the_lognormal_of_the_closed_form(study) -> None:
     assert logs.mean() == pytest.approx(math.log(median), abs=4 * SIGMA / math.sqrt(CASES))
     assert logs.std(ddof=1) == pytest.approx(SIGMA, rel=4 / math.sqrt(2 * CASES))
     quantiles = stats["life_revolutions"]
+    assert not any(q["lower_bound"] for q in quantiles.values())
+    # without censoring the Kaplan-Meier quantiles are the empirical ones
+    for name, q in (("p5", 0.05), ("median", 0.5), ("p95", 0.95)):
+        assert quantiles[name]["value"] == np.quantile(result.lives, q, method="inverted_cdf")
     z = norm.ppf(0.95)
-    assert quantiles["median"] == pytest.approx(median, rel=0.1)
-    assert quantiles["p5"] == pytest.approx(median * math.exp(-z * SIGMA), rel=0.15)
-    assert quantiles["p95"] == pytest.approx(median * math.exp(z * SIGMA), rel=0.15)
+    assert quantiles["median"]["value"] == pytest.approx(median, rel=0.1)
+    assert quantiles["p5"]["value"] == pytest.approx(median * math.exp(-z * SIGMA), rel=0.15)
+    assert quantiles["p95"]["value"] == pytest.approx(median * math.exp(z * SIGMA), rel=0.15)
     # the life falls as the wear coefficient rises (lives are whole revolutions: ties)
     assert stats["sensitivity"][KD] == pytest.approx(-1.0, abs=1e-4)
 
@@ -68,10 +72,34 @@ def test_life_distribution_is_the_lognormal_of_the_closed_form(study) -> None:
 def test_life_hours_follow_the_period(study) -> None:
     _, result, out = study
     stats = result.statistics
-    assert stats["life_hours"]["median"] == pytest.approx(
-        stats["life_revolutions"]["median"] * 0.5 / 3600
+    assert stats["life_hours"]["median"]["value"] == pytest.approx(
+        stats["life_revolutions"]["median"]["value"] * 0.5 / 3600
     )
-    assert json.loads((out / "life.json").read_text(encoding="utf-8"))["cases"] == CASES
+    data = strict_json((out / "life.json").read_text(encoding="utf-8"))
+    assert data["cases"] == CASES
+    assert len(data["lives"]) == CASES
+
+
+def test_kaplan_meier_quantiles_of_a_published_example() -> None:
+    """The 6-MP group of Freireich et al. (1963), weeks in remission, * censored: the
+    Kaplan-Meier estimate falls to 0.448 at 23 weeks (the median) and no lower, so the
+    95 % quantile lies beyond the longest case, 35 weeks (Kaplan-Meier tables of
+    Kleinbaum & Klein, Survival Analysis, 3rd ed., ch. 2)."""
+    weeks = [6, 6, 6, 6, 7, 9, 10, 10, 11, 13, 16, 17, 19, 20, 22, 23, 25, 32, 32, 34, 35]
+    censored = [0, 0, 0, 1, 0, 1, 0, 1, 1, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 1, 1]
+    p5, p25, median, p95 = life_quantiles(weeks, np.array(censored, dtype=bool),
+                                          (0.05, 0.25, 0.5, 0.95))  # fmt: skip
+    assert p5 == {"value": 6.0, "lower_bound": False}
+    assert p25 == {"value": 13.0, "lower_bound": False}  # F(13) = 1 - 0.690 >= 0.25
+    assert median == {"value": 23.0, "lower_bound": False}
+    assert p95 == {"value": 35.0, "lower_bound": True}
+    # reading the censored weeks as remissions ended would put the median at 16 weeks
+    assert np.quantile(weeks, 0.5, method="inverted_cdf") == 16
+
+
+def test_all_censored_gives_lower_bounds_only() -> None:
+    quantiles = life_quantiles([100.0, 100.0, 80.0], np.ones(3, dtype=bool))
+    assert quantiles == [{"value": 100.0, "lower_bound": True}] * 3
 
 
 def test_censored_cases_make_lower_bounds(paper_config: Config, tmp_path: Path) -> None:
@@ -86,10 +114,67 @@ def test_censored_cases_make_lower_bounds(paper_config: Config, tmp_path: Path) 
     plan = life_plan(
         base, {KD: {"distribution": "loguniform", "low": 1e-13, "high": 1e-12}}, 20, seed=1
     )
-    stats = run_life(plan, tmp_path / "out", workers=1).statistics
+    result = run_life(plan, tmp_path / "out", workers=1)
+    stats = result.statistics
     assert 0 < stats["censored"] < 20
-    assert stats["life_revolutions"].get("p95_lower_bound") is True
-    assert "p5_lower_bound" not in stats["life_revolutions"]
+    assert stats["life_revolutions"]["p95"] == {"value": 2000.0, "lower_bound": True}
+    assert stats["life_revolutions"]["p5"]["lower_bound"] is False
+    assert stats["life_revolutions"]["p5"]["value"] < 2000
+    # a censored case's life is the revolutions it ran, flagged; its hours follow
+    data = strict_json((tmp_path / "out" / "life.json").read_text(encoding="utf-8"))
+    lives = data["lives"]
+    assert sum(life["censored"] for life in lives) == stats["censored"]
+    for life in lives:
+        if life["censored"]:
+            assert life["life_revolutions"] == 2000
+            assert life["life_hours"] == pytest.approx(2000 * 0.5 / 3600)
+        else:
+            assert life["life_revolutions"] <= 2000
+    assert np.array_equal(result.censored, [life["censored"] for life in lives])
+    # the longer the wear coefficient lets the joint last, the more often it is censored
+    assert result.inputs[KD][result.censored].max() < result.inputs[KD][~result.censored].min()
+
+
+def test_a_study_without_any_limit_reached_writes_strict_json(
+    capsys, paper_config_path: Path, tmp_path: Path
+) -> None:
+    """Every case censored: hours, quantiles and rank correlations have no number, and
+    life.json and --json say so in JSON (lower bounds and null), never NaN."""
+    main(
+        [
+            "life",
+            str(paper_config_path),
+            "--sample",
+            f"{KD}=lognormal(median=5.05e-13 m^2/N, sigma=0.5)",
+            "--cases",
+            "4",
+            "--seed",
+            "2",
+            "--set",
+            "life.peak_wear_depth=0.1 mm",
+            "--set",
+            "simulation.revolutions=50",
+            "--set",
+            "contact.nodes=60",
+            "--set",
+            "simulation.steps_per_revolution=60",
+            "--out",
+            str(tmp_path / "life"),
+            "--workers",
+            "1",
+            "--json",
+            "--quiet",
+        ]
+    )
+    printed = strict_json(capsys.readouterr().out)
+    written = strict_json((tmp_path / "life" / "life.json").read_text(encoding="utf-8"))
+    for data in (printed, written):
+        assert data["censored"] == 4
+        assert data["life_revolutions"]["median"] == {"value": 50.0, "lower_bound": True}
+        assert data["life_hours"]["median"] == {"value": 50 * 0.5 / 3600, "lower_bound": True}
+        assert data["sensitivity"] == {KD: None}
+    assert "lives" not in printed
+    assert [life["censored"] for life in written["lives"]] == [True] * 4
 
 
 def test_life_cli(capsys, paper_config_path: Path, tmp_path: Path) -> None:
@@ -121,10 +206,11 @@ def test_life_cli(capsys, paper_config_path: Path, tmp_path: Path) -> None:
             "--quiet",
         ]
     )
-    data = json.loads(capsys.readouterr().out)
+    data = strict_json(capsys.readouterr().out)
     assert data["cases"] == 12
     assert set(data["sensitivity"]) == {KD, "joint.clearance"}
-    assert data["life_revolutions"]["p5"] <= data["life_revolutions"]["median"]
+    revolutions = data["life_revolutions"]
+    assert revolutions["p5"]["value"] <= revolutions["median"]["value"]
     assert (tmp_path / "life" / "life.png").exists()
 
 

@@ -258,10 +258,14 @@ def json_ready(value: Any) -> Any:
 
 
 def write_json(path: str | Path, data: Any) -> None:
-    """Write ``data`` as indented JSON, atomically."""
+    """Write ``data`` as indented, strict JSON, atomically.
+
+    Non-finite floats are written as ``null`` (:func:`json_ready`): ``NaN`` and
+    ``Infinity`` are not JSON, and strict readers refuse them.
+    """
+    text = json.dumps(json_ready(data), indent=2, sort_keys=False, allow_nan=False)
     with atomic_write(path, encoding="utf-8") as handle:
-        json.dump(data, handle, indent=2, sort_keys=False)
-        handle.write("\n")
+        handle.write(text + "\n")
 
 
 # ---------------------------------------------------------------- output directories

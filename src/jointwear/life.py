@@ -10,31 +10,42 @@ processes or a Dask cluster, as :func:`~jointwear.sweep.run_sweep`), and
 sensitivity of the life to each input (Spearman rank correlation).
 
 A case that reaches no limit within ``simulation.revolutions`` is *censored*: its
-life is only known to exceed that; the quantiles that fall among censored cases are
-reported as lower bounds.
+life is only known to exceed the revolutions it ran. The quantiles are those of the
+Kaplan-Meier estimate [2]_ of the life distribution, which counts a censored case as
+running up to where it stopped and no further; a quantile the estimate does not reach
+is reported as a lower bound (``"lower_bound": true``).
 
 References
 ----------
 .. [1] Pödra, P., Andersson, S. (1999). Simulating sliding wear with finite element
    method. Tribology International 32, 71-81.
+.. [2] Kaplan, E. L., Meier, P. (1958). Nonparametric estimation from incomplete
+   observations. Journal of the American Statistical Association 53, 457-481.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from jointwear.config import Config, parse_override
 from jointwear.errors import ConfigError
-from jointwear.sweep import SweepPlan, SweepResult, expand_sweep, run_sweep
+from jointwear.sweep import SweepPlan, SweepResult, expand_sweep, limit_counts, run_sweep
 
-__all__ = ["LifeResult", "life_plan", "life_statistics", "parse_distribution", "run_life"]
+__all__ = [
+    "LifeResult",
+    "case_lives",
+    "life_plan",
+    "life_quantiles",
+    "life_statistics",
+    "parse_distribution",
+    "run_life",
+]
 
 FloatArray = NDArray[np.float64]
 
@@ -109,16 +120,112 @@ def life_plan(
     return expand_sweep(spec, base, source="life")
 
 
+def life_quantiles(
+    lives: ArrayLike, censored: ArrayLike, quantiles: Sequence[float] = QUANTILES
+) -> list[dict[str, Any]]:
+    """Quantiles of a life distribution from right-censored lives (Kaplan-Meier).
+
+    The Kaplan-Meier estimate of the distribution of lives ``F(t) = 1 - prod_{t_i <= t}
+    (1 - d_i / n_i)`` (``d_i`` lives ending at ``t_i``, ``n_i`` cases still running
+    there) counts a censored case among those at risk up to its censoring point and no
+    further. The ``q`` quantile is the smallest life with ``F >= q``. Where ``F`` stays
+    below ``q`` up to the last case, the quantile lies beyond the longest censored case:
+    it is reported as that case's life, a lower bound. Without censoring the estimate is
+    the empirical distribution (``numpy.quantile(..., method="inverted_cdf")``).
+
+    Parameters
+    ----------
+    lives : array_like, shape (n,)
+        Life of each case, or where a censored case stopped [revolutions, or hours].
+    censored : array_like of bool, shape (n,)
+        Whether each case ended without reaching a limit (its life exceeds ``lives``).
+    quantiles : sequence of float
+        Probabilities of the quantiles [-], in (0, 1).
+
+    Returns
+    -------
+    list of dict
+        Per quantile ``{"value", "lower_bound"}`` (``value`` ``None`` without lives).
+
+    References
+    ----------
+    .. [1] Kaplan, E. L., Meier, P. (1958). Nonparametric estimation from incomplete
+       observations. Journal of the American Statistical Association 53, 457-481.
+    """
+    from scipy.stats import CensoredData, ecdf
+
+    lives = np.asarray(lives, dtype=float)
+    censored = np.asarray(censored, dtype=bool)
+    if not lives.size:
+        return [{"value": None, "lower_bound": False} for _ in quantiles]
+    if censored.all():
+        return [{"value": float(lives.max()), "lower_bound": True} for _ in quantiles]
+    cdf = ecdf(CensoredData(uncensored=lives[~censored], right=lives[censored])).cdf
+    out = []
+    for q in quantiles:
+        # (the product of the estimate leaves round-off: 0.5 may be 0.4999999999999999)
+        reached = np.flatnonzero(cdf.probabilities >= q - 1e-12)
+        if reached.size:
+            out.append({"value": float(cdf.quantiles[reached[0]]), "lower_bound": False})
+        else:
+            out.append({"value": float(lives.max()), "lower_bound": True})
+    return out
+
+
+def case_lives(records: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
+    """Each case's life, or the lower bound of a censored one.
+
+    Parameters
+    ----------
+    records : sequence of mapping
+        The sweep's case records (:func:`~jointwear.sweep.run_case`).
+
+    Returns
+    -------
+    list of dict
+        Per case ``case``, ``status``, ``life_revolutions`` (a censored case: the
+        revolutions it ran), ``life_hours``, ``censored`` and its material checks
+        ``worst_limit_ratio`` and ``exceeded_limits`` (a failed case: ``error``).
+    """
+    out = []
+    for record in records:
+        entry: dict[str, Any] = {"case": record.get("case"), "status": record["status"]}
+        metrics = record.get("metrics") or {}
+        if record["status"] != "ok":
+            out.append({**entry, "error": record.get("error", "")})
+            continue
+        censored = metrics.get("life_revolutions") is None
+        revolutions = metrics["revolutions"] if censored else metrics["life_revolutions"]
+        period = metrics.get("period_s")
+        if not censored:
+            hours = metrics["life_hours"]
+        elif period is not None:
+            hours = revolutions * period / 3600.0
+        else:
+            hours = None
+        out.append(
+            {
+                **entry,
+                "life_revolutions": revolutions,
+                "life_hours": hours,
+                "censored": censored,
+                "worst_limit_ratio": metrics.get("worst_limit_ratio"),
+                "exceeded_limits": (metrics.get("exceeded_limits") or "").split(),
+            }
+        )
+    return out
+
+
 def life_statistics(
     records: Sequence[Mapping[str, Any]], inputs: Mapping[str, Sequence[float]], horizon: int
 ) -> dict[str, Any]:
-    """Median, 5 % and 95 % life, and each input's rank correlation with the life.
+    """Median, 5 % and 95 % life (Kaplan-Meier), and each input's rank correlation with it.
 
     Parameters
     ----------
     records : sequence of mapping
         The sweep's case records (``metrics`` with ``life_revolutions``, ``life_hours``,
-        ``revolutions``).
+        ``revolutions``, ``period_s`` and the material checks).
     inputs : mapping of str to sequence of float
         Sampled value of each input per case (SI).
     horizon : int
@@ -127,60 +234,43 @@ def life_statistics(
     Returns
     -------
     dict
-        ``cases``, ``failed``, ``censored``, ``life_revolutions`` and ``life_hours``
-        (each ``{"p5", "median", "p95"}``, with ``lower_bound`` flags for quantiles
-        among censored cases), ``sensitivity`` (key -> Spearman rho of life and input).
+        ``cases``, ``failed``, ``censored``, ``horizon_revolutions``,
+        ``life_revolutions`` and ``life_hours`` (each ``{"p5", "median", "p95"}`` of
+        :func:`life_quantiles`: ``{"value", "lower_bound"}``), ``sensitivity`` (key ->
+        Spearman rho of life and input, ``None`` where undefined), the material limits
+        (:func:`~jointwear.sweep.limit_counts`) and ``lives`` (:func:`case_lives`).
     """
-    ok = [i for i, r in enumerate(records) if r.get("status") == "ok"]
-    lives = np.array(
-        [
-            records[i]["metrics"]["life_revolutions"]
-            if records[i]["metrics"].get("life_revolutions") is not None
-            else math.inf
-            for i in ok
-        ],
-        dtype=float,
-    )
-    hours_per_revolution = [
-        records[i]["metrics"]["life_hours"] / records[i]["metrics"]["life_revolutions"]
-        for i in ok
-        if records[i]["metrics"].get("life_revolutions")
-    ]
-    per_revolution = float(np.median(hours_per_revolution)) if hours_per_revolution else math.nan
-    censored = ~np.isfinite(lives)
+    lives = case_lives(records)
+    ok = [i for i, life in enumerate(lives) if life["status"] == "ok"]
+    revolutions = np.array([lives[i]["life_revolutions"] for i in ok], dtype=float)
+    censored = np.array([lives[i]["censored"] for i in ok], dtype=bool)
+    names = ("p5", "median", "p95")
     stats: dict[str, Any] = {
         "cases": len(records),
         "failed": len(records) - len(ok),
         "censored": int(censored.sum()),
         "horizon_revolutions": int(horizon),
+        "life_revolutions": dict(zip(names, life_quantiles(revolutions, censored), strict=True)),
     }
-    quantiles: dict[str, Any] = {}
-    hours: dict[str, Any] = {}
-    if lives.size:
-        # censored lives sort last: a quantile that falls on them is a lower bound
-        values = np.where(censored, horizon, lives)
-        order = np.sort(lives)
-        for q, name in zip(QUANTILES, ("p5", "median", "p95"), strict=True):
-            value = float(np.quantile(values, q, method="inverted_cdf"))
-            bound = bool(np.quantile(order, q, method="inverted_cdf") == math.inf)
-            quantiles[name] = value
-            hours[name] = value * per_revolution
-            if bound:
-                quantiles[f"{name}_lower_bound"] = True
-    stats["life_revolutions"] = quantiles
-    stats["life_hours"] = hours
-    sensitivity: dict[str, float] = {}
-    if lives.size > 2:
+    timed = [i for i in ok if lives[i]["life_hours"] is not None]
+    hours = np.array([lives[i]["life_hours"] for i in timed], dtype=float)
+    hours_censored = np.array([lives[i]["censored"] for i in timed], dtype=bool)
+    stats["life_hours"] = dict(zip(names, life_quantiles(hours, hours_censored), strict=True))
+    sensitivity: dict[str, float | None] = {}
+    if revolutions.size > 2:
         from scipy.stats import spearmanr
 
-        ranked = np.where(censored, horizon * 2.0, lives)  # censored: longer than any other
+        # a censored life is longer than every life reached (ties among the censored)
+        ranked = np.where(censored, 2.0 * max(revolutions.max(), horizon), revolutions)
         for key, values in inputs.items():
             column = np.asarray([values[i] for i in ok], dtype=float)
             if np.ptp(column) > 0 and np.ptp(ranked) > 0:
                 sensitivity[key] = float(spearmanr(column, ranked).statistic)
             else:
-                sensitivity[key] = math.nan
+                sensitivity[key] = None
     stats["sensitivity"] = sensitivity
+    stats.update(limit_counts(records))
+    stats["lives"] = lives
     return stats
 
 
@@ -195,7 +285,10 @@ class LifeResult:
     statistics : dict
         :func:`life_statistics` of the cases.
     lives : ndarray
-        Life of each successful case [revolutions] (``inf`` if censored).
+        Life of each successful case [revolutions]; of a censored case, the revolutions
+        it ran (a lower bound).
+    censored : ndarray of bool
+        Whether each successful case ended without reaching a limit.
     inputs : dict of str to ndarray
         Sampled value of each input per successful case (SI).
     """
@@ -203,11 +296,13 @@ class LifeResult:
     sweep: SweepResult
     statistics: dict[str, Any]
     lives: FloatArray
+    censored: NDArray[np.bool_]
     inputs: dict[str, FloatArray]
 
     def summary(self) -> dict[str, Any]:
-        """The ``jointwear life --json`` object."""
-        return {**self.statistics, "out": str(self.sweep.out), "runtime_s": self.sweep.runtime}
+        """The ``jointwear life --json`` object (``life.json`` without the ``lives``)."""
+        stats = {k: v for k, v in self.statistics.items() if k != "lives"}
+        return {**stats, "out": str(self.sweep.out), "runtime_s": self.sweep.runtime}
 
 
 def run_life(plan: SweepPlan, out: str | Path, **sweep_options: Any) -> LifeResult:
@@ -233,19 +328,26 @@ def run_life(plan: SweepPlan, out: str | Path, **sweep_options: Any) -> LifeResu
     }
     statistics = life_statistics(result.records, inputs_si, plan.base.simulation.revolutions)
     ok = [i for i, r in enumerate(result.records) if r.get("status") == "ok"]
-    lives = np.array(
-        [result.records[i]["metrics"].get("life_revolutions") or math.inf for i in ok],
-        dtype=float,
-    )
+    finished = [life for life in statistics["lives"] if life["status"] == "ok"]
+    lives = np.array([life["life_revolutions"] for life in finished], dtype=float)
+    censored = np.array([life["censored"] for life in finished], dtype=bool)
     inputs = {
         key: np.asarray([values[i] for i in ok], dtype=float) for key, values in inputs_si.items()
     }
     write_json(Path(out) / "life.json", {**statistics, "runtime_s": result.runtime})
-    return LifeResult(result, statistics, lives, inputs)
+    return LifeResult(result, statistics, lives, censored, inputs)
+
+
+def shown(quantile: Mapping[str, Any]) -> str:
+    """A quantile of :func:`life_quantiles` as text: ``"812"``, ``">= 2000"`` or ``"n/a"``."""
+    if quantile.get("value") is None:
+        return "n/a"
+    return f"{'>= ' if quantile.get('lower_bound') else ''}{quantile['value']:.4g}"
 
 
 def plot_life(result: LifeResult) -> Any:
-    """Histogram and empirical CDF of the life, with the 5/50/95 % lives marked.
+    """Histogram of the lives reached and the Kaplan-Meier distribution of the life, with
+    the 5/50/95 % lives marked (a lower bound dashed).
 
     Returns
     -------
@@ -253,30 +355,34 @@ def plot_life(result: LifeResult) -> Any:
     """
     from matplotlib.figure import Figure
 
-    lives = result.lives[np.isfinite(result.lives)]
+    reached = result.lives[~result.censored]
     fig = Figure(figsize=(8, 3.5), layout="constrained")
     hist, cdf = fig.subplots(1, 2)
-    if lives.size:
-        hist.hist(lives, bins=max(5, int(np.sqrt(lives.size))), color="tab:blue", alpha=0.8)
-        ordered = np.sort(result.lives)
-        fraction = np.arange(1, ordered.size + 1) / ordered.size
-        finite = np.isfinite(ordered)
-        cdf.step(ordered[finite], fraction[finite], where="post")
-        for name, style in (("p5", ":"), ("median", "-"), ("p95", ":")):
-            value = result.statistics["life_revolutions"].get(name)
-            if value is not None:
-                for ax in (hist, cdf):
-                    ax.axvline(value, color="k", linestyle=style, linewidth=1)
-    hist.set_xlabel("life [revolutions]")
+    if reached.size:
+        from scipy.stats import CensoredData, ecdf
+
+        hist.hist(reached, bins=max(5, int(np.sqrt(reached.size))), color="tab:blue", alpha=0.8)
+        estimate = ecdf(CensoredData(uncensored=reached, right=result.lives[result.censored])).cdf
+        cdf.step(estimate.quantiles, estimate.probabilities, where="post")
+    quantiles = result.statistics["life_revolutions"]
+    for name, style in (("p5", ":"), ("median", "-"), ("p95", ":")):
+        value = quantiles[name]["value"]
+        if value is not None:
+            for ax in (hist, cdf):
+                ax.axvline(
+                    value,
+                    color="k",
+                    linestyle="--" if quantiles[name]["lower_bound"] else style,
+                    linewidth=1,
+                )
+    hist.set_xlabel("life reached [revolutions]")
     hist.set_ylabel("cases")
     cdf.set_xlabel("life [revolutions]")
-    cdf.set_ylabel("fraction of joints worn out")
+    cdf.set_ylabel("fraction of joints worn out (Kaplan-Meier)")
     cdf.grid(alpha=0.3)
     stats = result.statistics
     fig.suptitle(
-        f"life: median {stats['life_revolutions'].get('median', math.nan):.4g} rev, "
-        f"5-95 % {stats['life_revolutions'].get('p5', math.nan):.4g}-"
-        f"{stats['life_revolutions'].get('p95', math.nan):.4g} rev "
-        f"({stats['cases']} cases, {stats['censored']} censored)"
+        f"life: median {shown(quantiles['median'])} rev, 5-95 % {shown(quantiles['p5'])} to "
+        f"{shown(quantiles['p95'])} rev ({stats['cases']} cases, {stats['censored']} censored)"
     )
     return fig

@@ -69,16 +69,19 @@ from jointwear.errors import ConfigError, DataError, JointwearError
 from jointwear.io import atomic_write, check_out, check_tree, read_input, write_json
 from jointwear.registry import suggest
 from jointwear.resources import check_case_count
-from jointwear.tribology.metrics import WEAR_METRICS
+from jointwear.tribology.metrics import CHECKS, WEAR_METRICS, engineering_checks
 from jointwear.units import DIMENSIONS, to_si
 
 __all__ = [
+    "CHECK_COLUMNS",
     "DISTRIBUTIONS",
     "METRICS",
     "Case",
     "SweepPlan",
     "SweepResult",
+    "case_checks",
     "expand_sweep",
+    "limit_counts",
     "load_plan",
     "load_sweep",
     "run_case",
@@ -98,8 +101,8 @@ DISTRIBUTIONS: dict[str, tuple[str, ...]] = {
 #: parameters of a distribution that are plain numbers (not quantities of the key)
 _SHAPE_PARAMETERS = {"sigma"}
 #: per-case metrics (the ``jointwear run --json`` keys) in ``cases.csv`` and ``sweep.nc``
-#: name -> (units, long_name) of each per-case result in ``sweep.nc``
-CASE_RESULTS: dict[str, tuple[str, str]] = {
+#: name -> (units, long_name) of each per-case result of the run in ``sweep.nc``
+RUN_RESULTS: dict[str, tuple[str, str]] = {
     **{
         m.key: ("degree" if m.key.endswith("_deg") else m.units, m.long_name)
         for m in WEAR_METRICS
@@ -112,8 +115,39 @@ CASE_RESULTS: dict[str, tuple[str, str]] = {
     "dynamics_updates": ("1", "solves of the dynamics on the worn joint"),
     "runtime_s": ("s", "run time of the case"),
 }
-#: per-case text results
-CASE_LABELS = ("contact_model", "stopped_by")
+#: the material checks of ``run --json``'s ``checks`` that have a limit: check -> the
+#: column of its value (SI unit in the name); each also has a ``{check}_ratio`` column
+CHECK_COLUMNS: dict[str, str] = {
+    "nominal_pressure": "nominal_pressure_pa",
+    "peak_pressure": "peak_pressure_pa",
+    "sliding_speed": "sliding_speed_m_s",
+    "pv": "pv_pa_m_s",
+}
+#: name -> (units, long_name) of each per-case material check in ``sweep.nc``
+CHECK_RESULTS: dict[str, tuple[str, str]] = {
+    "period_s": ("s", "period of the load cycle"),
+    **{
+        column: (CHECKS[check].unit, f"{CHECKS[check].label}: {CHECKS[check].description}")
+        for check, column in CHECK_COLUMNS.items()
+    },
+    **{
+        f"{check}_ratio": (
+            "1",
+            f"{CHECKS[check].label} / materials.bushing.{CHECKS[check].limit_key} "
+            "(> 1: limit exceeded; NaN: no limit known)",
+        )
+        for check in CHECK_COLUMNS
+    },
+    "worst_limit_ratio": (
+        "1",
+        "largest ratio of a checked value to its materials.bushing limit (> 1: a limit "
+        "exceeded; NaN: no limit known)",
+    ),
+}
+CASE_RESULTS: dict[str, tuple[str, str]] = {**RUN_RESULTS, **CHECK_RESULTS}
+#: per-case text results: of the run, and the exceeded checks (space-separated)
+RUN_LABELS = ("contact_model", "stopped_by")
+CASE_LABELS = (*RUN_LABELS, "exceeded_limits")
 METRICS = (*CASE_RESULTS, *CASE_LABELS)
 #: the sweep's own files inside its output directory
 PLAN_FILE = "sweep-plan.json"
@@ -611,10 +645,13 @@ def run_case(task: Mapping[str, Any]) -> dict[str, Any]:
                 state = checkpointer.load()
                 if state is None:
                     checkpointer.begin()
-            # a case keeps scalars and the final profile: no pressure field, no Dataset
-            result = Simulation(config).run(state=state, on_step=checkpointer, pressures=False)
-        summary = result.summary()
-        record["metrics"] = {name: summary[name] for name in METRICS}
+            # a case keeps scalars and the final profile: no Dataset, and the pressure
+            # snapshots only where a limit compares their peak
+            pressures = config.materials.bushing.max_static_pressure is not None
+            result = Simulation(config).run(state=state, on_step=checkpointer, pressures=pressures)
+            summary = result.summary()
+            record["metrics"] = {name: summary[name] for name in (*RUN_RESULTS, *RUN_LABELS)}
+            record["metrics"].update(case_checks(result))
         record["wear_depth_m"] = np.asarray(result.wear_depth, dtype=np.float64).tolist()
         for name in ("peak_wear_depth_m", "wear_width_deg", "wear_mass_kg", "wear_volume_m3"):
             if not math.isfinite(record["metrics"][name]):
@@ -632,6 +669,73 @@ def run_case(task: Mapping[str, Any]) -> dict[str, Any]:
 
 def _one_line(text: str) -> str:
     return " ".join(text.split())
+
+
+def case_checks(result: Any) -> dict[str, Any]:
+    """The material checks of a case (``run --json``'s ``checks``) as its sweep columns.
+
+    Each joint is checked by
+    :func:`~jointwear.tribology.metrics.engineering_checks` (an exceeded limit warns);
+    with several joints each column holds the largest value over them.
+
+    Parameters
+    ----------
+    result : jointwear.simulation.WearResult
+        The case's result.
+
+    Returns
+    -------
+    dict
+        ``period_s`` [s], the value of each check of :data:`CHECK_COLUMNS` (SI), its
+        ratio to its limit ``{check}_ratio`` [-] (``None`` where no limit is known or
+        the value was not computed), ``worst_limit_ratio`` [-] and ``exceeded_limits``
+        (the exceeded checks, space-separated).
+    """
+    joints = result.joints
+    checked = [
+        engineering_checks(result.joint_data(joint if len(joints) > 1 else None), result.config)
+        for joint in joints
+    ]
+    out: dict[str, Any] = {"period_s": float(result.joint_data().attrs["period_s"])}
+    ratios = []
+    for check, column in CHECK_COLUMNS.items():
+        values = [c[check]["value"] for c in checked if math.isfinite(c[check]["value"])]
+        out[column] = max(values) if values else None
+        ratio = [
+            c[check]["value"] / c[check]["limit"]
+            for c in checked
+            if c[check]["ok"] is not None and c[check]["limit"] > 0
+        ]
+        out[f"{check}_ratio"] = max(ratio) if ratio else None
+        ratios += ratio
+    out["worst_limit_ratio"] = max(ratios) if ratios else None
+    out["exceeded_limits"] = " ".join(
+        check for check in CHECK_COLUMNS if any(c[check]["ok"] is False for c in checked)
+    )
+    return out
+
+
+def limit_counts(records: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
+    """How many finished cases were checked against a material limit, and exceeded one.
+
+    Parameters
+    ----------
+    records : sequence of mapping
+        Case records (:func:`run_case`).
+
+    Returns
+    -------
+    dict
+        ``limits_checked`` (cases with at least one limit known), ``limits_exceeded``
+        (cases exceeding at least one) and ``limits_exceeded_by`` (check -> cases).
+    """
+    metrics = [r.get("metrics") or {} for r in records if r.get("status") == "ok"]
+    exceeded = [set((m.get("exceeded_limits") or "").split()) for m in metrics]
+    return {
+        "limits_checked": sum(m.get("worst_limit_ratio") is not None for m in metrics),
+        "limits_exceeded": sum(bool(e) for e in exceeded),
+        "limits_exceeded_by": {c: sum(c in e for e in exceeded) for c in CHECK_COLUMNS},
+    }
 
 
 # ---------------------------------------------------------------- running
@@ -681,6 +785,7 @@ class SweepResult:
             "dataset": str(self.out / DATASET_FILE),
             "scheduler": self.scheduler,
             "workers": self.workers,
+            **limit_counts(self.records),
             "runtime_s": self.runtime,
         }
 
@@ -1176,8 +1281,11 @@ def write_sweep_dataset(
         data_vars[name] = var(
             np.array([np.nan if v is None else float(v) for v in column]), unit, long_name
         )
-    for name, long_name in (("contact_model", "contact model"),
-                            ("stopped_by", "life limit that ended the case")):
+    for name, long_name in (
+        ("contact_model", "contact model"),
+        ("stopped_by", "life limit that ended the case"),
+        ("exceeded_limits", "material checks whose limit the case exceeds (space-separated)"),
+    ):
         data_vars[name] = var(
             np.array([(r.get("metrics") or {}).get(name) or "" for r in records], dtype=str),
             "",

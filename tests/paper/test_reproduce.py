@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import math
+import os
+import subprocess
+import sys
 import tomllib
 from pathlib import Path
 
@@ -92,6 +95,66 @@ def test_reproduce_single_revolution_rows(tmp_path: Path) -> None:
     # Fig. 8 overlays NLCP and Winkler at 120 rpm, both in this subset; Fig. 9 needs NLCP 240
     assert (tmp_path / "figures" / "fig08_120rpm_0.05mm.png").exists()
     assert not (tmp_path / "figures" / "fig09_240rpm_0.05mm.png").exists()
+    # one-revolution cases run on the NumPy path: nothing to compile
+    assert report["compile_s"] is None
+    assert "One-time compile: none" in text
+
+
+def test_compile_comes_before_the_cases_and_is_reported_apart(tmp_path: Path, monkeypatch):
+    """The kernel is compiled (or loaded) once before any case runs, so no case's run
+    time holds it; the report states it on a line of its own."""
+    from jointwear.simulation import Simulation
+
+    module = sys.modules[reproduce.__module__]  # (jointwear.paper.reproduce is the function)
+
+    events = []
+
+    def compile_kernels(config):
+        events.append("compile")
+        return 12.5
+
+    run = Simulation.run
+
+    def case(self, *args, **kwargs):
+        events.append("case")
+        return run(self, *args, **kwargs)
+
+    monkeypatch.setattr(module, "compile_kernels", compile_kernels)
+    monkeypatch.setattr(Simulation, "run", case)
+    report = reproduce(tmp_path, cases=["fig14_nlcp_update"], calibrate=False)
+    assert events == ["compile", "case"]
+    assert report["compile_s"] == 12.5
+    assert "One-time compile: 12.5 s" in (tmp_path / "report.md").read_text()
+
+
+def test_nothing_compiles_inside_a_case_after_the_compile():
+    """In a fresh interpreter (its own numba dispatchers): after :func:`compile_kernels`
+    the long cases of the paper compile no further variant of any kernel function, so
+    their run times hold no compile."""
+    code = """
+from numba.core.registry import CPUDispatcher
+from jointwear.paper.cases import case_config
+from jointwear.paper.reproduce import compile_kernels
+from jointwear.simulation import Simulation
+from jointwear.contact import _compiled
+
+def variants():
+    return {n: len(f.signatures) for n, f in vars(_compiled).items()
+            if isinstance(f, CPUDispatcher)}
+
+compile_kernels(case_config("table3_winkler_120rpm"))
+before = variants()
+for name in ("fig14_nlcp_update", "table5_winkler_15000r"):
+    Simulation(case_config(name)).run()
+print(sum(before.values()), variants() == before)
+"""
+    env = {**os.environ, "PYTHONPATH": str(REPO / "src")}
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env
+    )
+    compiled, unchanged = out.stdout.split()
+    assert int(compiled) >= 2  # the revolution and its warm-start preparation
+    assert unchanged == "True"
 
 
 CALIBRATED = {

@@ -99,8 +99,8 @@ def load(config: Path, overrides: list[str] | None) -> Config:
 
 
 def emit_json(data: dict[str, Any]) -> None:
-    """Print one JSON object on stdout (non-finite numbers become null)."""
+    """Print one JSON object on stdout (strict JSON: non-finite numbers become null)."""
     from jointwear.io import json_ready
 
-    sys.stdout.write(json.dumps(json_ready(data)) + "\n")
+    sys.stdout.write(json.dumps(json_ready(data), allow_nan=False) + "\n")
     sys.stdout.flush()

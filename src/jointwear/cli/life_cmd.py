@@ -60,7 +60,7 @@ def life(
     the rank correlation of the life with each input.
     """
     from jointwear.io import atomic_path, check_out, check_tree
-    from jointwear.life import life_plan, parse_distribution, plot_life, run_life
+    from jointwear.life import life_plan, parse_distribution, plot_life, run_life, shown
     from jointwear.resources import check_case_count, parse_time_limit
 
     seconds = parse_time_limit(time_limit)
@@ -88,21 +88,30 @@ def life(
     table.add_column("")
     for name in ("p5", "median", "p95"):
         table.add_column(name, justify="right")
-    revs, hours = summary["life_revolutions"], summary["life_hours"]
-    table.add_row(
-        "revolutions",
-        *(
-            f"{'>' if revs.get(f'{n}_lower_bound') else ''}{revs.get(n, float('nan')):.4g}"
-            for n in ("p5", "median", "p95")
-        ),
-    )
-    table.add_row("hours", *(f"{hours.get(n, float('nan')):.4g}" for n in ("p5", "median", "p95")))
+    for label, key in (("revolutions", "life_revolutions"), ("hours", "life_hours")):
+        table.add_row(label, *(shown(summary[key][n]) for n in ("p5", "median", "p95")))
     console.print(table)
+    if summary["censored"]:
+        console.print(
+            f"{summary['censored']} cases reached no limit within "
+            f"{summary['horizon_revolutions']} revolutions: their lives are lower bounds "
+            "(Kaplan-Meier; >= marks a quantile beyond them)"
+        )
+    if summary["limits_exceeded"]:
+        which = ", ".join(f"{k} {n}" for k, n in summary["limits_exceeded_by"].items() if n)
+        console.print(
+            f"{summary['limits_exceeded']} of {summary['cases'] - summary['failed']} cases "
+            f"exceed a material limit ({which}): the wear coefficient does not hold there"
+        )
+    elif summary["limits_checked"]:
+        console.print(f"material limits: {summary['limits_checked']} cases checked, none exceeded")
+    else:
+        console.print("material limits: none known for materials.bushing (not checked)")
     if summary["sensitivity"]:
         sens = Table(title="sensitivity (Spearman rank correlation of life and input)")
         sens.add_column("input")
         sens.add_column("rho", justify="right")
         for key, rho in summary["sensitivity"].items():
-            sens.add_row(key, f"{rho:+.3f}")
+            sens.add_row(key, "n/a" if rho is None else f"{rho:+.3f}")
         console.print(sens)
     console.print(f"results in {out}/ (life.json, life.png, cases.csv, sweep.nc)")

@@ -66,8 +66,11 @@ def reproduce(
         emit_json(report)
         return
     holds = sum(t["holds"] for t in report["trends"])
+    compiled = report["compile_s"]
     console.print(
         f"report: {out / 'report.md'}  ({len(report['cases'])} cases, "
         f"trends holding {holds}/{len(report['trends'])}, "
-        f"{report['total_runtime_s']:.1f} s)"
+        f"{report['total_runtime_s']:.1f} s"
+        + ("" if compiled is None else f", of which {compiled:.1f} s one-time compile")
+        + ")"
     )

@@ -159,6 +159,12 @@ def sweep(
         f"{summary['cases']} cases: {counts}; {summary['runtime_s']:.3g} s on "
         f"{summary['scheduler']}"
     )
+    if summary["limits_exceeded"]:
+        which = ", ".join(f"{k} {n}" for k, n in summary["limits_exceeded_by"].items() if n)
+        console.print(
+            f"{summary['limits_exceeded']} cases exceed a material limit ({which}); "
+            "see exceeded_limits and the *_ratio columns"
+        )
     failures = [r for r in result.records if r["status"] != "ok"]
     if failures:
         table = Table(title="failed cases")

@@ -142,6 +142,17 @@ def _command(case: str) -> str:
     return f"`jointwear run examples/paper/{case}.toml --json`"
 
 
+def _compile_line(seconds: float | None) -> str:
+    """The one-time compile of the kernels, which no case's time includes."""
+    if seconds is None:
+        return "One-time compile: none (no case ran a compiled kernel)."
+    return (
+        f"One-time compile: {seconds:.1f} s (numba compiles the kernels on the first run "
+        "after an installation and loads them from its cache afterwards); done before the "
+        "cases, so no case's time below includes it."
+    )
+
+
 def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Path]) -> None:
     """Write the markdown report."""
     lines = ["# jointwear: reproduction of the NLCP paper", ""]
@@ -152,6 +163,8 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
         "peaks are converted from mm, masses from g). Deviation = ours / paper − 1.",
         "",
         f"Machine: {report['machine']}. Total run time: {report['total_runtime_s']:.1f} s.",
+        "",
+        _compile_line(report.get("compile_s")),
         "",
         "## Calibration (on one row; every other row is a prediction)",
         "",

@@ -34,6 +34,7 @@ __all__ = [
     "TRENDS",
     "Trend",
     "check_trends",
+    "compile_kernels",
     "eq2_stiffness_over_pi",
     "feedback_study",
     "reproduce",
@@ -475,6 +476,51 @@ def feedback_study(overrides: dict[str, Any]) -> dict[str, Any]:
     return {"coupling": coupling, "clearance": clearance}
 
 
+def compile_kernels(config: Config) -> float:
+    """Compile the numba kernel the cases run, or load it from numba's cache [s].
+
+    numba compiles a kernel at its first call on a new installation (tens of seconds)
+    and loads it from its cache afterwards (a few tenths of a second); either is paid
+    once per process, by whatever calls the kernel first. Called before the cases, it
+    keeps that one-time cost out of every case's run time. A cold and a warm-started
+    revolution of the contact kernel take the argument types of a run: the one
+    compiled variant of each function that every case uses (the cases read no dense
+    pressure from it and integrate no contact-impact dynamics long enough to compile
+    theirs).
+
+    Parameters
+    ----------
+    config : Config
+        A paper case (its joint, load cycle and contact law).
+
+    Returns
+    -------
+    float
+        Wall time taken [s].
+    """
+    from jointwear.contact.kernel import revolution_wear
+    from jointwear.simulation import Simulation
+
+    start = time.perf_counter()
+    simulation = Simulation(config)
+    cycle = simulation.load_cycle
+    arguments = (
+        simulation.initial_contour(),
+        simulation.pin,
+        cycle.load,
+        cycle.azimuth,
+        simulation.sliding_distance,
+        simulation.law,
+        config.materials.bushing.wear_coefficient,
+    )
+    reach = config.joint.bushing_thickness
+    cold = revolution_wear(*arguments, max_penetration=reach)
+    revolution_wear(
+        *arguments, max_penetration=reach, initial_offset=cold.offset, window=cold.window
+    )
+    return time.perf_counter() - start
+
+
 def reproduce(
     out: str | Path,
     progress: Callable[[str, int, int], None] | None = None,
@@ -504,18 +550,32 @@ def reproduce(
     Returns
     -------
     dict
-        ``{"calibration": {...}, "cases": {name: summary}, "trends": [...]}``.
+        ``{"calibration": {...}, "cases": {name: summary}, "trends": [...],
+        "compile_s": ...}``; ``compile_s`` is the one-time compile of the kernels
+        (:func:`compile_kernels`, ``None`` if no case needed them), timed apart from
+        every case.
     """
+    from jointwear.contact.kernel import compiled_available
+    from jointwear.simulation import compiled_kernel
+
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
     overrides = dict(overrides or {})
     overrides_in = dict(overrides)
+    names = cases or case_names()
+    if with_sensitivity is None:
+        with_sensitivity = calibrate and cases is None
+    # the one-time compile before anything is timed; only if a case will use the kernels
+    # (a run of one-revolution cases never loads numba)
+    compile_s = None
+    compiled = [compiled_kernel(case_config(name, overrides)) is not False for name in names]
+    if (with_sensitivity or any(compiled)) and compiled_available():
+        compile_s = compile_kernels(case_config(CALIBRATION_CASE, overrides))
     calibration = None
     if calibrate:
         calibration = calibrate_paper_row(overrides=overrides)
         overrides.update(calibration.values)
-    names = cases or case_names()
     summaries, results = run_cases(names, overrides, progress)
     for name, result in results.items():
         summaries[name]["checks"] = material_checks(result)
@@ -525,8 +585,6 @@ def reproduce(
     if progress is not None:
         progress("done", len(names), len(names))
     trends = check_trends(summaries)
-    if with_sensitivity is None:
-        with_sensitivity = calibrate and cases is None
     variants = []
     if with_sensitivity:
         default = variant_record(
@@ -554,6 +612,7 @@ def reproduce(
         "trends": trends,
         "sensitivity": variants,
         "feedback": feedback,
+        "compile_s": compile_s,
         "total_runtime_s": time.perf_counter() - started,
         "machine": f"{platform.processor() or platform.machine()}, {platform.system()}, "
         f"Python {platform.python_version()}",

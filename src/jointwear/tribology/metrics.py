@@ -564,7 +564,9 @@ def engineering_checks(
     ----------
     dataset : xarray.Dataset or ResultContents
         A result without a ``joint`` dimension (``WearResult.joint_data()``, or
-        ``WearResult.joint_dataset()``).
+        ``WearResult.joint_dataset()``). Without its pressure snapshots (a run with
+        ``pressures=False``) the local values are NaN and the peak pressure is not
+        compared.
     config : jointwear.config.Config
         Uses ``joint.pin_radius``, ``joint.axial_length`` and ``materials.bushing``.
     warn : bool
@@ -576,11 +578,15 @@ def engineering_checks(
     """
     time = np.asarray(dataset["time"].values, dtype=float)
     period = float(dataset.attrs["period_s"])
-    phase = np.asarray(dataset["phase"].values, dtype=float)
-    snapshot_steps = np.searchsorted(phase, np.asarray(dataset["snapshot"].values, dtype=float))
-    pressure = np.concatenate(
-        [dataset["pressure_initial"].values, dataset["pressure_final"].values]
-    )
+    pressure = steps = None
+    # a result run without pressure snapshots (a sweep case) has no local values
+    if "pressure_initial" in dataset:
+        phase = np.asarray(dataset["phase"].values, dtype=float)
+        snapshot = np.searchsorted(phase, np.asarray(dataset["snapshot"].values, dtype=float))
+        pressure = np.concatenate(
+            [dataset["pressure_initial"].values, dataset["pressure_final"].values]
+        )
+        steps = np.concatenate([snapshot, snapshot])
     values = operating_values(
         dataset["joint_load"].values,
         dataset["relative_rotation"].values,
@@ -588,7 +594,7 @@ def engineering_checks(
         config.joint.pin_radius,
         config.joint.axial_length,
         pressure,
-        np.concatenate([snapshot_steps, snapshot_steps]),
+        steps,
     )
     joint = dataset.attrs.get("joint")
     where = f"joint {joint!r}: " if joint and len(config.joints) > 1 else ""
