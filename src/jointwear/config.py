@@ -921,7 +921,7 @@ def _bare_limited(
             yield data, name, dotted, kind, BARE_LIMITS[kind][0]
 
 
-def check_bare_numbers(data: Mapping[str, Any]) -> None:
+def check_bare_numbers(data: Mapping[str, Any], mechanism: str | None = None) -> None:
     """Refuse the bare numbers of a config as written that are almost surely unit slips.
 
     A bare number is SI; one beyond the plausible magnitude of its key (an angle of
@@ -933,7 +933,9 @@ def check_bare_numbers(data: Mapping[str, Any]) -> None:
     Parameters
     ----------
     data : mapping
-        Nested sections as written.
+        Nested sections as written (or dotted keys: ``{"joint.clearance": 0.1}``).
+    mechanism : str, optional
+        Mechanism type whose keys ``mechanism.*`` are; default ``data``'s.
 
     Raises
     ------
@@ -941,9 +943,10 @@ def check_bare_numbers(data: Mapping[str, Any]) -> None:
         ``mechanism.amplitude: 35 is read as 35 rad (a bare number is SI), more than
         6.283 rad; give a unit, e.g. "35 deg"``.
     """
-    section = data.get("mechanism")
-    given = section.get("type", "slider-crank") if isinstance(section, Mapping) else None
-    mechanism = given if isinstance(given, str) else None
+    if mechanism is None:
+        section = data.get("mechanism")
+        given = section.get("type", "slider-crank") if isinstance(section, Mapping) else None
+        mechanism = given if isinstance(given, str) else None
     for values, name, dotted, kind, limit in _bare_limited(data, mechanism):
         check_bare(values[name], kind, dotted, limit)
 
