@@ -95,7 +95,9 @@ TWO_TURNS_A_SECOND = [
 ]
 
 
-@pytest.mark.parametrize(("mechanism", "key", "kind"), RATE_KEYS, ids=[k for _, k, _ in RATE_KEYS])
+@pytest.mark.parametrize(
+    ("mechanism", "key", "kind"), RATE_KEYS, ids=[f"{m}:{k}" for m, k, _ in RATE_KEYS]
+)
 @pytest.mark.parametrize("text", TWO_TURNS_A_SECOND)
 def test_every_rate_key_reads_two_turns_a_second_in_any_unit(
     mechanism: str, key: str, kind: str, text: str
@@ -105,7 +107,9 @@ def test_every_rate_key_reads_two_turns_a_second_in_any_unit(
     assert value_of(config, key) == pytest.approx(expected, rel=1e-14)
 
 
-@pytest.mark.parametrize(("mechanism", "key", "kind"), RATE_KEYS, ids=[k for _, k, _ in RATE_KEYS])
+@pytest.mark.parametrize(
+    ("mechanism", "key", "kind"), RATE_KEYS, ids=[f"{m}:{k}" for m, k, _ in RATE_KEYS]
+)
 def test_every_rate_key_both_ways(mechanism: str, key: str, kind: str) -> None:
     """30 rpm is 0.5 Hz, 5 Hz is 300 rpm = 10π rad/s, 10 rad/s is 10/(2π) Hz."""
     read = {
@@ -276,6 +280,17 @@ def test_the_api_bound_message_says_how_a_bare_number_was_read() -> None:
     assert str(info.value) == (
         "mechanism.amplitude: Input should be less than or equal to 12.566370614359172 rad; "
         '35 is read as 35 rad (a bare number is SI), give a unit, e.g. "35 deg"'
+    )
+    with pytest.raises(ConfigError) as info:
+        config.replace({"mechanism.load_phase": -35})
+    assert str(info.value).endswith(
+        '-35 is read as -35 rad (a bare number is SI), give a unit, e.g. "-35 deg"'
+    )
+    with pytest.raises(ConfigError) as info:  # below 0: no unit mends it
+        config.replace({"joint.clearance": -1e-4})
+    assert str(info.value) == (
+        "joint.clearance: Input should be greater than 0 m; -0.0001 is read as -0.0001 m "
+        "(a bare number is SI)"
     )
     with pytest.raises(ConfigError) as info:
         config.replace({"mechanism.amplitude": "1000 deg"})

@@ -1159,8 +1159,9 @@ def _as_read(error: Mapping[str, Any], kind: str) -> str:
     """The end of a bound's message: its SI unit and how the value was read.
 
     ``rad; 35 is read as 35 rad (a bare number is SI), give a unit, e.g. "35 deg"``
-    for a bare number above an upper bound; ``rad, got '1000 deg' = 17.4533 rad``
-    for a value with a unit.
+    for a bare number of too large a magnitude (a unit slip; not for one below 0,
+    which no unit mends); ``rad, got '1000 deg' = 17.4533 rad`` for a value with a
+    unit.
     """
     unit, given = DIMENSIONS[kind], error["input"]
     number = bare_number(given)
@@ -1171,7 +1172,9 @@ def _as_read(error: Mapping[str, Any], kind: str) -> str:
             return unit
     text = given.strip() if isinstance(given, str) else repr(given)
     read = f"{unit}; {text} is read as {text} {unit} (a bare number is SI)"
-    if error["type"].startswith("less_than") and kind in BARE_LIMITS:
+    bound = next(iter(error.get("ctx", {}).values()), 0)
+    too_large = error["type"].startswith("less_than") or bound < 0  # (-35 < -4π: too large)
+    if too_large and kind in BARE_LIMITS:
         return f'{read}, give a unit, e.g. "{text} {BARE_LIMITS[kind][1]}"'
     return read
 
