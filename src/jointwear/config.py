@@ -1,7 +1,8 @@
 """Validated configuration: TOML in, SI floats out.
 
 Every quantity in a config file is a plain number (SI) or a string with units
-(``"0.2 mm"``, ``"240 rpm"``). :func:`load_config` reads a file, applies
+(``"0.2 mm"``, ``"240 rpm"``); a plain number that can only be a unit slip is
+refused (:func:`check_bare_numbers`). :func:`load_config` reads a file, applies
 ``--set section.key=VALUE`` overrides and returns a :class:`Config` whose
 fields are SI floats. Any problem raises :class:`~jointwear.errors.ConfigError`
 with a one-line message that starts with the dotted key.
