@@ -20,7 +20,7 @@ from jointwear.units import to_si
         ("20 um", "length", 2e-5),
         ("240 rpm", "angular_velocity", 8 * math.pi),
         ("120 rpm", "angular_velocity", 4 * math.pi),
-        ("2 Hz", "angular_velocity", 2.0),  # 1/s: read as rad/s
+        ("2 Hz", "angular_velocity", 4 * math.pi),  # two turns a second
         ("5.05e-13 m^2/N", "wear_coefficient", 5.05e-13),
         ("5.05e-13 mm^2/N", "wear_coefficient", 5.05e-19),
         ("209 GPa", "pressure", 2.09e11),

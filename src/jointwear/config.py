@@ -1,7 +1,8 @@
 """Validated configuration: TOML in, SI floats out.
 
 Every quantity in a config file is a plain number (SI) or a string with units
-(``"0.2 mm"``, ``"240 rpm"``). :func:`load_config` reads a file, applies
+(``"0.2 mm"``, ``"240 rpm"``); a plain number that can only be a unit slip is
+refused (:func:`check_bare_numbers`). :func:`load_config` reads a file, applies
 ``--set section.key=VALUE`` overrides and returns a :class:`Config` whose
 fields are SI floats. Any problem raises :class:`~jointwear.errors.ConfigError`
 with a one-line message that starts with the dotted key.
@@ -17,7 +18,7 @@ import math
 import tomllib
 import types
 import typing
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
@@ -35,7 +36,16 @@ from pydantic import (
 from jointwear.errors import ConfigError
 from jointwear.parameter_sets import PARAMETER_SETS, get_parameter_set
 from jointwear.registry import suggest
-from jointwear.units import MAX_MAGNITUDE, shown, to_si, to_si_unit
+from jointwear.units import (
+    BARE_LIMITS,
+    DIMENSIONS,
+    MAX_MAGNITUDE,
+    bare_number,
+    check_bare,
+    shown,
+    to_si,
+    to_si_unit,
+)
 
 #: largest count of revolutions, updates or checkpoints a config can ask for
 MAX_COUNT = 10**9
@@ -58,14 +68,20 @@ __all__ = [
     "SliderCrankConfig",
     "WearConfig",
     "apply_overrides",
+    "check_bare_numbers",
     "config_from_dict",
     "error_key",
+    "field_kind",
     "is_section",
     "key_field",
     "load_config",
     "parse_override",
     "read_toml",
 ]
+
+
+#: the converters of :func:`_si` -> their physical kind (read by :func:`field_kind`)
+_KIND_OF: dict[Any, str] = {}
 
 
 def _si(kind: str):
@@ -77,7 +93,31 @@ def _si(kind: str):
         except ConfigError as exc:
             raise ValueError(str(exc).removeprefix("§: ")) from None
 
+    _KIND_OF[convert] = kind
     return BeforeValidator(convert)
+
+
+def field_kind(info: Any) -> str | None:
+    """Physical kind (a key of :data:`~jointwear.units.DIMENSIONS`) of a config field.
+
+    Parameters
+    ----------
+    info : pydantic.fields.FieldInfo
+        A field, e.g. from :func:`key_field`.
+
+    Returns
+    -------
+    str or None
+        ``"length"``, ``"angular_velocity"``, ...; None for a field without units.
+    """
+    items = [*info.metadata, info.annotation]
+    while items:
+        item = items.pop()
+        if isinstance(item, BeforeValidator) and item.func in _KIND_OF:
+            return _KIND_OF[item.func]
+        if typing.get_origin(item) in (typing.Annotated, typing.Union, types.UnionType):
+            items.extend(typing.get_args(item))
+    return None
 
 
 Length = Annotated[float, _si("length"), Field(gt=0)]
@@ -754,8 +794,18 @@ class Config(_Section):
         return data
 
     def to_toml(self) -> str:
-        """The resolved config as TOML text (SI units, noted in comments)."""
-        return _dump_toml(self.to_dict())
+        """The resolved config as TOML text (SI units, noted in comments).
+
+        A value a bare number would not be taken for (:func:`check_bare_numbers`, e.g.
+        an angle of more than a turn) is written with its SI unit, so that the text
+        reads back as the same config.
+        """
+        data = self.to_dict()
+        for values, name, _, kind, limit in list(_bare_limited(data, self.mechanism.type)):
+            value = values[name]
+            if isinstance(value, float) and abs(value) > limit:
+                values[name] = f"{value!r} {DIMENSIONS[kind]}"  # reads back exactly
+        return _dump_toml(data)
 
     def replace(self, overrides: Mapping[str, Any]) -> Config:
         """Return a new config with dotted-key overrides applied and validated."""
@@ -842,6 +892,64 @@ def is_section(dotted: str) -> bool:
 def _takes_a_name(info: Any) -> bool:
     """True for a section field that also takes a value as a whole (a material name)."""
     return isinstance(info.json_schema_extra, dict) and "material" in info.json_schema_extra
+
+
+#: a bare length of a mechanism's link above this [m] is taken for a unit slip (the
+#: joint's parts and the life limits: the much smaller ``BARE_LIMITS["length"]``)
+BARE_LINK_LENGTH = 10.0
+
+
+def _bare_limited(
+    data: Mapping[str, Any], mechanism: str | None, prefix: str = ""
+) -> Iterator[tuple[Mapping[str, Any], str, str, str, float]]:
+    """(section, name, dotted key, kind, limit) of each value of ``data`` whose key has
+    a plausible largest bare number (:data:`jointwear.units.BARE_LIMITS`)."""
+    from pydantic.fields import FieldInfo
+
+    for name, value in data.items():
+        dotted = f"{prefix}{name}"
+        if isinstance(value, Mapping):
+            yield from _bare_limited(value, mechanism, f"{dotted}.")
+            continue
+        try:
+            info = key_field(dotted, mechanism)
+        except ConfigError:
+            continue
+        kind = field_kind(info) if isinstance(info, FieldInfo) else None
+        if kind == "length" and dotted.startswith("mechanism."):
+            yield data, name, dotted, kind, BARE_LINK_LENGTH
+        elif kind in BARE_LIMITS:
+            yield data, name, dotted, kind, BARE_LIMITS[kind][0]
+
+
+def check_bare_numbers(data: Mapping[str, Any], mechanism: str | None = None) -> None:
+    """Refuse the bare numbers of a config as written that are almost surely unit slips.
+
+    A bare number is SI; one beyond the plausible magnitude of its key (an angle of
+    more than a turn, a joint's part of more than a metre, ...; see
+    :func:`jointwear.units.check_bare`) is refused with a message that says how it
+    was read and how to give a unit. :func:`load_config` applies it to files and
+    ``--set``; :meth:`Config.to_toml` writes such values with their unit.
+
+    Parameters
+    ----------
+    data : mapping
+        Nested sections as written (or dotted keys: ``{"joint.clearance": 0.1}``).
+    mechanism : str, optional
+        Mechanism type whose keys ``mechanism.*`` are; default ``data``'s.
+
+    Raises
+    ------
+    ConfigError
+        ``mechanism.amplitude: 35 is read as 35 rad (a bare number is SI), more than
+        6.283 rad; give a unit, e.g. "35 deg"``.
+    """
+    if mechanism is None:
+        section = data.get("mechanism")
+        given = section.get("type", "slider-crank") if isinstance(section, Mapping) else None
+        mechanism = given if isinstance(given, str) else None
+    for values, name, dotted, kind, limit in _bare_limited(data, mechanism):
+        check_bare(values[name], kind, dotted, limit)
 
 
 # ---------------------------------------------------------------- loading
@@ -1026,9 +1134,50 @@ def _message(error: Mapping[str, Any]) -> str:
         return f"{key}: {given} is not allowed{suggest(given.strip(chr(39)), options)}"
     if kind in {"finite_number"}:
         return f"{key}: must be finite, got {shown(error['input'])}"
+    kind_of_key = _range_kind(error)
+    if kind_of_key is not None:
+        return f"{key}: {msg} {_as_read(error, kind_of_key)}"
     if msg.startswith(key + ":") or (msg.split(":")[0].count(".") and ":" in msg):
         return msg
     return f"{key}: {msg}"
+
+
+#: pydantic's error types of a violated bound
+_RANGE_ERRORS = frozenset({"greater_than", "greater_than_equal", "less_than", "less_than_equal"})
+
+
+def _range_kind(error: Mapping[str, Any]) -> str | None:
+    """The physical kind of a key whose bound ``error`` reports (None: no units or no bound)."""
+    if error["type"] not in _RANGE_ERRORS:
+        return None
+    loc, parent = _walk(tuple(error["loc"]))
+    info = getattr(parent, "model_fields", {}).get(loc[-1]) if loc else None
+    kind = None if info is None else field_kind(info)
+    return kind if kind is not None and DIMENSIONS[kind] else None
+
+
+def _as_read(error: Mapping[str, Any], kind: str) -> str:
+    """The end of a bound's message: its SI unit and how the value was read.
+
+    ``rad; 35 is read as 35 rad (a bare number is SI), give a unit, e.g. "35 deg"``
+    for a bare number of too large a magnitude (a unit slip; not for one below 0,
+    which no unit mends); ``rad, got '1000 deg' = 17.4533 rad`` for a value with a
+    unit.
+    """
+    unit, given = DIMENSIONS[kind], error["input"]
+    number = bare_number(given)
+    if number is None:
+        try:
+            return f"{unit}, got {shown(given)} = {to_si(given, kind):.6g} {unit}"
+        except ConfigError:
+            return unit
+    text = given.strip() if isinstance(given, str) else repr(given)
+    read = f"{unit}; {text} is read as {text} {unit} (a bare number is SI)"
+    bound = next(iter(error.get("ctx", {}).values()), 0)
+    too_large = error["type"].startswith("less_than") or bound < 0  # (-35 < -4π: too large)
+    if too_large and kind in BARE_LIMITS:
+        return f'{read}, give a unit, e.g. "{text} {BARE_LIMITS[kind][1]}"'
+    return read
 
 
 def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
@@ -1119,6 +1268,7 @@ def load_config(
     """
     data: dict[str, Any] = {} if path is None else read_toml(path)
     apply_overrides(data, overrides)
+    check_bare_numbers(data)
     mechanism = data.get("mechanism")
     if isinstance(mechanism, dict) and isinstance(mechanism.get("file"), str):
         # a data file named in a config is found next to the config, wherever it is run

@@ -58,6 +58,7 @@ import numpy as np
 from jointwear.config import (
     Config,
     apply_overrides,
+    check_bare_numbers,
     config_from_dict,
     error_key,
     is_section,
@@ -516,6 +517,14 @@ def _value_list(values: Any, where: str) -> list[Any]:
     return values
 
 
+def _check_bare(base: Config, dotted: str, value: Any, where: str) -> None:
+    """A bare number that is a unit slip fails the sweep, as in a config file."""
+    try:
+        check_bare_numbers({dotted: value}, base.mechanism.type)
+    except ConfigError as exc:
+        raise ConfigError(f"{where}: {str(exc).removeprefix(f'{dotted}: ')}") from None
+
+
 def _check_value(base: Config, dotted: str, value: Any, where: str) -> None:
     """A value must be valid on its own; combinations are judged per case.
 
@@ -526,6 +535,7 @@ def _check_value(base: Config, dotted: str, value: Any, where: str) -> None:
     """
     from pydantic import ValidationError
 
+    _check_bare(base, dotted, value, where)
     data = _without_none(base.model_dump(mode="json"))
     apply_overrides(data, {dotted: value})
     try:
@@ -581,6 +591,8 @@ def _draw(
     def number(param: str) -> float:
         value = dist[param]
         kind = "dimensionless" if param in _SHAPE_PARAMETERS or key.kind is None else key.kind
+        if kind == key.kind:
+            _check_bare(base, dotted, value, f"{where}.{param}")
         return to_si(value, kind, f"{where}.{param}")
 
     if name in ("uniform", "loguniform"):

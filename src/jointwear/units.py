@@ -4,6 +4,26 @@ Inside the package everything is an SI ``float``. This module is the only
 place that converts: :func:`to_si` accepts a number (already SI) or a string
 such as ``"0.2 mm"`` or ``"240 rpm"`` and returns the SI magnitude, after
 checking the dimension.
+
+Turns and cycles
+----------------
+pint takes the radian for a dimensionless unit, so ``rpm`` (revolutions per
+minute), ``Hz``, ``rad/s`` and ``1/min`` all have the dimension ``1/[time]`` and
+pint converts between them as if one revolution were one radian. jointwear does
+not: a value with an angle unit (``rad``, ``deg``, ``rev``, ``turn``, ``rpm``)
+counts radians, one without (``Hz``, ``1/s``, ``1/min``) counts turns (cycles),
+and between the two lies the factor 2π (:func:`to_si`). So ``"120 rpm"`` as an
+angular velocity is 4π rad/s, ``"2 Hz"`` too; ``"30 rpm"`` as a frequency is
+0.5 Hz, ``"10 rad/s"`` is 10/(2π) Hz.
+
+Bare numbers
+------------
+A bare number (``35``, or the text ``"35"``) is SI. Where one is almost surely
+a unit slip (:data:`BARE_LIMITS`: an angle beyond a turn, a length of a joint's
+part beyond a metre, ...) the boundaries that read user text refuse it with a
+message that says how it was read and how to give a unit
+(:func:`check_bare`): ``mechanism.amplitude: 35 is read as 35 rad (a bare
+number is SI), more than 6.283 rad; give a unit, e.g. "35 deg"``.
 """
 
 from __future__ import annotations
@@ -66,8 +86,10 @@ def _import_pint() -> Any:
 
         helpers = {
             "dask_array": _Deferred("dask.array"),
-            **{name: _deferred_call("dask.base", name)
-               for name in ("compute", "persist", "visualize")},
+            **{
+                name: _deferred_call("dask.base", name)
+                for name in ("compute", "persist", "visualize")
+            },
         }
         for module in (compat, facet):
             for name, value in helpers.items():
@@ -80,12 +102,14 @@ def _import_pint() -> Any:
 pint = _import_pint()
 
 __all__ = [
+    "BARE_LIMITS",
     "DIMENSIONS",
     "MAX_DIGITS",
     "MAX_EXPONENT",
     "MAX_EXPRESSION",
     "MAX_MAGNITUDE",
     "MAX_TURN_ANGLE",
+    "check_bare",
     "format_quantity",
     "parse_quantity",
     "parse_unit",
@@ -119,6 +143,7 @@ def _registry() -> pint.UnitRegistry:
 
 ureg = _registry()
 ureg.define("rpm = revolution / minute")
+ureg.define("@alias revolution = rev")
 
 #: SI unit used for each physical kind of parameter.
 DIMENSIONS: dict[str, str] = {
@@ -145,13 +170,38 @@ DIMENSIONS: dict[str, str] = {
 }
 
 
+#: Kinds counted per unit time -> the power of the radian in their SI unit: an
+#: angular velocity counts radians (rad/s), a frequency turns (Hz = cycles/s).
+_PER_TIME_ANGLE_POWER: dict[str, int] = {"angular_velocity": 1, "frequency": 0}
+
+#: One turn [rad]: an angular velocity in rad/s is 2π times the frequency in Hz.
+_TURN = 2.0 * math.pi
+
+#: Largest SI magnitude of a bare number of each kind that is taken as meant: above
+#: it the number is almost surely in another unit (an angle in degrees, a bushing's
+#: radius in millimetres, a crank speed in rpm), and :func:`check_bare` refuses it.
+#: kind -> (limit [SI unit of the kind], the unit it was most likely meant in).
+BARE_LIMITS: dict[str, tuple[float, str]] = {
+    "angle": (_TURN, "deg"),  # more than a turn: degrees
+    "length": (1.0, "mm"),  # a joint's pin, clearance, bushing: far below a metre
+    "angular_velocity": (1000.0, "rpm"),  # ~9550 rpm
+    "frequency": (100.0, "1/min"),  # oscillation tests run at a few Hz
+    "velocity": (100.0, "mm/s"),  # sliding speeds of plain bearings: a few m/s
+}
+
+
 @cache
 def _unit(kind: str) -> pint.Unit:
     return ureg.Unit(DIMENSIONS[kind])
 
 
-def to_si(value: Any, kind: str, key: str = "value") -> float:
+def to_si(value: Any, kind: str, key: str = "value", *, bare_limit: float | None = None) -> float:
     """Convert a number or a string with units to an SI float.
+
+    An angular velocity and a frequency convert into each other with the factor
+    2π: a unit with an angle (``rpm``, ``rad/s``, ``deg/s``, ``rev/s``) counts
+    radians, one without (``Hz``, ``1/s``, ``1/min``) counts turns, ``1 Hz = 2π
+    rad/s = 60 rpm`` (pint alone would take one turn for one radian).
 
     Parameters
     ----------
@@ -161,6 +211,9 @@ def to_si(value: Any, kind: str, key: str = "value") -> float:
         Physical kind, a key of :data:`DIMENSIONS`, e.g. ``"length"``.
     key : str
         Name used in error messages (dotted config key).
+    bare_limit : float, optional
+        Largest magnitude [SI unit of ``kind``] of a bare number (see
+        :func:`check_bare`); default: a bare number is not checked.
 
     Returns
     -------
@@ -170,14 +223,83 @@ def to_si(value: Any, kind: str, key: str = "value") -> float:
     Raises
     ------
     ConfigError
-        If the string does not parse, has the wrong dimension or is not finite.
+        If the string does not parse, has the wrong dimension or is not finite, or a
+        bare number exceeds ``bare_limit``.
     """
     what = kind.replace("_", " ")
     article = "an" if what[0] in "aeiou" else "a"
     expected = f"{article} {what} (e.g. in {DIMENSIONS[kind] or 'dimensionless'})"
-    # a rotational speed may be written as a frequency ("2 Hz", "120 1/min")
-    alternative = "1/[time]" if kind == "angular_velocity" else None
-    return _convert(value, _unit(kind), expected, key, alternative)
+    magnitude = _convert(value, _unit(kind), expected, key, _PER_TIME_ANGLE_POWER.get(kind))
+    if bare_limit is not None:
+        check_bare(value, kind, key, bare_limit)
+    return magnitude
+
+
+def bare_number(value: Any) -> float | None:
+    """The number of a bare number (``35``, ``"35"``, ``"3.5e1"``), None for anything else.
+
+    Parameters
+    ----------
+    value : Any
+        A config or option value [SI if a bare number].
+    """
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, int | float):
+        number = float(value) if abs(value) <= MAX_MAGNITUDE else math.inf
+    elif isinstance(value, str):
+        try:
+            quantity = parse_quantity(value)
+        except ConfigError:
+            return None
+        if isinstance(quantity, int | float):
+            number = float(quantity)
+        elif quantity.unitless:
+            number = float(quantity.magnitude)
+        else:
+            return None
+    else:
+        return None
+    return number if math.isfinite(number) else None
+
+
+def check_bare(value: Any, kind: str, key: str, limit: float | None = None) -> None:
+    """Refuse a bare number that is almost surely a unit slip.
+
+    A bare number is SI; beyond the plausible magnitude of its kind
+    (:data:`BARE_LIMITS`: an angle of more than a turn, a bushing of more than a
+    metre) the message says how it was read and how to give a unit. Anything else
+    (a string with a unit, a bare number within the limit, a kind without a limit)
+    passes.
+
+    Parameters
+    ----------
+    value : Any
+        The value as given.
+    kind : str
+        Physical kind, a key of :data:`DIMENSIONS`.
+    key : str
+        Name used in the message (dotted config key or option).
+    limit : float, optional
+        Largest magnitude [SI unit of ``kind``]; default from :data:`BARE_LIMITS`.
+
+    Raises
+    ------
+    ConfigError
+        ``KEY: 35 is read as 35 rad (a bare number is SI), more than 6.283 rad;
+        give a unit, e.g. "35 deg"``.
+    """
+    number = bare_number(value)
+    default, hint = BARE_LIMITS.get(kind, (None, DIMENSIONS[kind]))
+    limit = default if limit is None else limit
+    if number is None or limit is None or abs(number) <= limit:
+        return
+    text = value.strip() if isinstance(value, str) else repr(value)
+    unit = DIMENSIONS[kind]
+    raise ConfigError(
+        f"{key}: {text} is read as {text} {unit} (a bare number is SI), more than "
+        f'{limit:.4g} {unit}; give a unit, e.g. "{text} {hint}"'
+    )
 
 
 def to_si_unit(value: Any, unit: str, key: str = "value") -> float:
@@ -201,6 +323,8 @@ def to_si_unit(value: Any, unit: str, key: str = "value") -> float:
 def to_angle(value: Any, key: str = "value", limit: float = MAX_TURN_ANGLE) -> float:
     """Convert a direction angle (``"12 deg"``; a bare number is radians) to radians.
 
+    A bare number of more than a turn is refused as a unit slip (:func:`check_bare`).
+
     Parameters
     ----------
     value : float or str
@@ -213,9 +337,10 @@ def to_angle(value: Any, key: str = "value", limit: float = MAX_TURN_ANGLE) -> f
     Raises
     ------
     ConfigError
-        As :func:`to_si`, or if ``|angle| > limit``.
+        As :func:`to_si`, if ``|angle| > limit``, or for a bare number of more than a
+        turn.
     """
-    angle = to_si(value, "angle", key)
+    angle = to_si(value, "angle", key, bare_limit=min(limit, BARE_LIMITS["angle"][0]))
     if abs(angle) > limit:
         raise ConfigError(
             f"{key}: {shown(value)} is not a direction angle "
@@ -376,12 +501,12 @@ def parse_unit(text: str, key: str = "unit") -> pint.Unit:
 
 
 def _convert(
-    value: Any, target: pint.Unit, expected: str, key: str, alternative: str | None = None
+    value: Any, target: pint.Unit, expected: str, key: str, angle_power: int | None = None
 ) -> float:
     if isinstance(value, bool):
         raise ConfigError(f"{key}: expected a number or a quantity string, got a boolean")
     try:
-        magnitude: float | None = _magnitude(value, target, expected, key, alternative)
+        magnitude: float | None = _magnitude(value, target, expected, key, angle_power)
     except (OverflowError, ArithmeticError):  # float() of an integer of hundreds of digits
         magnitude = None
     if magnitude is not None and not math.isfinite(magnitude):
@@ -394,10 +519,20 @@ def _convert(
     return magnitude
 
 
+def _radian_power(unit: Any) -> float:
+    """Power of the radian in a unit: 1 for rpm, deg/s or rad/s, 0 for Hz, 1/min, m."""
+    return dict(ureg.Quantity(1.0, unit).to_root_units().unit_items()).get("radian", 0)
+
+
 def _magnitude(
-    value: Any, target: pint.Unit, expected: str, key: str, alternative: str | None
+    value: Any, target: pint.Unit, expected: str, key: str, angle_power: int | None
 ) -> float:
-    """SI magnitude of a number or quantity text (may overflow to inf or raise)."""
+    """SI magnitude of a number or quantity text (may overflow to inf or raise).
+
+    ``angle_power`` (for a rate: 1 in rad/s, 0 in Hz) makes a rate of the other
+    kind convert with the factor 2π of a turn, which pint's dimensionless radian
+    drops.
+    """
     if isinstance(value, int | float):
         return float(value)
     if not isinstance(value, str):
@@ -408,13 +543,20 @@ def _magnitude(
     if quantity.unitless:
         # a bare number written as text ("7.5e-3") is SI, as a number would be
         return float(quantity.magnitude)
-    if not quantity.check(target.dimensionality) and not (
-        alternative is not None and quantity.check(alternative)
-    ):
+    if not quantity.check(target.dimensionality):
         raise ConfigError(
             f"{key}: {shown(value)} has dimension {quantity.dimensionality}, expected {expected}"
         )
-    return float(quantity.to(target).magnitude)
+    magnitude = float(quantity.to(target).magnitude)
+    if angle_power is None:
+        return magnitude
+    given = _radian_power(quantity.units)
+    if given not in (0, 1):
+        raise ConfigError(
+            f"{key}: {shown(value)} is not a rate of turns or of an angle, expected {expected}"
+        )
+    # rpm -> Hz: pint's 2π rad/min per revolution counted as 2π cycles/min; divide by 2π
+    return magnitude * _TURN ** (angle_power - given)
 
 
 def format_quantity(value: float, unit: str, digits: int = 6) -> str:
@@ -434,8 +576,17 @@ def format_quantity(value: float, unit: str, digits: int = 6) -> str:
 
 
 def _si_unit_for(unit: str) -> str:
-    dimensionality = ureg.Unit(unit).dimensionality
+    """The SI unit of :data:`DIMENSIONS` a display unit shows (``"rpm"`` -> rad/s, ``"Hz"`` -> Hz).
+
+    The power of the radian must match too: an angular velocity is shown in rpm or
+    deg/s, a frequency in Hz or 1/min (pint's dimensionless radian would mix them).
+    """
+    parsed = ureg.Unit(unit)
     for si in DIMENSIONS.values():
-        if si and ureg.Unit(si).dimensionality == dimensionality:
+        if (
+            si
+            and ureg.Unit(si).dimensionality == parsed.dimensionality
+            and _radian_power(si) == _radian_power(parsed)
+        ):
             return si
     return str(ureg.Quantity(1, unit).to_base_units().units)

@@ -439,6 +439,103 @@ UNIT_CASES: list[Bad] = [
         [*RUN, "--time-limit", "5 m"],
         ["--time-limit", "expected a time"],
     ),
+    # ------------------------------------------------------------ bare numbers: unit slips
+    Bad(
+        "bare-amplitude-in-degrees",
+        "units",
+        ["run", "{tmp}/swing.toml", "--out", "{out}", "--set", "mechanism.amplitude=35"],
+        [
+            "mechanism.amplitude",
+            "35 is read as 35 rad (a bare number is SI), more than 6.283 rad",
+            'give a unit, e.g. "35 deg"',
+        ],
+        {"swing.toml": SWING},
+    ),
+    Bad(
+        "bare-load-angle-in-file",
+        "units",
+        ["run", "{tmp}/swing.toml", "--out", "{out}"],
+        ["mechanism.load_angle", "-90 is read as -90 rad", 'e.g. "-90 deg"'],
+        {"swing.toml": SWING + "load_angle = -90\n"},
+    ),
+    Bad(
+        "bare-pin-radius-in-millimetres",
+        "units",
+        _set("joint.pin_radius=7.45"),
+        ["joint.pin_radius", "7.45 is read as 7.45 m (a bare number is SI)", 'e.g. "7.45 mm"'],
+    ),
+    Bad(
+        "bare-rod-length-in-millimetres",
+        "units",
+        _set("mechanism.rod_length=200"),
+        ["mechanism.rod_length", "200 is read as 200 m", "more than 10 m", 'e.g. "200 mm"'],
+    ),
+    Bad(
+        "bare-crank-speed-in-rpm",
+        "units",
+        _set("mechanism.crank_speed=3000"),
+        ["mechanism.crank_speed", "3000 is read as 3000 rad/s", 'e.g. "3000 rpm"'],
+    ),
+    Bad(
+        "bare-frequency-in-cycles-per-minute",
+        "units",
+        ["run", "{tmp}/swing.toml", "--out", "{out}", "--set", "mechanism.frequency=120"],
+        ["mechanism.frequency", "120 is read as 120 Hz", 'e.g. "120 1/min"'],
+        {"swing.toml": SWING},
+    ),
+    Bad(
+        "bare-sliding-speed-limit",
+        "units",
+        _set("materials.bushing.max_sliding_speed=500"),
+        ["materials.bushing.max_sliding_speed", "500 is read as 500 m/s", 'e.g. "500 mm/s"'],
+    ),
+    Bad(
+        "bare-angle-as-text-in-sweep-grid",
+        "units",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml: [grid] mechanism.amplitude: 10 is read as 10 rad", 'e.g. "10 deg"'],
+        {
+            "s.toml": 'base = "swing.toml"\n[grid]\n"mechanism.amplitude" = ["25 deg", "10"]\n',
+            "swing.toml": SWING,
+        },
+    ),
+    Bad(
+        "bare-angle-as-distribution-bound",
+        "units",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml: [sample] mechanism.amplitude.high: 40 is read as 40 rad", 'e.g. "40 deg"'],
+        {
+            "s.toml": 'base = "swing.toml"\n[sample]\n"mechanism.amplitude" = '
+            '{distribution = "uniform", low = "10 deg", high = 40}\nsamples = 2\n',
+            "swing.toml": SWING,
+        },
+    ),
+    Bad(
+        "bare-radius-in-millimetres",
+        "units",
+        ["measure", "{tmp}/ring.csv", "--radius", "40.15"],
+        ["--radius", "40.15 is read as 40.15 m (a bare number is SI)", 'e.g. "40.15 mm"'],
+        {"ring.csv": CSV_HEADER + "40.15,0\n"},
+    ),
+    Bad(
+        "bare-floor-in-micrometres",
+        "units",
+        ["measure", "{tmp}/ring.csv", "--radius", "7.5 mm", "--floor", "3"],
+        ["--floor", "3 is read as 3 m"],
+        {"ring.csv": CSV_HEADER + "7.5,0\n"},
+    ),
+    Bad(
+        "bare-azimuth-in-degrees",
+        "units",
+        ["contact", "{paper}", "--load", "1 kN", "--azimuth", "90"],
+        ["--azimuth", "90 is read as 90 rad", 'e.g. "90 deg"'],
+    ),
+    Bad(
+        "crank-speed-in-squared-angle",
+        "units",
+        _set("mechanism.crank_speed=2 sr/s"),
+        ["mechanism.crank_speed", "is not a rate of turns or of an angle"],
+    ),
 ]
 
 CASES += UNIT_CASES

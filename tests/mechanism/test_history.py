@@ -151,25 +151,43 @@ def test_units_in_the_brackets_are_converted(tmp_path: Path) -> None:
     assert expected.steps == 24
 
 
-def test_closing_row_or_given_period_give_the_same_cycle(tmp_path: Path) -> None:
+def test_without_a_closing_row_the_last_step_holds_the_load_and_does_not_slide(
+    tmp_path: Path,
+) -> None:
     closed = read_load_history(write_csv(tmp_path / "closed.csv", example_columns()))
     path = write_csv(tmp_path / "open.csv", example_columns(closing=False))
-    assert_same_cycle(read_load_history(path, period=0.8), closed)
     # without a period the median step closes the cycle: here the same 0.8 s
-    assert_same_cycle(read_load_history(path), closed)
+    for cycle in (read_load_history(path, period=0.8), read_load_history(path)):
+        assert cycle.steps == closed.steps
+        assert cycle.period == pytest.approx(closed.period, rel=1e-15)
+        for name in ("time", "load", "azimuth"):
+            np.testing.assert_allclose(getattr(cycle, name), getattr(closed, name), rtol=1e-15)
+        # the rows' rotations as given; the closing step, of which the file says nothing,
+        # slides nothing (the closed file's last step slides into its closing row)
+        np.testing.assert_array_equal(cycle.relative_rotation[:-1], closed.relative_rotation[:-1])
+        assert cycle.relative_rotation[-1] == 0.0
+        assert closed.relative_rotation[-1] != 0.0
     # a period beside a closing row must agree with it
     assert read_load_history(tmp_path / "closed.csv", period=0.8).period == 0.8
     with pytest.raises(DataError, match=r"closed\.csv: period 0\.9 s disagrees"):
         read_load_history(tmp_path / "closed.csv", period=0.9)
 
 
-def test_open_cycle_of_a_turning_pin_ends_whole_turns_on(tmp_path: Path) -> None:
+def test_open_cycle_of_a_turning_pin_slides_its_rows_only(tmp_path: Path) -> None:
+    """No hidden step to whole turns: three turns sampled without their endpoint slide
+    what the rows say; with the closing row they slide the three turns."""
     columns = example_columns(closing=False)
     time = columns["time [s]"]
     columns["rotation [rad]"] = 3 * 2 * np.pi * time / 0.8 + 0.1 * np.sin(7 * time)  # 3 turns
     cycle = read_load_history(write_csv(tmp_path / "turning.csv", columns))
-    assert cycle.rotation[-1] == pytest.approx(3 * 2 * np.pi, rel=1e-14)
-    assert cycle.rotation[-2] == pytest.approx(columns["rotation [rad]"][-1], rel=1e-14)
+    rows = columns["rotation [rad]"]
+    assert cycle.rotation[-1] == pytest.approx(rows[-1] - rows[0], rel=1e-14)
+    assert cycle.total_relative_rotation == pytest.approx(np.sum(np.abs(np.diff(rows))), 1e-14)
+    closed = {name: np.append(values, values[0]) for name, values in columns.items()}
+    closed["time [s]"][-1] = 0.8
+    closed["rotation [rad]"][-1] = rows[0] + 3 * 2 * np.pi
+    whole = read_load_history(write_csv(tmp_path / "closed.csv", closed))
+    assert whole.rotation[-1] == pytest.approx(3 * 2 * np.pi, rel=1e-14)
 
 
 def test_non_uniform_steps_are_kept_as_they_are(tmp_path: Path) -> None:
@@ -229,6 +247,73 @@ def test_result_netcdf_reads_as_a_load_history(
         read_load_history(result, frame="global")
     with pytest.raises(DataError, match=r"result\.nc: period 0\.6 s disagrees"):
         read_load_history(result, period=0.6)
+
+
+# ---------------------------------------------------------------- sliding as given
+def constant_load_history(folder: Path, name: str, rotation_deg: list[float]) -> Path:
+    """A config of a history under a constant 100 N downwards, rows 10 ms apart."""
+    lines = ["time [s],force_x [N],force_y [N],rotation [deg]"]
+    lines += [f"{0.01 * i!r},0,-100,{angle!r}" for i, angle in enumerate(rotation_deg)]
+    (folder / f"{name}.csv").write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return write_config(folder, HISTORY.replace("loads.csv", f"{name}.csv"), f"{name}.toml")
+
+
+def dynamics_json(config: Path, capsys: pytest.CaptureFixture[str]) -> dict:
+    main(["dynamics", str(config), "--json"])
+    return json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize(
+    ("short", "long", "ratio"),
+    [
+        # half a turn (not whole turns: no closing row) against a full turn (closing row)
+        ([9.0 * i for i in range(21)], [18.0 * i for i in range(21)], 2.0),
+        # a swing out (no closing row) against out and back (the last row closes it)
+        ([9.0 * i for i in range(11)], [9.0 * min(i, 20 - i) for i in range(21)], 2.0),
+        # three quarters of a turn out (nearer a whole turn than none) and back
+        ([9.0 * i for i in range(31)], [9.0 * min(i, 60 - i) for i in range(61)], 2.0),
+    ],
+    ids=["half-vs-full-turn", "out-vs-out-and-back", "three-quarters-out-vs-out-and-back"],
+)
+def test_a_history_slides_exactly_its_rows(
+    short: list[float],
+    long: list[float],
+    ratio: float,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    """Under one constant load the wear depth of a revolution is proportional to the
+    sliding, and the sliding is the sum of |Δrotation| between rows: nothing added to
+    close the cycle. (The worn mass is not quite: the worn area grows with the depth
+    squared, 1e-6 relative here.)"""
+    configs = [constant_load_history(tmp_path, n, r) for n, r in (("a", short), ("b", long))]
+    for config, rotation in zip(configs, (short, long), strict=True):
+        expected = np.radians(np.sum(np.abs(np.diff(rotation))))
+        assert load_cycle(load_config(config)).total_relative_rotation == pytest.approx(
+            expected, rel=1e-14
+        )
+        summary = dynamics_json(config, capsys)
+        assert summary["total_relative_rotation_rad"] == pytest.approx(expected, rel=1e-14)
+    depth_a, depth_b = (Simulation(load_config(c)).run().wear_depth for c in configs)
+    assert depth_a.max() > 0
+    np.testing.assert_allclose(depth_b, ratio * depth_a, rtol=1e-9, atol=0)
+
+
+def test_a_cycle_of_no_whole_turns_reads_back_from_its_csv(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """``dynamics --csv`` of a history that turns half a turn (its closing row is half a
+    turn on) reads back as the same cycle, with the same wear."""
+    columns = example_columns(closing=False)
+    columns["rotation [rad]"] = np.pi * columns["time [s]"] / 0.8  # 0 -> 172.5 deg
+    write_csv(tmp_path / "loads.csv", columns)
+    source = write_config(tmp_path, HISTORY, "source.toml")
+    again = write_config(tmp_path, HISTORY.replace("loads.csv", "again.csv"))
+    dynamics_csv(source, tmp_path / "again.csv", capsys)
+    expected = load_cycle(load_config(source))
+    assert expected.rotation[-1] == pytest.approx(np.pi * 23 / 24, rel=1e-14)
+    assert_same_cycle(load_cycle(load_config(again)), expected)
+    np.testing.assert_allclose(wear(again, LONG_RUN), wear(source, LONG_RUN), rtol=1e-12)
 
 
 # ---------------------------------------------------------------- bad files

@@ -155,7 +155,7 @@ def compare(
     from jointwear.measurement.io import length_unit_factor, read_points
     from jointwear.registry import suggest
     from jointwear.results import config_of, read_result, select_joint
-    from jointwear.units import to_si
+    from jointwear.units import BARE_LIMITS, to_si
 
     # options first: a typo must not cost a circle fit, and must leave --out untouched
     fit_name = fit.replace("_", "-")
@@ -167,7 +167,7 @@ def compare(
         )
     if not 0 <= threshold < 1:
         raise ConfigError(f"--threshold: must be in [0, 1), got {threshold:g}")
-    depth_floor = to_si(floor, "length", "--floor")
+    depth_floor = to_si(floor, "length", "--floor", bare_limit=BARE_LIMITS["length"][0])
     if depth_floor < 0:
         raise ConfigError(f"--floor: must be >= 0, got {floor!r}")
     alignment = parse_align(align)

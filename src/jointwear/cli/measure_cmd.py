@@ -27,7 +27,7 @@ from jointwear.measurement.profile import (
     wear_metrics,
 )
 from jointwear.resources import check_nodes
-from jointwear.units import to_angle, to_si
+from jointwear.units import BARE_LIMITS, to_angle, to_si
 
 RadiusOpt = Annotated[
     str,
@@ -81,7 +81,9 @@ def measure(
     the centre towards it, so the wear looks shallower) and a robust fit of the
     unworn arc with the radius fixed to --radius.
     """
-    original_radius = to_si(radius, "length", "--radius")
+    # a bare number is metres: "--radius 7.5" is refused as a unit slip, not a 7.5 m bushing
+    part = BARE_LIMITS["length"][0]
+    original_radius = to_si(radius, "length", "--radius", bare_limit=part)
     if not original_radius > 0:
         raise ConfigError(f"--radius: must be > 0, got {radius!r}")
     if nodes < 16:
@@ -92,11 +94,15 @@ def measure(
     if profile not in PROFILE_METHODS:
         choices = ", ".join(PROFILE_METHODS)
         raise ConfigError(f"--profile: must be one of {choices}, got {profile!r}")
-    depth_floor = to_si(floor, "length", "--floor")
+    depth_floor = to_si(floor, "length", "--floor", bare_limit=part)
     if depth_floor < 0:
         raise ConfigError(f"--floor: must be >= 0, got {floor!r}")
     offset = to_angle(angle_offset, "--angle-offset")
-    length = None if axial_length is None else to_si(axial_length, "length", "--axial-length")
+    length = (
+        None
+        if axial_length is None
+        else to_si(axial_length, "length", "--axial-length", bare_limit=part)
+    )
     rho = None if density is None else to_si(density, "density", "--density")
     for key, value in (("--axial-length", length), ("--density", rho)):
         if value is not None and not value > 0:

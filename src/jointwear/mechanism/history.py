@@ -40,16 +40,27 @@ with ``#`` are allowed.
 
 The end of the cycle
 --------------------
-A last row that *closes* the cycle, i.e. is at the same phase as the first row
-(forces equal to the first row's to 1e-9 of the largest force, rotation differing
-from the first row's by a whole number of turns to 1e-9 rad) is recognised: its
-time is the period and its rotation the cumulative rotation at the end of the
-cycle. ``jointwear dynamics --csv`` writes such a row. Without a closing row the
-period is ``period`` if given, else the last time plus the median time step; the
-rotation at the end of the cycle is then the first row's plus the whole number of
-turns nearest to the last row's (an oscillating joint returns to where it
-started, a joint turning ``n`` times per cycle turns ``n`` times). A ``period``
-given beside a closing row must agree with it (to 1e-9 relative).
+The file is one cycle *as given*: the pin slides by the rotation between
+consecutive rows and by nothing else, so the sliding distance of a cycle is
+``R_b`` times the sum of ``|rotation[k + 1] - rotation[k]|`` over its rows. A
+history that turns half a turn slides half a turn (no return stroke is added to
+make it whole turns), and one that swings 0 -> 90 -> 0 deg slides twice as far as
+one that swings 0 -> 90 deg.
+
+A last row that *closes* the cycle, i.e. is at the same phase of the load as the
+first row (forces equal to the first row's to 1e-9 of the largest force; with
+``frame = "global"`` also the bushing turned by a whole number of turns, to 1e-9
+rad) is recognised: its time is the period, and the step into it slides as its
+rotation says (whole turns on for a pin that turns with the cycle, back to the
+start for one that swings, any other angle for one that does neither). ``jointwear
+dynamics --csv`` writes such a row. Without a closing row the period is ``period``
+if given, else the last time plus the median time step; the last row's load then
+acts until the end of the period, and that closing step does not slide: the file
+says nothing of a rotation after its last row, and the next cycle starts again
+from its first row, whose rotation counts from any origin. A pin that turns on
+from the last row to the next cycle's first (a turning joint sampled without its
+endpoint) needs the closing row to slide that step. A ``period`` given beside a
+closing row must agree with it (to 1e-9 relative).
 
 netCDF
 ------
@@ -126,7 +137,7 @@ INFORMATIVE_COLUMNS = frozenset(
 )
 
 #: How closely a last row must repeat the first to close the cycle: forces relative
-#: to the largest force [-], rotation off a whole number of turns [rad].
+#: to the largest force [-], the bushing's angle (global frame) off whole turns [rad].
 _CLOSURE_TOLERANCE = 1e-9
 #: How closely ``period`` must agree with the time of a closing row, relative [-].
 _PERIOD_TOLERANCE = 1e-9
@@ -144,7 +155,9 @@ def read_load_history(
     """Read one period of a joint's load from a CSV or netCDF file.
 
     The formats, the closing row and the end of the cycle are described in the
-    module documentation (:mod:`jointwear.mechanism.history`).
+    module documentation (:mod:`jointwear.mechanism.history`). The cycle slides as
+    given: its total relative rotation is the sum of ``|Δrotation|`` between
+    consecutive rows (of a CSV file), nothing added.
 
     Parameters
     ----------
@@ -197,9 +210,10 @@ def read_load_history(
                 f"{path}: period {period:g} s ends before the last row "
                 f"(at {time[-1]:g} s after the first)"
             )
-        # the cycle ends where it began, give or take whole turns of the pin
-        turns = round((rotation[-1] - rotation[0]) / _TURN)
-        end_rotation = rotation[0] + _TURN * turns
+        # the cycle as given: the step from the last row to the end of the period does
+        # not turn (no return stroke to whole turns: the next cycle counts from its own
+        # first row)
+        end_rotation = float(rotation[-1])
         keep = slice(None)
     return LoadCycle(
         time=time[keep],
@@ -332,8 +346,9 @@ def _closes(table: Mapping[str, FloatArray]) -> bool:
     forces_match = max(abs(force_x[-1] - force_x[0]), abs(force_y[-1] - force_y[0])) <= (
         _CLOSURE_TOLERANCE * scale
     )
-    # in the global frame the bushing must be back where it was, too
-    angles = [name for name in ("rotation", *_GLOBAL_COLUMNS) if name in table]
+    # in the global frame the bushing must be back where it was, too; the pin need not
+    # (a cycle that turns half a turn ends half a turn on: the load's phase repeats)
+    angles = [name for name in _GLOBAL_COLUMNS if name in table]
     return forces_match and all(_whole_turns(table[name][-1] - table[name][0]) for name in angles)
 
 
