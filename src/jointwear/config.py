@@ -689,9 +689,7 @@ class Config(_Section):
         check_model_choice(contact.model, self.simulation.update_contour)
         if contact.model == "nlcp" and contact.nlcp_variant == "paper":
             node = self.joint.bushing_radius * 2.0 * math.pi / contact.nodes
-            check_paper_spring_area(
-                self.spring_area, node * self.joint.axial_length, contact.nodes
-            )
+            check_paper_spring_area(self.spring_area, node * self.joint.axial_length, contact.nodes)
         return self
 
     @model_validator(mode="after")

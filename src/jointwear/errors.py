@@ -9,8 +9,8 @@ from __future__ import annotations
 __all__ = [
     "ConfigError",
     "ContactError",
-    "ContactModelWarning",
     "ContactLossWarning",
+    "ContactModelWarning",
     "ConvergenceError",
     "DataError",
     "GeometryError",
