@@ -71,9 +71,12 @@ CONTACT_MODELS.add("persson", persson_model)
 CONTACT_MODELS.add("fem", fem_model)
 
 MODEL_DESCRIPTIONS = {
-    "hertz": "Hertz force law F = K delta^n with the line-contact pressure profile (eqs. 1-3)",
-    "winkler": "linear Winkler springs p = E_w/L delta, symmetric about the load (eqs. 4-5)",
-    "asymmetric-winkler": "Winkler springs on the real (worn) contour, N = N_L + N_R (eq. 6)",
+    "hertz": "Hertz force law F = K delta^n with the line-contact pressure profile (eqs. 1-3), "
+    "circular bushings only",
+    "winkler": "linear Winkler springs p = E_w/L delta, symmetric about the load (eqs. 4-5), "
+    "circular bushings only",
+    "asymmetric-winkler": "Winkler springs on the real (worn) contour, N = N_L + N_R (eq. 6); "
+    "the default",
     "nlcp": "nonlinear springs p = K delta^n / A, cylinder on plane (eq. 7)",
     "persson": "reference: exact elastic pin in a hole (Persson), circular bushings only",
     "fem": "reference: finite elements of the bushing wall in a rigid housing (scikit-fem)",
