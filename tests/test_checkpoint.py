@@ -33,6 +33,7 @@ REPO = Path(__file__).resolve().parents[1]
 UPDATE_CONFIG = REPO / "examples" / "paper" / "fig14_nlcp_update.toml"
 SMALL = {
     "contact.nodes": 60,
+    "contact.nlcp_variant": "mesh-independent",  # (NLCP's paper form needs 1 degree nodes)
     "simulation.steps_per_revolution": 60,
     "simulation.revolutions": 120,
     "simulation.update_every": 1,
@@ -225,6 +226,7 @@ def test_sigkill_then_resume_gives_the_uninterrupted_numbers(tmp_path, capsys):
     """A real process killed with SIGKILL at a random point resumes to the same numbers."""
     overrides = {
         "contact.nodes": 90,
+        "contact.nlcp_variant": "mesh-independent",
         "simulation.steps_per_revolution": 90,
         "simulation.revolutions": 3000,
         "simulation.update_every": 1,

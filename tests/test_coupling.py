@@ -23,7 +23,11 @@ LIMIT = 4e-6  # peak wear depth limit [m]
 @pytest.fixture(scope="module")
 def small(paper_config: Config) -> Config:
     return paper_config.replace(
-        {"contact.nodes": 120, "simulation.steps_per_revolution": 90, "contact.model": "winkler"}
+        {
+            "contact.nodes": 120,
+            "simulation.steps_per_revolution": 90,
+            "contact.model": "asymmetric-winkler",
+        }
     )
 
 

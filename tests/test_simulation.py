@@ -18,6 +18,7 @@ def base(paper_config: Config) -> Config:
     return paper_config.replace({"contact.nodes": 180, "simulation.steps_per_revolution": 120})
 
 
+@pytest.mark.filterwarnings("ignore::jointwear.errors.ContactModelWarning")  # Hertz: wide
 @pytest.mark.parametrize("model", MODELS)
 def test_wear_volume_is_archards_global_form(base: Config, model: str) -> None:
     """V = K_d sum_k N_k ds_k, N_k the total normal (radial) force of step k.
@@ -43,24 +44,6 @@ def test_wear_volume_is_archards_global_form(base: Config, model: str) -> None:
     load_form = archard.archard_volume(simulation.load_cycle.load, ds, k_d)
     widest = max(solution.half_angle_left.max(), solution.half_angle_right.max())
     assert load_form < volume < load_form / np.cos(widest)
-
-
-def test_paper_nlcp_on_a_coarse_mesh_breaks_the_global_form(base: Config) -> None:
-    """The documented mesh dependence: springs of 1 degree, nodes of 2 degrees.
-
-    Each node's spring carries ``K delta^n`` (the area of a 1 degree spring), but its
-    pressure wears twice that area, so the worn volume is twice Archard's global form.
-    """
-    paper = Simulation(base.replace({"contact.model": "nlcp"})).run().summary()
-    fixed = (
-        Simulation(
-            base.replace({"contact.model": "nlcp", "contact.nlcp_variant": "mesh-independent"})
-        )
-        .run()
-        .summary()
-    )
-    ratio = paper["wear_volume_m3"] / fixed["wear_volume_m3"]
-    assert ratio == pytest.approx(2.0, rel=0.03)
 
 
 def test_no_update_runs_scale_exactly_linearly(base: Config) -> None:
@@ -114,6 +97,7 @@ def test_symmetric_load_history_gives_a_symmetric_profile(base: Config, update: 
             "simulation.update_contour": update,
             "simulation.update_every": 250,
             "contact.model": "nlcp",
+            "contact.nlcp_variant": "mesh-independent",  # (2 degree nodes)
         }
     )
     depth = Simulation(config, load_cycle=_symmetric_history()).run().wear_depth

@@ -30,16 +30,25 @@ from tests.conftest import strict_json
 
 REPO = Path(__file__).resolve().parents[1]
 PAPER = REPO / "tests" / "data" / "paper_joint.toml"
+#: a coarse mesh: NLCP in its mesh-independent form (the paper's needs 1 degree nodes)
 TINY = """
 [set]
 "contact.nodes" = 60
+"contact.nlcp_variant" = "mesh-independent"
 "simulation.steps_per_revolution" = 60
 """
 
 
 @pytest.fixture(scope="module")
 def base():
-    return load_config(PAPER, {"contact.nodes": 60, "simulation.steps_per_revolution": 60})
+    return load_config(
+        PAPER,
+        {
+            "contact.nodes": 60,
+            "contact.nlcp_variant": "mesh-independent",
+            "simulation.steps_per_revolution": 60,
+        },
+    )
 
 
 def write_sweep(folder: Path, body: str, base: str = "base.toml") -> Path:

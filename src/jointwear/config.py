@@ -523,12 +523,14 @@ class MaterialsConfig(_Section):
 class ContactConfig(_Section):
     """Contact pressure model and the load-balance solver."""
 
-    model: str = "winkler"
+    #: Winkler's springs on the real contour: the load balances on a worn contour too
+    model: str = "asymmetric-winkler"
     exponent: Annotated[float, Field(gt=0, le=10)] = 1.5
     nodes: Annotated[int, Field(ge=16, le=200_000)] = 360
     tolerance: Annotated[float, _si("force"), Field(gt=0)] = 1e-12
     max_iterations: Annotated[int, Field(ge=1, le=10_000)] = 100
-    foundation_modulus: Literal["youngs", "constrained"] = "youngs"
+    #: the thin-layer modulus of a wall bonded in its housing (docs/models.md)
+    foundation_modulus: Literal["youngs", "constrained"] = "constrained"
     spring_area: Annotated[Annotated[float, Field(gt=0)] | None, _si("area")] = None
     balance: Literal["paper", "equilibrium"] = "paper"
     nlcp_variant: Literal["paper", "mesh-independent"] = "paper"
@@ -715,6 +717,19 @@ class Config(_Section):
                 f"life.wall_thickness: the limit ({life.wall_thickness:g} m) must be below "
                 f"joint.bushing_thickness ({joint.bushing_thickness:g} m)"
             )
+        return self
+
+    @model_validator(mode="after")
+    def _contact_model_fits(self) -> Config:
+        # a model that cannot follow a worn contour, or NLCP's paper form off its mesh,
+        # would wear the wrong volume: refused before anything runs
+        from jointwear.contact import check_model_choice, check_paper_spring_area
+
+        contact = self.contact
+        check_model_choice(contact.model, self.simulation.update_contour)
+        if contact.model == "nlcp" and contact.nlcp_variant == "paper":
+            node = self.joint.bushing_radius * 2.0 * math.pi / contact.nodes
+            check_paper_spring_area(self.spring_area, node * self.joint.axial_length, contact.nodes)
         return self
 
     @model_validator(mode="after")

@@ -10,6 +10,7 @@ __all__ = [
     "ConfigError",
     "ContactError",
     "ContactLossWarning",
+    "ContactModelWarning",
     "ConvergenceError",
     "DataError",
     "GeometryError",
@@ -78,6 +79,16 @@ class ContactLossWarning(UserWarning):
     The massless-link dynamics model assumes continuous contact; where the force
     reverses its results are not physical. ``dynamics.strict = true`` turns this
     warning into :class:`MechanismError`.
+    """
+
+
+class ContactModelWarning(UserWarning):
+    """A run left the range in which its contact model holds (said once per run).
+
+    A circular-bushing model worn deeper than a fraction of the clearance, a Hertz
+    contact that is not small, a contact arc cut at 90 degrees, strains beyond linear
+    elasticity, or the constrained modulus of a nearly incompressible wall
+    (:mod:`jointwear.tribology.checks`); the message names the setting to change.
     """
 
 

@@ -13,6 +13,11 @@ read in SI (the paper prints g and mm where kg and m reproduce its results, see
 bushing wall thickness, the spring preload or the PTFE density; the values here
 are placeholders of the right size (the reproduction calibrates them on one
 table row).
+
+A set holds values, not model choices: ``nlcp-paper`` is the default set of every
+config, so a ``contact.model`` or ``contact.foundation_modulus`` named here would be
+every joint's default. The paper's configs (``jointwear.paper`` / ``examples/paper``)
+name the paper's model and ``foundation_modulus = "youngs"`` themselves.
 """
 
 from __future__ import annotations

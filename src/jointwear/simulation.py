@@ -42,7 +42,13 @@ from numpy.typing import NDArray
 
 from jointwear import mechanism
 from jointwear.config import Config
-from jointwear.contact import ContactParameters, ContactSolution, contact_law
+from jointwear.contact import (
+    ContactParameters,
+    ContactSolution,
+    check_model_choice,
+    check_paper_spring_area,
+    contact_law,
+)
 from jointwear.contact import solve as solve_contact
 from jointwear.contact.kernel import WarmRevolutions, revolution_wear
 from jointwear.contact.laws import SpringLaw
@@ -51,6 +57,7 @@ from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
 from jointwear.state import Deferred, SimulationState
+from jointwear.tribology.checks import warn_model_validity
 from jointwear.tribology.metrics import (
     JointGeometry,
     evaluate_metrics,
@@ -314,6 +321,11 @@ class Simulation:
         self.parameters = ContactParameters.from_config(config)
         self.contact_model = config.contact.model if contact_model is None else contact_model
         self.law = contact_law(self.contact_model, self.parameters)
+        # (a model given here, not by the config, is refused as the config would be)
+        check_model_choice(self.law, config.simulation.update_contour)
+        if getattr(self.law, "force_area", None) is not None:
+            node_area = self.initial_contour().spring_area[0]
+            check_paper_spring_area(self.law.force_area, node_area, config.contact.nodes)
         self.pin = Pin(config.joint.pin_radius)
         if joint is not None and joint not in config.joints:
             from jointwear.errors import ConfigError
@@ -594,6 +606,10 @@ class Simulation:
                 else first_solution
             )
             initial_solution = first_solution or self._unworn_solution(state)
+        where = f"joint {self.joint!r}: " if len(self.config.joints) > 1 else ""
+        warn_model_validity(
+            self.config, self.law, state.wear_depth, (initial_solution, final_solution), where
+        )
         runtime = time.perf_counter() - start
         from jointwear.results import build_contents
 

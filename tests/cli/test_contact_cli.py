@@ -82,6 +82,17 @@ def test_contact_every_model(capsys, paper_config_path, model):
     assert np.isfinite(list(v for v in data.values() if isinstance(v, float))).all()
 
 
+def test_contact_solves_a_circular_model_for_a_config_that_updates_its_contour(capsys):
+    """One load on the unworn bushing: the contour update of the config plays no part."""
+    from pathlib import Path
+
+    updating = Path(__file__).resolve().parents[2] / "examples" / "paper" / "fig14_nlcp_update.toml"
+    data = contact_json(capsys, updating, "--model", "winkler")
+    same = contact_json(capsys, updating, "--model", "asymmetric-winkler")
+    assert data["contact_model"] == "winkler"
+    assert data["peak_pressure_pa"] == pytest.approx(same["peak_pressure_pa"], rel=1e-12)
+
+
 def test_contact_units_and_equilibrium(capsys, paper_config_path):
     a = contact_json(capsys, paper_config_path, "--load", "200 N", "--azimuth", "0.5 rad")
     b = contact_json(

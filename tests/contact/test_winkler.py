@@ -151,6 +151,11 @@ def test_constrained_modulus_option(params, pin):
     assert winkler.foundation_modulus(e, 0.0, "constrained") == e  # no Poisson effect
     with pytest.raises(ConfigError, match="foundation_modulus"):
         winkler.foundation_modulus(e, nu, "oedometric")
+    # an incompressible layer has none (1 - 2 nu = 0): refused, not infinite or negative
+    for incompressible in (0.5, 0.6):
+        with pytest.raises(ConfigError, match=r"^contact\.foundation_modulus: .*below 0\.5"):
+            winkler.foundation_modulus(e, incompressible, "constrained")
+    assert winkler.foundation_modulus(e, 0.6, "youngs") == e
 
     stiff = dataclasses.replace(params, foundation_modulus="constrained")
     assert contact_law("asymmetric-winkler", stiff).coefficient == pytest.approx(

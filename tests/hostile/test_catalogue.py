@@ -188,6 +188,61 @@ CASES: list[Bad] = [
         ["contact.model", "did you mean 'nlcp'"],
     ),
     Bad(
+        "circular-model-on-a-worn-contour",
+        "config",
+        [
+            "run",
+            "{paper}",
+            "--set",
+            "contact.model=winkler",
+            "--set",
+            "simulation.update_contour=true",
+        ],
+        ["contact.model", "'winkler'", "cannot follow a worn contour", "'asymmetric-winkler'"],
+    ),
+    Bad(
+        "hertz-on-a-worn-contour-in-a-life-study",
+        "config",
+        [
+            "life",
+            "{paper}",
+            "--sample",
+            "joint.clearance=uniform(low=0.05 mm, high=0.06 mm)",
+            "--cases",
+            "2",
+            "--out",
+            "{out}",
+            "--set",
+            "contact.model=hertz",
+            "--set",
+            "simulation.update_contour=true",
+        ],
+        ["contact.model", "'hertz'", "cannot follow a worn contour", "'nlcp'"],
+    ),
+    Bad(
+        "persson-on-a-worn-contour-in-a-calibration",
+        "config",
+        [
+            "calibrate",
+            "{paper}",
+            "{tmp}/ring.csv",
+            "--fit",
+            "wear_coefficient",
+            "--set",
+            "contact.model=persson",
+            "--set",
+            "simulation.update_contour=true",
+        ],
+        ["contact.model", "'persson'", "circular bushing only", "cannot follow a worn contour"],
+        {"ring.csv": "x [mm],y [mm]\n7.5,0\n"},
+    ),
+    Bad(
+        "nlcp-paper-form-off-its-mesh",
+        "config",
+        ["run", "{paper}", "--set", "contact.model=nlcp", "--set", "contact.nodes=720"],
+        ["contact.nlcp_variant", "contact.nodes = 720", "0.5 x Archard's", "'mesh-independent'"],
+    ),
+    Bad(
         "unknown-choice",
         "config",
         ["run", "{paper}", "--set", "mechanism.spring_mode=pul"],
@@ -459,6 +514,18 @@ CASES: list[Bad] = [
         {
             "s.toml": sweep_toml(
                 '[zip]\n"contact.model" = ["nlcp", "winkler"]\n"contact.exponent" = [1.5]\n'
+            ),
+            "tiny.toml": "@tiny",
+        },
+    ),
+    Bad(
+        "sweep-circular-model-on-a-worn-contour",
+        "sweep",
+        ["sweep", "{tmp}/s.toml", "--out", "{out}"],
+        ["s.toml", "[set]", "contact.model", "'winkler'", "cannot follow a worn contour"],
+        {
+            "s.toml": sweep_toml(
+                '"contact.model" = "winkler"\n"simulation.update_contour" = true\n' + GRID
             ),
             "tiny.toml": "@tiny",
         },

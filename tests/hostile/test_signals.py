@@ -40,6 +40,7 @@ ENDLESS = [
 ]
 RESUMABLE = {
     "contact.nodes": 90,
+    "contact.nlcp_variant": "mesh-independent",  # (NLCP's paper form needs 1 degree nodes)
     "simulation.steps_per_revolution": 90,
     "simulation.revolutions": 3000,
     "simulation.update_every": 1,

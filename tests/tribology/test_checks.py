@@ -1,16 +1,21 @@
-"""Engineering checks of a run against the bushing's datasheet limits (nominal p, v, PV)."""
+"""Engineering checks of a run against the bushing's datasheet limits (nominal p, v, PV),
+and against the range of its contact model (tribology/checks.py)."""
 
 from __future__ import annotations
 
 import math
 import warnings
+from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
 from jointwear import Simulation, load_config
-from jointwear.errors import MaterialLimitWarning
+from jointwear.config import Config
+from jointwear.errors import ContactModelWarning, MaterialLimitWarning
+from jointwear.paper.cases import PAPER_ROWS
+from jointwear.tribology.checks import SYMMETRIC_WEAR_FRACTION, model_validity
 from jointwear.tribology.metrics import compare_with_limits, engineering_checks, operating_values
 
 R_P, B = 7.45e-3, 20e-3
@@ -117,3 +122,126 @@ def test_no_warning_within_the_limits_or_without_limits():
     assert within["peak_pressure"]["ok"] is True
     assert all(entry["ok"] is None for entry in unknown.values())
     assert unknown["pv"]["limit"] is None
+
+
+# ---------------------------------------------------------------- the contact model's range
+
+
+def liner(**overrides) -> Config:
+    """A pin swinging +-25 deg under a load fixed in the bushing (the paper's PTFE joint)."""
+    return load_config(
+        overrides={
+            "mechanism.type": "oscillating",
+            "mechanism.load": "1.5 kN",
+            "mechanism.load_frame": "bushing",
+            "mechanism.amplitude": "25 deg",
+            "mechanism.frequency": "0.25 Hz",
+            "contact.nodes": 180,
+            "simulation.steps_per_revolution": 40,
+            **overrides,
+        }
+    )
+
+
+def validity_warnings(config: Config) -> tuple[dict[str, str], dict]:
+    """The contact-model warnings of a run (message -> count) and its summary."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        summary = Simulation(config).run().summary()
+    said: dict[str, int] = {}
+    for w in caught:
+        if issubclass(w.category, (ContactModelWarning, MaterialLimitWarning)):
+            said[str(w.message)] = said.get(str(w.message), 0) + 1
+    assert all(count == 1 for count in said.values()), said  # once per run
+    return said, summary
+
+
+def test_a_circular_model_warns_once_its_wear_outgrows_a_tenth_of_the_clearance() -> None:
+    clearance = 0.05e-3
+    said, summary = validity_warnings(liner(**{"contact.model": "winkler"}))
+    assert summary["peak_wear_depth_m"] < SYMMETRIC_WEAR_FRACTION * clearance
+    assert not said
+    said, summary = validity_warnings(
+        liner(**{"contact.model": "winkler", "simulation.revolutions": 200})
+    )
+    assert summary["peak_wear_depth_m"] > SYMMETRIC_WEAR_FRACTION * clearance
+    [message] = said
+    assert message.startswith("contact.model: 'winkler' assumes a circular bushing")
+    assert "simulation.update_contour = true" in message
+    assert "'asymmetric-winkler'" in message
+    # the model on the real contour, frozen as well: no model to blame
+    said, _ = validity_warnings(
+        liner(**{"contact.model": "asymmetric-winkler", "simulation.revolutions": 200})
+    )
+    assert not said
+
+
+def test_hertz_warns_where_its_contact_is_not_small() -> None:
+    light = liner(**{"contact.model": "hertz", "mechanism.load": "20 N"})
+    said, _ = validity_warnings(light)
+    assert not said  # a/R_b = 0.21 at 20 N: Hertz's peak within 1 % of Persson's
+    said, _ = validity_warnings(liner(**{"contact.model": "hertz", "mechanism.load": "200 N"}))
+    [message] = said
+    assert message.startswith("contact.model: 'hertz' assumes a contact small")
+    assert "a/R_b = 0.6" in message  # 37.7 deg at 200 N
+
+
+def unworn_validity(config: Config) -> dict[str, str]:
+    """:func:`model_validity` of the unworn contact of ``config``'s load cycle."""
+    simulation = Simulation(config)
+    solution = simulation.contact(simulation.initial_contour())
+    return model_validity(config, simulation.law, np.zeros(config.contact.nodes), [solution])
+
+
+def test_a_contact_cut_at_the_quarter_circle_and_large_strains_warn() -> None:
+    soft = {"materials.bushing.youngs_modulus": "50 MPa", "mechanism.load": "2 kN"}
+    found = unworn_validity(liner(**{"contact.model": "hertz", **soft}))
+    assert set(found) == {"hertz_half_width", "arc", "strain"}
+    assert found["arc"].startswith("contact.model: 'hertz' spreads the contact 90 deg")
+    # Winkler's springs at the same load: 82 deg, an approach of 0.18 of the wall
+    found = unworn_validity(liner(**{"contact.foundation_modulus": "youngs", **soft}))
+    assert set(found) == {"strain"}
+    assert found["strain"].startswith("joint.bushing_thickness: the elastic approach")
+    assert not unworn_validity(liner(**{"contact.foundation_modulus": "youngs"}))
+
+
+@pytest.mark.parametrize(
+    ("bushing", "thickness", "warned"),
+    [
+        ("uhmwpe", "2.5 mm", True),  # nu = 0.46, contact half-width ~ 1 wall
+        ("uhmwpe", "0.1 mm", False),  # a thin liner: the constrained modulus is exact
+        ("ptfe", "2.5 mm", False),  # nu = 0.38: within 2.5 % of the FE wall
+    ],
+)
+def test_the_constrained_modulus_of_a_nearly_incompressible_thick_wall_warns(
+    bushing: str, thickness: str, warned: bool
+) -> None:
+    config = liner(
+        **{
+            "materials.bushing": bushing,
+            "joint.bushing_thickness": thickness,
+            "mechanism.load": "3 kN",
+        }
+    )
+    said, _ = validity_warnings(config)
+    assert [m.split(":")[0] for m in said] == (["contact.foundation_modulus"] if warned else [])
+    if warned:  # Young's modulus is the other error (too soft), not warned about
+        said, _ = validity_warnings(config.replace({"contact.foundation_modulus": "youngs"}))
+        assert not said
+
+
+def test_a_peak_pressure_above_the_bushing_limit_warns_through_the_material_checks() -> None:
+    said, _ = validity_warnings(liner(**{"materials.bushing.max_static_pressure": "1 MPa"}))
+    [message] = said
+    assert message.startswith("materials.bushing.max_static_pressure: peak pressure")
+    said, _ = validity_warnings(liner(**{"materials.bushing.max_static_pressure": "50 MPa"}))
+    assert not said
+
+
+@pytest.mark.parametrize("name", sorted(PAPER_ROWS))
+def test_the_papers_cases_stay_inside_their_models(name: str) -> None:
+    config = load_config(
+        Path(__file__).resolve().parents[2] / "examples" / "paper" / f"{name}.toml"
+    )
+    said, _ = validity_warnings(config)
+    assert not said

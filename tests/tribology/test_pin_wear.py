@@ -72,7 +72,7 @@ def test_a_swinging_pin_spreads_its_wear_over_the_swing() -> None:
                 "frequency": "0.25 Hz",
                 "load_angle": "-90 deg",
             },
-            "contact": {"model": "winkler", "nodes": 180},
+            "contact": {"model": "asymmetric-winkler", "nodes": 180},
             "simulation": {
                 "steps_per_revolution": 90,
                 "revolutions": 2000,

@@ -11,6 +11,10 @@ Every model is selected by name (``CONTACT_MODELS``) or passed as a callable
 ``persson``             reference: exact elastic pin in a hole (circular bushings)
 ``fem``                 reference: finite elements of the wall in a rigid housing
 ======================  =====================================================
+
+Only some models can follow a worn contour (``simulation.update_contour = true``):
+:data:`CIRCULAR_ONLY` names the others and :func:`check_model_choice` refuses them, and
+refuses NLCP's paper form off the mesh its spring area belongs to.
 """
 
 from __future__ import annotations
@@ -31,11 +35,13 @@ from jointwear.contact.laws import (
     effective_modulus,
 )
 from jointwear.contact.solution import ContactSolution
+from jointwear.errors import ConfigError
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.references import fem_model, persson_model
 from jointwear.registry import Registry
 
 __all__ = [
+    "CIRCULAR_ONLY",
     "CONTACT_MODELS",
     "CallableSpringLaw",
     "ContactParameters",
@@ -43,6 +49,8 @@ __all__ = [
     "PowerLaw",
     "RevolutionWear",
     "SpringLaw",
+    "check_model_choice",
+    "check_paper_spring_area",
     "contact_law",
     "effective_modulus",
     "revolution_wear",
@@ -63,13 +71,96 @@ CONTACT_MODELS.add("persson", persson_model)
 CONTACT_MODELS.add("fem", fem_model)
 
 MODEL_DESCRIPTIONS = {
-    "hertz": "Hertz force law F = K delta^n with the line-contact pressure profile (eqs. 1-3)",
-    "winkler": "linear Winkler springs p = E_w/L delta, symmetric about the load (eqs. 4-5)",
-    "asymmetric-winkler": "Winkler springs on the real (worn) contour, N = N_L + N_R (eq. 6)",
+    "hertz": "Hertz force law F = K delta^n with the line-contact pressure profile (eqs. 1-3), "
+    "circular bushings only",
+    "winkler": "linear Winkler springs p = E_w/L delta, symmetric about the load (eqs. 4-5), "
+    "circular bushings only",
+    "asymmetric-winkler": "Winkler springs on the real (worn) contour, N = N_L + N_R (eq. 6); "
+    "the default",
     "nlcp": "nonlinear springs p = K delta^n / A, cylinder on plane (eq. 7)",
     "persson": "reference: exact elastic pin in a hole (Persson), circular bushings only",
     "fem": "reference: finite elements of the bushing wall in a rigid housing (scikit-fem)",
 }
+
+
+#: registered models that assume a circular bushing, and why: they cannot follow a
+#: worn contour (Winkler's springs are symmetric about the load, on the circle through
+#: the compression centre; Hertz's and Persson's profiles are those of circles)
+CIRCULAR_ONLY: dict[str, str] = {
+    "winkler": "assumes a circular bushing",
+    "hertz": "assumes a circular bushing",
+    "persson": "is exact for a circular bushing only",
+}
+
+#: relative difference between NLCP's spring area and a node's area that the paper form
+#: (node force ``K delta^n``) accepts [-]: a 1 degree mesh in floating point, nothing more
+SPRING_AREA_TOLERANCE = 1e-9
+
+
+def check_model_choice(model: str | Callable[..., Any] | SpringLaw, update_contour: bool) -> None:
+    """Refuse a contact model that cannot follow a worn contour when the contour is updated.
+
+    ``winkler`` evaluates its springs on the circle through the compression centre and
+    ``hertz`` and ``persson`` solve circles: on a bushing worn into conformity (a load
+    fixed in the bushing) their groove narrows as it deepens instead of widening, and
+    the worn volume falls short of Archard's. A spring law on the real contour
+    (``asymmetric-winkler``, ``nlcp``, a callable) and the ``fem`` reference follow it.
+
+    Parameters
+    ----------
+    model : str, SpringLaw or callable
+        A registered name or a resolved law (a law with ``symmetric = True`` is refused
+        like ``winkler``).
+    update_contour : bool
+        ``simulation.update_contour``.
+
+    Raises
+    ------
+    ConfigError
+        One line naming ``contact.model`` and the models that can follow the contour.
+    """
+    if not update_contour:
+        return
+    name = model if isinstance(model, str) else getattr(model, "name", None)
+    symmetric = isinstance(model, SpringLaw) and model.symmetric
+    if name in CIRCULAR_ONLY or symmetric:
+        reason = CIRCULAR_ONLY.get(str(name), CIRCULAR_ONLY["winkler"])
+        raise ConfigError(
+            f"contact.model: {name!r} {reason} and cannot follow a worn contour; with "
+            f"simulation.update_contour = true use 'asymmetric-winkler' (the default) or 'nlcp'"
+        )
+
+
+def check_paper_spring_area(spring_area: float, node_area: float, nodes: int) -> None:
+    """Refuse NLCP's paper form where its spring area is not the area of a node.
+
+    The paper form gives node ``j`` the force ``K delta_j^n`` whatever surface it
+    stands for, while Archard's law wears that surface with the pressure
+    ``p_j = K delta_j^n / A``: the worn volume is ``K_d sum_k N_k ds_k`` only if the
+    spring area ``A`` is the node's ``R_b (2 pi / N) b``; otherwise it is
+    ``(node area / A)`` times it (half on a 0.5 degree mesh with the 1 degree default).
+
+    Parameters
+    ----------
+    spring_area : float
+        NLCP spring area ``A`` [m^2].
+    node_area : float
+        Area of a node of the unworn mesh ``R_b (2 pi / N) b`` [m^2].
+    nodes : int
+        ``contact.nodes`` [-].
+
+    Raises
+    ------
+    ConfigError
+        One line naming ``contact.nlcp_variant`` and the mesh-independent form.
+    """
+    if abs(spring_area / node_area - 1.0) > SPRING_AREA_TOLERANCE:
+        raise ConfigError(
+            f"contact.nlcp_variant: 'paper' gives each node the force of a spring of "
+            f"{spring_area:.4g} m^2, but a node of this mesh (contact.nodes = {nodes}) is "
+            f"{node_area:.4g} m^2, so the wear would be {node_area / spring_area:.3g} x "
+            f"Archard's; use contact.nlcp_variant = 'mesh-independent'"
+        )
 
 
 def contact_law(model: str | Callable[..., Any] | SpringLaw, parameters: ContactParameters):

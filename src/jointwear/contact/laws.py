@@ -61,7 +61,8 @@ class ContactParameters:
     exponent : float
         Force exponent ``n`` of Hertz/NLCP [-].
     foundation_modulus : {"youngs", "constrained"}
-        Winkler foundation modulus definition.
+        Winkler foundation modulus definition (default ``"constrained"``, the thin-layer
+        modulus, as ``contact.foundation_modulus``).
     spring_area : float
         NLCP spring area ``A`` of eq. (7) [m^2].
     nlcp_variant : {"paper", "mesh-independent"}
@@ -80,7 +81,7 @@ class ContactParameters:
     bushing_youngs_modulus: float
     bushing_poisson_ratio: float
     exponent: float = 1.5
-    foundation_modulus: str = "youngs"
+    foundation_modulus: str = "constrained"
     spring_area: float = math.nan
     nlcp_variant: str = "paper"
     stiffness: float | None = None

@@ -54,6 +54,13 @@ def foundation_modulus(youngs_modulus: float, poisson_ratio: float, kind: str = 
         return youngs_modulus
     if kind == "constrained":
         nu = poisson_ratio
+        if not nu < 0.5:
+            # 1 - 2 nu = 0: an incompressible layer has no constrained modulus (it
+            # squeezes out sideways; the springs are no longer independent)
+            raise ConfigError(
+                f"contact.foundation_modulus: 'constrained' needs a Poisson ratio below 0.5 "
+                f"(materials.bushing.poisson_ratio = {nu:g}); use 'youngs'"
+            )
         return youngs_modulus * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
     raise ConfigError(
         f"contact.foundation_modulus: unknown kind {kind!r}; choose 'youngs' or 'constrained'"
