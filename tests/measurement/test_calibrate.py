@@ -18,8 +18,7 @@ import pytest
 
 from jointwear import Simulation
 from jointwear.calibration import Parameter
-from jointwear.config import Config
-from jointwear.config import load_config
+from jointwear.config import Config, load_config
 from jointwear.errors import ConfigError, DataError, FitMisfitWarning, WearThroughError
 from jointwear.measurement.calibrate import (
     DEFAULT_BOUNDS,
@@ -145,8 +144,11 @@ def test_wrong_model_leaves_a_residual_and_warns(paper_config: Config) -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error", FitMisfitWarning)
         right = calibrate_profiles(base, [case], [kd_parameter(base)])
-    with pytest.warns(FitMisfitWarning, match=r"fast.csv: the fitted model leaves .* times the "
-                      r"measurement noise \(0\.[67]\d* µm, unworn arc\)"):
+    with pytest.warns(
+        FitMisfitWarning,
+        match=r"fast.csv: the fitted model leaves .* times the "
+        r"measurement noise \(0\.[67]\d* µm, unworn arc\)",
+    ):
         bad = calibrate_profiles(base, [wrong], [kd_parameter(base)])
     assert bad.rms_residual > 3 * right.rms_residual
     assert right.fits[0].misfit_ratio < 1.1
@@ -239,8 +241,11 @@ def test_a_failing_simulation_is_a_one_line_error(paper_config: Config) -> None:
     base = short_config(paper_config, update=True)
     case = measure(base, 6, 0.0, "worn.csv")
     through = Parameter(KD, 1e-9, 1e-8)  # wears through the 2.5 mm wall in 3000 revolutions
-    with pytest.raises(WearThroughError, match=r"worn.csv: the simulation fails at .*1e-09.*"
-                       r"life.wall_thickness.*every value of the global search"):
+    with pytest.raises(
+        WearThroughError,
+        match=r"worn.csv: the simulation fails at .*1e-09.*"
+        r"life.wall_thickness.*every value of the global search",
+    ):
         calibrate_profiles(base, [case], [through])
 
 

@@ -71,7 +71,9 @@ def test_centre_is_unbiased_where_the_circle_fit_leans_towards_the_scar() -> Non
         point_lean.append(np.dot(np.subtract((fit.center_x, fit.center_y), CENTER), towards_scar))
         dof = x.size - fit.jacobian.shape[1]
         covariance = np.linalg.inv(fit.jacobian.T @ fit.jacobian) * fit.cost / dof
-        error = np.array([fit.center_x - CENTER[0], fit.center_y - CENTER[1], fit.offset - ROTATION])
+        error = np.array(
+            [fit.center_x - CENTER[0], fit.center_y - CENTER[1], fit.offset - ROTATION]
+        )
         z_scores.append(error / np.sqrt(np.diag(covariance)))
         assert fit.rms_residual == pytest.approx(NOISE, rel=0.06)
     # the circle fit keeps the shallow flanks: its centre leans towards the scar by a

@@ -225,31 +225,24 @@ def calibrate(
         f"{summary['simulations']} simulations"
     )
     cases_table = Table(title="cases at the fitted values")
-    for column in (
-        "case",
-        "settings",
-        "RMS error",
-        "points / noise",
-        "peak sim.",
-        "peak meas.",
-        "offset",
-    ):
-        left = column in ("case", "settings")
+    for column in ("case", "RMS error", "points / noise", "peak sim. / meas.", "offset"):
         cases_table.add_column(
-            column, justify="left" if left else "right", overflow="fold", no_wrap=not left
+            column, justify="left" if column == "case" else "right", overflow="fold"
         )
     for item in summary["cases"]:
-        settings = "\n".join(f"{k}={v}" for k, v in item["overrides"].items()) or "-"
         cases_table.add_row(
             item["name"],
-            settings,
             f"{item['rms_error_m'] * 1e6:.3g} µm",
             f"{item['rms_point_residual_m'] * 1e6:.3g} / {item['noise_m'] * 1e6:.3g} µm",
-            f"{item['peak_wear_depth_simulated_m'] * 1e6:.4g} µm",
+            f"{item['peak_wear_depth_simulated_m'] * 1e6:.4g} / "
             f"{item['peak_wear_depth_measured_m'] * 1e6:.4g} µm",
             f"{item['alignment_offset_deg']:.4g}°",
         )
     console.print(cases_table)
+    for item in summary["cases"]:
+        if item["overrides"]:
+            settings = ", ".join(f"{k}={v}" for k, v in item["overrides"].items())
+            console.print(f"{item['name']}: {settings}", markup=False)
     for key, item in summary["parameters"].items():
         if item["at_bound"]:
             console.print(f"note: {key} ended at a bound; widen it (--fit {key}=LOWER..UPPER)")
