@@ -174,8 +174,8 @@ def test_a_model_that_cannot_explain_the_measurement_warns(
     captured = capsys.readouterr()
     data = json.loads(captured.out)
     (line,) = captured.err.splitlines()
-    assert line.startswith("warning: fast.csv: the fitted model leaves")
-    assert "times the measurement noise" in line
+    assert line.startswith("warning: fast.csv: the fitted model misses the measured profile by")
+    assert "times what the measurement noise" in line
     assert data["warnings"] == [line.removeprefix("warning: ")]
     assert data["cases"][0]["misfit_ratio"] > 1.5
     # a noise given far above the misfit: nothing to warn about
