@@ -225,7 +225,7 @@ def calibrate(
         f"{summary['simulations']} simulations"
     )
     cases_table = Table(title="cases at the fitted values")
-    for column in ("case", "RMS error", "points / noise", "peak sim. / meas.", "offset"):
+    for column in ("case", "RMS error", "misfit / noise", "peak sim. / meas.", "offset"):
         cases_table.add_column(
             column, justify="left" if column == "case" else "right", overflow="fold"
         )
@@ -233,7 +233,7 @@ def calibrate(
         cases_table.add_row(
             item["name"],
             f"{item['rms_error_m'] * 1e6:.3g} µm",
-            f"{item['rms_point_residual_m'] * 1e6:.3g} / {item['noise_m'] * 1e6:.3g} µm",
+            f"{item['misfit_m'] * 1e6:.3g} / {item['expected_misfit_m'] * 1e6:.3g} µm",
             f"{item['peak_wear_depth_simulated_m'] * 1e6:.4g} / "
             f"{item['peak_wear_depth_measured_m'] * 1e6:.4g} µm",
             f"{item['alignment_offset_deg']:.4g}°",

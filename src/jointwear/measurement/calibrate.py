@@ -42,10 +42,12 @@ Uncertainty: the covariance ``s^2 (J^T J)^-1`` of the profiled Jacobian, with
 points, ``P`` parameters, ``Q`` centre and rotation coordinates); the points'
 noise is independent, which node residuals of a binned profile were not. The
 reported 95 % interval is Student's on the fitting scale (log for ``K_d``).
-A case whose points the fitted model leaves with an RMS residual more than
-1.5 times its noise gets a :class:`~jointwear.errors.FitMisfitWarning`: the
-model does not explain that measurement (wrong model, load, speed or
-revolutions), and the interval, which assumes it does, is not to be trusted.
+Misfit: a case's point residuals averaged per node keep a misfit of the
+model's (smooth) profile but only ``sigma sqrt(mean(1/n_j))`` of the noise
+(``n_j`` points at node ``j``); when their RMS exceeds that 1.5 times, the case
+gets a :class:`~jointwear.errors.FitMisfitWarning`: the model does not explain
+that measurement (wrong model, load, speed or revolutions), and the interval,
+which assumes it does, is not to be trusted.
 
 The paper's protocol -- scalar metrics (peak, width, mass) of one of its table
 rows -- is :func:`jointwear.paper.calibration.calibrate_paper_row`.
