@@ -965,6 +965,8 @@ def calibrate_profiles(
     def jacobian(u: FloatArray) -> FloatArray:
         """Jacobian of the profiled residual: d(profile)/du, centre and rotation projected out."""
         item = trial(u)
+        if item.failed:  # no slope where the simulation fails: the cost there is a wall
+            return np.zeros((sum(case.x.size for case in cases), len(parameters)))
         blocks = []
         for index, (fitted, sigma) in enumerate(zip(item.fits, weights(item), strict=True)):
             columns = []
