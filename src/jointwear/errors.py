@@ -13,6 +13,7 @@ __all__ = [
     "ContactModelWarning",
     "ConvergenceError",
     "DataError",
+    "FitMisfitWarning",
     "GeometryError",
     "JointwearError",
     "MaterialLimitWarning",
@@ -107,4 +108,13 @@ class WearFeedbackWarning(UserWarning):
     Wear of the order of the clearance under the massless-link load, a load that
     falls to zero, or separation found when the dynamics are solved on the worn
     joint; the message names the setting that would model it.
+    """
+
+
+class FitMisfitWarning(UserWarning):
+    """A fitted model leaves residuals well above the measurement noise.
+
+    The model cannot explain the measurement (wrong contact model, load, speed or
+    revolutions), and an uncertainty computed on the assumption that it does is
+    not to be trusted.
     """

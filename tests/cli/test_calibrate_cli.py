@@ -117,6 +117,14 @@ def test_json_shape_and_recovered_kd(capsys: pytest.CaptureFixture[str], files: 
     assert kd["initial"] == pytest.approx(10 * TRUE_KD)
     assert kd["value"] == pytest.approx(TRUE_KD, rel=0.02)
     assert 0 < kd["uncertainty"] < 0.02 * TRUE_KD
+    low, high = kd["interval"]
+    assert low < TRUE_KD < high
+    assert kd["confidence"] == 0.95
+    assert data["method"]["global"] == "grid"
+    assert data["method"]["polish"] == "least_squares"
+    assert data["warnings"] == []
+    assert data["cases"][0]["noise_m"] == pytest.approx(0.5e-6, rel=0.2)
+    assert data["cases"][0]["misfit_ratio"] < 1.2
     assert data["rms_residual"] < 0.05
     assert data["evaluations"] > 1
     assert data["cases"][0]["name"] == "slow.csv"
@@ -147,6 +155,47 @@ def test_two_cases_with_their_own_speed_and_table(
     assert "240 rpm" in out
     value = float(out.split("wear_coefficient")[1].split("│")[1])
     assert value == pytest.approx(TRUE_KD, rel=0.02)
+
+
+def test_a_model_that_cannot_explain_the_measurement_warns(
+    capsys: pytest.CaptureFixture[str], files: dict
+) -> None:
+    """A bushing worn at 240 rpm fitted with the 120 rpm config: a warning line, exit 0."""
+    main(
+        [
+            "calibrate",
+            str(files["config"]),
+            str(files["fast"]),
+            "--fit",
+            "wear_coefficient",
+            "--json",
+        ]
+    )
+    captured = capsys.readouterr()
+    data = json.loads(captured.out)
+    (line,) = captured.err.splitlines()
+    assert line.startswith("warning: fast.csv: the fitted model misses the measured profile by")
+    assert "times what the measurement noise" in line
+    assert data["warnings"] == [line.removeprefix("warning: ")]
+    assert data["cases"][0]["misfit_ratio"] > 1.5
+    # a noise given far above the misfit: nothing to warn about
+    main(
+        [
+            "calibrate",
+            str(files["config"]),
+            str(files["fast"]),
+            "--fit",
+            "wear_coefficient",
+            "--noise",
+            "10 um",
+            "--json",
+        ]
+    )
+    captured = capsys.readouterr()
+    assert captured.err == ""
+    data = json.loads(captured.out)
+    assert data["cases"][0]["noise_m"] == pytest.approx(10e-6)
+    assert data["cases"][0]["noise_source"] == "given"
 
 
 def test_paper_row(capsys: pytest.CaptureFixture[str]) -> None:
@@ -210,6 +259,11 @@ def test_paper_row(capsys: pytest.CaptureFixture[str]) -> None:
         ),
         (["{config}", "{slow}", "--fit", "joint.axial_length=2 kg..3 kg"], "--fit"),
         (["{slow}", "{slow}", "--fit", "wear_coefficient"], "looks like a measurement"),
+        (
+            ["{config}", "{slow}", "--fit", "wear_coefficient", "--noise", "-1 um"],
+            "--noise: must be > 0",
+        ),
+        (["{config}", "{slow}", "--fit", "wear_coefficient", "--noise", "2 kg"], "--noise"),
         (["--paper-row", "table3_winkler"], "did you mean"),
         (["{config}", "{slow}", "--paper-row", "table3_winkler_120rpm"], "drop them"),
         (["missing.toml", "{slow}", "--fit", "wear_coefficient"], "missing.toml: file not found"),

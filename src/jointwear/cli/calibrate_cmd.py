@@ -57,7 +57,18 @@ CaseOpt = Annotated[
 CircleFitOpt = Annotated[
     str,
     typer.Option(
-        "--circle-fit", help="Bushing centre of the measurements: robust | least-squares."
+        "--circle-fit",
+        help="Bushing centre of the measurements: robust (started on the unworn arc, then "
+        "fitted with each simulated profile) | least-squares (the paper's plain fit, fixed).",
+    ),
+]
+NoiseOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--noise",
+        help='Measurement noise (radial standard deviation) of the points, e.g. "0.7 um"; '
+        "default: estimated per file on the unworn arc.",
+        show_default=False,
     ),
 ]
 AlignOpt = Annotated[
@@ -106,6 +117,7 @@ def calibrate(
     set_: SetOpt = None,
     units: UnitsOpt = None,
     circle_fit: CircleFitOpt = "robust",
+    noise: NoiseOpt = None,
     align: AlignOpt = "best",
     profile: ProfileOpt = "auto",
     paper_row: PaperRowOpt = None,
@@ -132,6 +144,7 @@ def calibrate(
 
     from jointwear.cli.compare_cmd import parse_align
     from jointwear.measurement.calibrate import (
+        PARAMETER_ALIASES,
         MeasuredCase,
         calibrate_profiles,
         parse_case,
@@ -141,6 +154,7 @@ def calibrate(
     from jointwear.measurement.io import length_unit_factor
     from jointwear.registry import suggest
     from jointwear.resources import check_run
+    from jointwear.units import to_si
 
     if config is None:
         raise ConfigError("CONFIG: missing; give the config of the measured runs (or --paper-row)")
@@ -164,6 +178,11 @@ def calibrate(
             f"--profile: unknown method {profile!r}{suggest(profile, PROFILE_CHOICES)}"
         )
     alignment = parse_align(align)
+    noise_m = None
+    if noise is not None:
+        noise_m = to_si(noise, "length", "--noise")
+        if not noise_m > 0:
+            raise ConfigError(f"--noise: must be > 0, got {noise!r}")
     if units is not None:
         length_unit_factor(units, "--units")
     specs: list[tuple[Path, dict[str, Any]]] = [(path, {}) for path in measured or []]
@@ -179,34 +198,51 @@ def calibrate(
             cases[i] = MeasuredCase(
                 f"{item.name}#{seen[item.name]}", item.x, item.y, item.overrides, item.align
             )
-    outcome = calibrate_profiles(base, cases, parameters, fit=fit_name, profile=profile)
+    outcome = calibrate_profiles(
+        base, cases, parameters, fit=fit_name, profile=profile, noise=noise_m
+    )
     summary = outcome.summary()
     if json_:
         emit_json(summary)
         return
     title = f"calibrate: {config.name}, {len(cases)} case(s)"
     console.print(_parameter_table(summary["parameters"], title))
+    short = {key: name for name, key in PARAMETER_ALIASES.items()}
+    for key, item in summary["parameters"].items():
+        low, high = item["interval"]
+        if low is not None and high is not None:
+            scale, unit = (1e3, "mm") if item["unit"] == "m" else (1.0, item["unit"])
+            console.print(
+                f"{100 * item['confidence']:.3g} % interval of {short.get(key, key)}: "
+                f"{low * scale:.4g} … {high * scale:.4g} {unit}".rstrip(),
+                markup=False,
+            )
+    method = summary["method"]
     console.print(
-        f"RMS residual {100 * summary['rms_residual']:.3g} % of the measured peak, "
-        f"{summary['evaluations']} evaluations, {summary['simulations']} simulations"
+        f"RMS residual {100 * summary['rms_residual']:.3g} % of the measured peak; "
+        f"{method['global_trials']} trials in the global {method['global']} search, "
+        f"{method['starts']} least-squares polish(es), {summary['evaluations']} evaluations, "
+        f"{summary['simulations']} simulations"
     )
     cases_table = Table(title="cases at the fitted values")
-    for column in ("case", "settings", "RMS error", "peak sim.", "peak meas.", "offset"):
-        left = column in ("case", "settings")
+    for column in ("case", "RMS error", "misfit / noise", "peak sim. / meas.", "offset"):
         cases_table.add_column(
-            column, justify="left" if left else "right", overflow="fold", no_wrap=not left
+            column, justify="left" if column == "case" else "right", overflow="fold"
         )
     for item in summary["cases"]:
-        settings = "\n".join(f"{k}={v}" for k, v in item["overrides"].items()) or "-"
         cases_table.add_row(
             item["name"],
-            settings,
             f"{item['rms_error_m'] * 1e6:.3g} µm",
-            f"{item['peak_wear_depth_simulated_m'] * 1e6:.4g} µm",
+            f"{item['misfit_m'] * 1e6:.3g} / {item['expected_misfit_m'] * 1e6:.3g} µm",
+            f"{item['peak_wear_depth_simulated_m'] * 1e6:.4g} / "
             f"{item['peak_wear_depth_measured_m'] * 1e6:.4g} µm",
             f"{item['alignment_offset_deg']:.4g}°",
         )
     console.print(cases_table)
+    for item in summary["cases"]:
+        if item["overrides"]:
+            settings = ", ".join(f"{k}={v}" for k, v in item["overrides"].items())
+            console.print(f"{item['name']}: {settings}", markup=False)
     for key, item in summary["parameters"].items():
         if item["at_bound"]:
             console.print(f"note: {key} ended at a bound; widen it (--fit {key}=LOWER..UPPER)")

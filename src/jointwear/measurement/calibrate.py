@@ -8,48 +8,62 @@ Method
 ------
 One or several *cases*: a measured bushing (points of its inner surface) and
 the config overrides of its run (speed, revolutions, clearance ...). For given
-parameter values every case is simulated, the measured profile (robust circle
-fit by default, see :mod:`jointwear.measurement.fit`) is put on the
-simulation's node grid, rotated onto the simulated profile, and the residual
-per node is
+parameter values ``p`` every case is simulated, and every measured point gets
+the residual of :mod:`jointwear.measurement.pointfit`,
 
 .. math::
 
-    r_{ij} = \\frac{h^{sim}_i(\\theta_j) - h^{meas}_i(\\theta_j)}{\\max_j h^{meas}_i}
+    r_{ci} = \\frac{|\\mathbf{p}_{ci} - \\mathbf{c}_c| - R_{0c}
+        - h^{sim}_c(\\varphi_{ci} - \\alpha_c;\\, p)}{\\sigma_c},
 
-(each case normalised by its own measured peak, so that shallow and deep
-bushings weigh alike). All residuals are stacked and minimised by
-:func:`jointwear.calibration.calibrate` (``scipy.optimize.least_squares``,
-bounded, logarithmic scale for bounds spanning more than a decade). The 1σ
-uncertainty comes from the Jacobian at the optimum,
-``sigma^2 (J^T J)^-1`` with ``sigma^2`` the residual variance; it assumes
-independent node residuals, which neighbouring nodes sharing the same points
-are not quite, so read it as a lower bound.
+with the bushing centre ``c_c`` and the rotation ``alpha_c`` of each case
+fitted to its simulated profile (profiled out: for every ``p`` they take their
+best values, so a circle fit's bias towards the scar does not enter), and
+``sigma_c`` the case's measurement noise (the RMS residual of the robust
+circle fit on the unworn arc, or given). The sum of ``r^2`` over all points is
+minimised in two stages:
 
-Conditioning: without contour update the simulated profile is exactly
-proportional to ``K_d`` (one revolution is computed and scaled), so fitting
-``K_d`` alone is a well-conditioned, essentially linear problem with a single
-minimum. With contour update wear is nonlinear in ``K_d`` (the widening contact
-spreads the pressure), still smooth and monotone in practice; use a fixed
-``simulation.update_every`` when calibrating -- the adaptive interval changes
-discretely with the parameters and makes the finite-difference Jacobian noisy.
-Geometry parameters (axial length, wall thickness, preload) change the shape
-of the profile only weakly and correlate with ``K_d``: fit them together only
-with several cases that differ (e.g. in speed), and check the uncertainties.
+1. **Global search**: one fitted parameter is scanned on a grid of its bounds
+   (log-spaced where they span more than a decade, four values per decade);
+   several are sampled with a scrambled Sobol sequence (16 points per
+   parameter, rounded up to a power of two). A scan finds the basin of the
+   global minimum whatever the starting value; the starting value is one more
+   candidate.
+2. **Polish**: :func:`scipy.optimize.least_squares` (trust region reflective,
+   bounded) from the best candidates (at most three local minima of the scan).
+   Its Jacobian is ``dr/dp`` by central differences of the *simulated profile*
+   (1 % of the value on a log scale, 0.1 % of the range on a linear one: far
+   above the simulation's own tolerances), with the centres and rotations held
+   at their optimum and their directions projected out (variable projection,
+   Golub & Pereyra 1973), which is the Jacobian of the profiled residual.
 
-Alignment: the measured profile's rotation is found by best fit at the
-starting values and kept fixed during a least-squares pass; after the pass it
-is found again at the fitted values, and the pass is repeated (at most three
-times) while it moves by more than a tenth of a node.
+Uncertainty: the covariance ``s^2 (J^T J)^-1`` of the profiled Jacobian, with
+``s^2`` the residual variance on ``M - P - Q`` degrees of freedom (``M``
+points, ``P`` parameters, ``Q`` centre and rotation coordinates); the points'
+noise is independent, which node residuals of a binned profile were not. The
+reported 95 % interval is Student's on the fitting scale (log for ``K_d``).
+Misfit: a case's point residuals averaged per node keep a misfit of the
+model's (smooth) profile but only ``sigma sqrt(mean(1/n_j))`` of the noise
+(``n_j`` points at node ``j``); when their RMS exceeds that 1.5 times, the case
+gets a :class:`~jointwear.errors.FitMisfitWarning`: the model does not explain
+that measurement (wrong model, load, speed or revolutions), and the interval,
+which assumes it does, is not to be trusted.
 
 The paper's protocol -- scalar metrics (peak, width, mass) of one of its table
 rows -- is :func:`jointwear.paper.calibration.calibrate_paper_row`.
+
+References
+----------
+G. H. Golub, V. Pereyra, "The differentiation of pseudo-inverses and nonlinear
+least squares problems whose variables separate", SIAM J. Numer. Anal. 10
+(1973) 413-432.
 """
 
 from __future__ import annotations
 
 import math
 import typing
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -58,9 +72,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from jointwear.calibration import CalibrationResult, Parameter, calibrate, config_value
+from jointwear.calibration import CalibrationResult, Parameter, config_value
 from jointwear.config import Config, key_field, parse_override
-from jointwear.errors import ConfigError, DataError, JointwearError
+from jointwear.errors import ConfigError, DataError, FitMisfitWarning, JointwearError
 from jointwear.measurement.compare import (
     ALIGN_BEST,
     CIRCLE_FITS,
@@ -70,13 +84,17 @@ from jointwear.measurement.compare import (
     resolve_profile_method,
 )
 from jointwear.measurement.fit import CircleFit
-from jointwear.measurement.profile import measured_wear_profile
+from jointwear.measurement.pointfit import PointFit, fit_points, interpolation_weights
+from jointwear.measurement.profile import align_profiles, measured_wear_profile
 from jointwear.registry import suggest
 from jointwear.units import DIMENSIONS, to_si
 
 __all__ = [
+    "CONFIDENCE",
     "DEFAULT_BOUNDS",
+    "MISFIT_RATIO",
     "PARAMETER_ALIASES",
+    "CaseFit",
     "MeasuredCase",
     "ProfileCalibration",
     "calibrate_profiles",
@@ -110,12 +128,33 @@ DEFAULT_BOUNDS: dict[str, tuple[float, float]] = {
     "mechanism.spring_preload": (0.0, 400.0),
 }
 
-#: Residual of a case whose simulation fails (e.g. wears through the wall) [-]:
-#: large, so that the optimiser steps back.
-_FAILED_RESIDUAL = 10.0
-#: Re-align and repeat while the offset moves by more than this share of a node.
-_REALIGN_TOLERANCE = 0.1
-_MAX_PASSES = 3
+#: Confidence of the reported intervals [-].
+CONFIDENCE = 0.95
+#: A case warns when its point residuals averaged per node exceed what its noise leaves of
+#: them by this factor [-] (:attr:`CaseFit.misfit_ratio`). With a right model the ratio is
+#: about 1 (0.85-1.1 on the synthetic tests: the unworn arc's RMS, the noise estimate,
+#: includes the scar's shallow flanks), scattering by about 1/sqrt(2 N) for N nodes.
+MISFIT_RATIO = 1.5
+#: Misfits below this share of a case's measured peak never warn [-]: the model and the
+#: interpolation between nodes are not better than that, so a noise-free measurement
+#: (a synthetic one) would warn about them.
+_MISFIT_FLOOR = 1e-3
+#: Values per decade of the global scan of one log-scaled parameter, and its size limits.
+_SCAN_PER_DECADE = 4
+_SCAN_MIN, _SCAN_MAX = 9, 41
+#: Values of the global scan of one linear parameter.
+_SCAN_LINEAR = 17
+#: Sobol points per parameter of the global sample of several parameters.
+_SAMPLE_PER_PARAMETER = 16
+#: Local minima of the global stage polished by least squares, and how much worse than the
+#: best one (sum of squared residuals) a minimum may be to be polished [-].
+_POLISH_STARTS = 3
+_CANDIDATE_COST_RATIO = 2.0
+#: Finite-difference steps of the Jacobian: a share of the value on a log scale, of the
+#: range on a linear one [-]. Far larger than the simulation's tolerances (contact balance,
+#: adaptive contour update), far smaller than the scale on which dh/dp changes.
+_LOG_STEP = 1e-2
+_LINEAR_STEP = 1e-3
 
 
 # ---------------------------------------------------------------- parameter names
@@ -343,14 +382,81 @@ def parse_case(text: str) -> tuple[Path, dict[str, Any]]:
 
 # ---------------------------------------------------------------- profile calibration
 @dataclass(frozen=True)
+class CaseFit:
+    """One measured case at the fitted parameters.
+
+    Attributes
+    ----------
+    points : PointFit
+        Centre, rotation and point residuals against the simulated profile
+        (:func:`~jointwear.measurement.pointfit.fit_points`).
+    noise : float
+        Measurement noise the residuals are divided by [m].
+    noise_source : str
+        ``"unworn arc"`` (the robust circle fit's RMS residual) or ``"given"``.
+    peak : float
+        Largest depth of the measured profile [m].
+    nodes : int
+        Nodes of the simulation's grid.
+    """
+
+    points: PointFit
+    noise: float
+    noise_source: str
+    peak: float
+    nodes: int
+
+    @property
+    def rms_residual(self) -> float:
+        """RMS residual of the points [m]."""
+        return self.points.rms_residual
+
+    def _node_means(self) -> tuple[FloatArray, FloatArray]:
+        """Mean point residual per node (points at their nearest node) and points per node."""
+        nearest = np.rint(self.points.angles / (2 * np.pi / self.nodes)).astype(int) % self.nodes
+        count = np.bincount(nearest, minlength=self.nodes).astype(float)
+        total = np.bincount(nearest, weights=self.points.residuals, minlength=self.nodes)
+        filled = count > 0
+        return total[filled] / count[filled], count[filled]
+
+    @property
+    def misfit(self) -> float:
+        """RMS of the point residuals averaged per node [m].
+
+        Averaging shrinks the noise (by the square root of the points per node) but
+        not a misfit of the model's profile, which is smooth in angle.
+        """
+        means, _ = self._node_means()
+        return float(np.sqrt(np.mean(means**2)))
+
+    @property
+    def expected_misfit(self) -> float:
+        """What the noise alone leaves of :attr:`misfit` [m]: ``noise sqrt(mean(1/n_j))``."""
+        _, count = self._node_means()
+        return self.noise * float(np.sqrt(np.mean(1.0 / count)))
+
+    @property
+    def misfit_ratio(self) -> float:
+        """:attr:`misfit` over :attr:`expected_misfit` [-]; about 1 if the model is right."""
+        expected = self.expected_misfit
+        return self.misfit / expected if expected > 0 else math.inf
+
+    @property
+    def explained(self) -> bool:
+        """False if the model misses the profile by more than the noise allows."""
+        floor = max(self.expected_misfit, _MISFIT_FLOOR * self.peak)
+        return self.misfit <= MISFIT_RATIO * floor
+
+
+@dataclass(frozen=True)
 class ProfileCalibration:
     """Parameters fitted to measured profiles.
 
     Attributes
     ----------
     result : CalibrationResult
-        Fitted values [SI], 1σ uncertainties [SI], residuals (fractions of each
-        case's measured peak), fitted config, evaluations.
+        Fitted values [SI], 1σ uncertainties [SI], point residuals (in units of
+        each case's noise), fitted config, evaluations.
     parameters : list of Parameter
         What was fitted, with bounds [SI].
     initial : dict
@@ -358,14 +464,24 @@ class ProfileCalibration:
     cases : list of MeasuredCase
         The measured cases.
     comparisons : list of Comparison
-        Each case at the fitted values (aligned profiles, errors, metrics).
-    passes : int
-        Least-squares passes (alignment updates between them).
+        Each case at the fitted values, seen from its fitted centre and rotation
+        (aligned profiles, errors, metrics).
+    fits : list of CaseFit
+        Each case's centre, rotation, noise and point residuals at the fitted values.
+    intervals : dict
+        ``(lower, upper)`` confidence interval per key [SI] (NaN if not estimable).
+    correlation : ndarray, shape (P, P)
+        Correlation of the fitted parameters (on their fitting scale).
+    scan : list of tuple
+        The global stage: ``(values, cost)`` per trial, ``values`` a dict [SI],
+        ``cost`` the sum of squared residuals (``inf`` where the simulation fails).
+    starts : int
+        Least-squares polishes run from the global stage's best candidates.
     evaluations : int
-        Residual evaluations of the optimiser in all passes.
+        Residual evaluations (global stage and polish; the Jacobian's not counted).
     simulations : int
-        Simulations run in all (one per case per evaluation, plus alignment
-        and the final comparison).
+        Simulations run in all (one per case per evaluation, two per case and
+        parameter for each Jacobian).
     """
 
     result: CalibrationResult
@@ -373,7 +489,11 @@ class ProfileCalibration:
     initial: dict[str, float]
     cases: list[MeasuredCase]
     comparisons: list[Comparison]
-    passes: int
+    fits: list[CaseFit]
+    intervals: dict[str, tuple[float, float]]
+    correlation: FloatArray
+    scan: list[tuple[dict[str, float], float]]
+    starts: int
     evaluations: int
     simulations: int
 
@@ -389,16 +509,38 @@ class ProfileCalibration:
 
     @property
     def rms_residual(self) -> float:
-        """RMS of the normalised residuals at the optimum [-] (fraction of the peak)."""
-        return self.result.rms_residual
+        """RMS of the profile differences at the fitted values [-] (fraction of each peak).
+
+        Simulated minus measured profile on the node grid (points averaged or
+        interpolated per node, seen from the fitted centre and rotation), each
+        case divided by its measured peak.
+        """
+        parts = [
+            comparison.difference / comparison.measured_metrics.peak_depth
+            for comparison in self.comparisons
+        ]
+        return float(np.sqrt(np.mean(np.concatenate(parts) ** 2)))
+
+    @property
+    def warnings(self) -> list[str]:
+        """One line per case the fitted model does not explain."""
+        return [
+            _misfit_message(case, fit)
+            for case, fit in zip(self.cases, self.fits, strict=True)
+            if not fit.explained
+        ]
 
     def summary(self) -> dict[str, Any]:
         """The ``jointwear calibrate --json`` object."""
+        n = len(self.parameters)
         return {
             "parameters": {
                 p.key: {
                     "value": self.values[p.key],
-                    "uncertainty": self.uncertainty[p.key],
+                    "uncertainty": _finite(self.uncertainty[p.key]),
+                    "interval": [_finite(v) for v in self.intervals[p.key]],
+                    "confidence": CONFIDENCE,
+                    "scale": "log" if p.logarithmic else "linear",
                     "unit": key_unit(p.key),
                     "initial": self.initial[p.key],
                     "lower": p.lower,
@@ -407,25 +549,63 @@ class ProfileCalibration:
                 }
                 for p in self.parameters
             },
+            "correlation": [[_finite(float(c)) for c in row] for row in self.correlation]
+            if n > 1
+            else None,
+            "method": {
+                "residual": "points: distance from the fitted centre - R0 - simulated "
+                "profile, divided by the case's noise",
+                "global": "grid" if n == 1 else "sobol",
+                "global_trials": len(self.scan),
+                "polish": "least_squares",
+                "starts": self.starts,
+                "uncertainty": "s^2 (J^T J)^-1, centre and rotation profiled out",
+                "interval": "student-t on the fitting scale",
+            },
             "rms_residual": self.rms_residual,
             "residual_unit": "fraction of each case's measured peak",
             "evaluations": self.evaluations,
             "simulations": self.simulations,
-            "passes": self.passes,
+            "warnings": self.warnings,
             "cases": [
                 {
                     "name": case.name,
                     "overrides": {k: _plain(v) for k, v in case.overrides.items()},
                     "points": int(case.x.size),
                     "rms_error_m": comparison.rms_error,
+                    "rms_point_residual_m": fit.rms_residual,
+                    "noise_m": fit.noise,
+                    "noise_source": fit.noise_source,
+                    "misfit_m": fit.misfit,
+                    "expected_misfit_m": fit.expected_misfit,
+                    "misfit_ratio": _finite(fit.misfit_ratio),
+                    "center_x_m": fit.points.center_x,
+                    "center_y_m": fit.points.center_y,
                     "peak_wear_depth_simulated_m": comparison.simulated_metrics.peak_depth,
                     "peak_wear_depth_measured_m": comparison.measured_metrics.peak_depth,
                     "peak_error_rel": comparison.peak_error_rel,
                     "alignment_offset_deg": math.degrees(comparison.alignment_offset),
                 }
-                for case, comparison in zip(self.cases, self.comparisons, strict=True)
+                for case, comparison, fit in zip(
+                    self.cases, self.comparisons, self.fits, strict=True
+                )
             ],
         }
+
+
+def _finite(value: float) -> float | None:
+    return value if math.isfinite(value) else None
+
+
+def _misfit_message(case: MeasuredCase, fit: CaseFit) -> str:
+    return (
+        f"{case.name}: the fitted model misses the measured profile by "
+        f"{fit.misfit * 1e6:.3g} µm rms (points averaged per node), {fit.misfit_ratio:.3g} "
+        f"times what the measurement noise ({fit.noise * 1e6:.3g} µm per point, "
+        f"{fit.noise_source}) explains; the model does not explain this measurement (check "
+        "the contact model, load, speed and revolutions of this case), and the interval "
+        "assumes it does"
+    )
 
 
 def _plain(value: Any) -> Any:
@@ -450,15 +630,19 @@ def _describe(values: Mapping[str, float]) -> str:
 
 
 class _Measured:
-    """The measured profile of a case on a grid, cached by unworn radius and grid."""
+    """A case's points: circle fit, noise, profile and point fits, cached by radius and grid."""
 
-    def __init__(self, case: MeasuredCase, fit: str, profile: str) -> None:
+    def __init__(self, case: MeasuredCase, fit: str, profile: str, noise: float | None) -> None:
         self.case = case
-        self.fit = fit
+        self.fit = str(fit).replace("_", "-")
         self.profile = profile
+        self.given_noise = noise
         self._circles: dict[float, CircleFit] = {}
+        self._noise: dict[float, float] = {}
+        self._first: dict[tuple[float, int], FloatArray] = {}
 
     def circle(self, radius: float) -> CircleFit:
+        """The circle fit of the points: the starting centre (the centre, least squares)."""
         if radius not in self._circles:
             try:
                 self._circles[radius] = fit_circle(self.case.x, self.case.y, radius, self.fit)
@@ -466,10 +650,53 @@ class _Measured:
                 raise DataError(f"{self.case.name}: {exc}") from None
         return self._circles[radius]
 
-    def profile_at(self, radius: float, nodes: int, offset: float) -> FloatArray:
-        method = resolve_profile_method(self.profile, self.case.x.size, nodes)
-        return measured_wear_profile(
-            self.case.x, self.case.y, self.circle(radius), radius, nodes, offset, method
+    def noise(self, radius: float) -> tuple[float, str]:
+        """Measurement noise [m] and where it comes from."""
+        if self.given_noise is not None:
+            return self.given_noise, "given"
+        if radius not in self._noise:
+            circle = self.circle(radius)
+            if circle.method != "robust":
+                try:
+                    circle = fit_circle(self.case.x, self.case.y, radius, "robust")
+                except DataError as exc:
+                    raise DataError(
+                        f"{self.case.name}: no unworn arc to estimate the noise from ({exc}); "
+                        "give it (--noise)"
+                    ) from None
+            # coordinates rounded in the file are a floor of what the points resolve
+            self._noise[radius] = max(circle.rms_residual, circle.resolution, 1e-12 * radius)
+        return self._noise[radius], "unworn arc"
+
+    def first_profile(self, radius: float, nodes: int) -> FloatArray:
+        """The measured profile seen from the circle's centre, offset 0 (for alignment)."""
+        key = (radius, nodes)
+        if key not in self._first:
+            method = resolve_profile_method(self.profile, self.case.x.size, nodes)
+            self._first[key] = measured_wear_profile(
+                self.case.x, self.case.y, self.circle(radius), radius, nodes, 0.0, method
+            )
+        return self._first[key]
+
+    def peak(self, radius: float, nodes: int) -> float:
+        return float(np.max(self.first_profile(radius, nodes)))
+
+    def fit_points(self, simulated: FloatArray, radius: float) -> PointFit:
+        """Centre and rotation of the points against a simulated profile."""
+        circle = self.circle(radius)
+        if self.case.align == ALIGN_BEST:
+            offset, _ = align_profiles(simulated, self.first_profile(radius, simulated.size))
+        else:
+            offset = float(self.case.align)
+        return fit_points(
+            self.case.x,
+            self.case.y,
+            simulated,
+            radius,
+            circle.center,
+            offset,
+            fit_center=self.fit == "robust",
+            fit_offset=self.case.align == ALIGN_BEST,
         )
 
 
@@ -501,6 +728,85 @@ def _case_config(base: Config, case: MeasuredCase) -> Config:
         raise ConfigError(f"{case.name}: {exc}") from None
 
 
+@dataclass
+class _Trial:
+    """The cases simulated and fitted at one point ``u`` of the unit cube."""
+
+    u: FloatArray
+    values: dict[str, float]
+    configs: list[Config]
+    profiles: list[FloatArray] = field(default_factory=list)
+    fits: list[PointFit] = field(default_factory=list)
+    failure: JointwearError | None = None
+    failed_case: str = ""
+
+    @property
+    def failed(self) -> bool:
+        return self.failure is not None
+
+
+def _global_trials(parameters: Sequence[Parameter], start: FloatArray) -> FloatArray:
+    """Points of the unit cube the global stage evaluates (the start included)."""
+    if len(parameters) == 1:
+        (p,) = parameters
+        if p.logarithmic:
+            decades = math.log10(p.upper / p.lower)
+            count = int(np.clip(round(_SCAN_PER_DECADE * decades) + 1, _SCAN_MIN, _SCAN_MAX))
+        else:
+            count = _SCAN_LINEAR
+        grid = np.linspace(0.0, 1.0, count)[:, None]
+    else:
+        from scipy.stats import qmc
+
+        exponent = math.ceil(math.log2(_SAMPLE_PER_PARAMETER * len(parameters)))
+        grid = qmc.Sobol(len(parameters), scramble=True, seed=0).random_base2(exponent)
+    return np.vstack([grid, start[None, :]])
+
+
+def _candidates(trials: FloatArray, costs: FloatArray, count: int) -> list[int]:
+    """Indices of the global stage's best distinct local minima, worth a polish.
+
+    A local minimum whose cost is more than :data:`_CANDIDATE_COST_RATIO` times the best
+    one's is not polished: on a flat stretch (a trial ``K_d`` decades too small, whose
+    profile is nearly zero everywhere) noise makes spurious minima, far above the real one.
+    """
+    finite = np.isfinite(costs)
+    if not finite.any():
+        return []
+    limit = _CANDIDATE_COST_RATIO * float(np.min(costs[finite]))
+    worth = finite & (costs <= limit)
+    if trials.shape[1] == 1:
+        grid = np.argsort(trials[:-1, 0])  # the scan proper (the start is the last trial)
+        minima = []
+        for position, i in enumerate(grid):
+            left = costs[grid[position - 1]] if position > 0 else math.inf
+            right = costs[grid[position + 1]] if position + 1 < grid.size else math.inf
+            if worth[i] and costs[i] <= left and costs[i] <= right:
+                minima.append(int(i))
+        chosen = sorted(minima, key=lambda i: costs[i])[:count]
+        start = trials.shape[0] - 1
+        if worth[start] and costs[start] < min((costs[i] for i in chosen), default=math.inf):
+            chosen.insert(0, start)
+        return chosen[:count]
+    chosen: list[int] = []
+    for i in np.argsort(costs):
+        if worth[i] and all(np.max(np.abs(trials[i] - trials[j])) > 0.1 for j in chosen):
+            chosen.append(int(i))
+        if len(chosen) == count:
+            break
+    return chosen
+
+
+def _steps(parameters: Sequence[Parameter]) -> FloatArray:
+    """Finite-difference steps on the unit scale [-]."""
+    return np.array(
+        [
+            _LOG_STEP / math.log(p.upper / p.lower) if p.logarithmic else _LINEAR_STEP
+            for p in parameters
+        ]
+    )
+
+
 def calibrate_profiles(
     config: Config,
     cases: Sequence[MeasuredCase],
@@ -509,9 +815,13 @@ def calibrate_profiles(
     fit: str = "robust",
     profile: str = "auto",
     initial: Mapping[str, float] | None = None,
+    noise: float | None = None,
     max_evaluations: int = 200,
 ) -> ProfileCalibration:
-    """Fit config parameters so that simulated wear profiles match measured ones.
+    """Fit config parameters so that simulated wear profiles match measured points.
+
+    See the module docstring for the residual, the global stage, the polish and
+    the uncertainty.
 
     Parameters
     ----------
@@ -523,14 +833,22 @@ def calibrate_profiles(
     parameters : sequence of Parameter
         Keys to fit with bounds [SI] (:func:`resolve_parameter`).
     fit : str
-        Circle fit of the measured points: ``"robust"`` (default) or
-        ``"least-squares"`` (biased; see :mod:`jointwear.measurement.fit`).
+        Bushing centre: ``"robust"`` (default: started from the robust circle
+        fit of the unworn arc, then fitted with each simulated profile) or
+        ``"least-squares"`` (the paper's plain circle fit, kept fixed; biased
+        towards the scar, see :mod:`jointwear.measurement.fit`).
     profile : str
-        Points onto the grid: ``"auto"``, ``"interpolate"`` or ``"bin"``.
+        Points onto the grid for the reported comparisons: ``"auto"``,
+        ``"interpolate"`` or ``"bin"``.
     initial : mapping, optional
         Starting values [SI]; default the config's (clipped into the bounds).
+        The global stage makes the result independent of them; they are one
+        more candidate.
+    noise : float, optional
+        Measurement noise (standard deviation of the radial error) of every
+        case [m]; default: estimated per case from the unworn arc.
     max_evaluations : int
-        Largest number of optimiser steps per pass.
+        Largest number of residual evaluations of each polish.
 
     Returns
     -------
@@ -539,12 +857,15 @@ def calibrate_profiles(
     Raises
     ------
     ConfigError
-        No cases or parameters, a parameter a case overrides, bad overrides.
+        No cases or parameters, a parameter a case overrides, bad overrides or noise.
     DataError
         A circle fit fails, or a measured profile shows no wear.
-    ConvergenceError
-        The residual is not finite at the optimum.
+    JointwearError
+        The simulation fails at every trial value (the start's error, reworded).
     """
+    from scipy.optimize import least_squares
+    from scipy.special import stdtrit
+
     if not cases:
         raise ConfigError("calibrate: give at least one measured profile")
     if not parameters:
@@ -556,128 +877,255 @@ def calibrate_profiles(
         clash = sorted(set(case.overrides) & set(keys))
         if clash:
             raise ConfigError(f"{case.name}: the case sets {clash[0]}, which is being fitted")
+    if noise is not None and not (math.isfinite(noise) and noise > 0):
+        raise ConfigError(f"--noise: must be a length > 0, got {noise!r}")
     resolve_profile_method(profile, 1, 1)  # check the names early
     if str(fit).replace("_", "-") not in CIRCLE_FITS:
         raise ConfigError(f"fit: unknown circle fit {fit!r}{suggest(str(fit), CIRCLE_FITS)}")
-    measured = [_Measured(case, fit, profile) for case in cases]
+    measured = [_Measured(case, fit, profile, noise) for case in cases]
     start = {
         p.key: float((initial or {}).get(p.key, config_value(config, p.key))) for p in parameters
     }
     start = {p.key: min(max(start[p.key], p.lower), p.upper) for p in parameters}
-    # validate every case's config once, with the starting values
-    for case in cases:
-        _case_config(config.replace(start), case)
+    # every case's config, its measured profile and noise, checked once with the starting values
+    for case, meas in zip(cases, measured, strict=True):
+        cfg = _case_config(config.replace(start), case)
+        radius, nodes = cfg.bushing_radius, cfg.contact.nodes
+        peak, (sigma, _) = meas.peak(radius, nodes), meas.noise(radius)
+        if not peak > max(3 * sigma, 1e-6 * radius):
+            raise DataError(
+                f"{case.name}: the measured profile shows no wear to fit (peak "
+                f"{peak * 1e6:.3g} µm, noise {sigma * 1e6:.3g} µm rms)"
+            )
 
     simulations = 0
-
-    def align(values: Mapping[str, float]) -> list[tuple[float, int, float, float]]:
-        """Per case: unworn radius, nodes, offset [rad], normalisation [m]."""
-        nonlocal simulations
-        out = []
-        for case, meas in zip(cases, measured, strict=True):
-            cfg = _case_config(config.replace(values), case)
-            radius, nodes = cfg.bushing_radius, cfg.contact.nodes
-            if case.align == ALIGN_BEST:
-                simulations += 1
-                try:
-                    simulated = _simulate(cfg)
-                except JointwearError as exc:
-                    raise _reworded(
-                        exc, f"{case.name}: the simulation fails at {_describe(values)} ({exc})"
-                    ) from None
-                comparison = compare_measurement(
-                    simulated,
-                    case.x,
-                    case.y,
-                    radius,
-                    fit=meas.circle(radius),
-                    profile=meas.profile,
-                )
-                offset = comparison.alignment_offset
-            else:
-                offset = float(case.align)
-            peak = float(np.max(meas.profile_at(radius, nodes, offset)))
-            noise = meas.circle(radius).rms_residual
-            if not peak > max(3 * noise, 1e-6 * radius):
-                raise DataError(
-                    f"{case.name}: the measured profile shows no wear to fit (peak "
-                    f"{peak * 1e6:.3g} µm, noise {noise * 1e6:.3g} µm rms)"
-                )
-            out.append((radius, nodes, offset, peak))
-        return out
-
-    failed: set[tuple[float, ...]] = set()
-    values = dict(start)
-    passes = 0
     evaluations = 0
-    result: CalibrationResult | None = None
-    alignment = align(values)
-    while True:
-        passes += 1
-        fixed = list(alignment)
-        labels = [
-            f"{case.name}:theta={360.0 * j / nodes:g}deg"
-            for case, (_, nodes, _, _) in zip(cases, fixed, strict=True)
-            for j in range(nodes)
+    profiles: dict[tuple[tuple[float, ...], int], FloatArray | JointwearError] = {}
+    trials: dict[tuple[float, ...], _Trial] = {}
+
+    def values_at(u: FloatArray) -> dict[str, float]:
+        return {p.key: p.from_unit(float(v)) for p, v in zip(parameters, u, strict=True)}
+
+    def simulated(u: FloatArray, index: int) -> FloatArray | JointwearError:
+        """A case's simulated profile at ``u`` (or the error it fails with)."""
+        nonlocal simulations
+        key = (tuple(float(v) for v in u), index)
+        if key not in profiles:
+            simulations += 1
+            cfg = _case_config(config.replace(values_at(u)), cases[index])
+            try:
+                profiles[key] = _simulate(cfg)
+            except JointwearError as exc:
+                profiles[key] = exc
+        return profiles[key]
+
+    def trial(u: FloatArray) -> _Trial:
+        key = tuple(float(v) for v in u)
+        if key not in trials:
+            values = values_at(u)
+            configs = [_case_config(config.replace(values), case) for case in cases]
+            item = _Trial(np.array(u, dtype=float), values, configs)
+            for index, (case, meas, cfg) in enumerate(zip(cases, measured, configs, strict=True)):
+                depth = simulated(u, index)
+                if isinstance(depth, JointwearError):
+                    item.failure, item.failed_case = depth, case.name
+                    break
+                item.profiles.append(depth)
+                item.fits.append(meas.fit_points(depth, cfg.bushing_radius))
+            trials[key] = item
+        return trials[key]
+
+    def weights(item: _Trial) -> list[float]:
+        return [
+            meas.noise(cfg.bushing_radius)[0]
+            for meas, cfg in zip(measured, item.configs, strict=True)
         ]
 
-        def residual(cfg: Config, fixed: list[tuple[float, int, float, float]] = fixed) -> Any:
-            nonlocal simulations
-            parts = []
-            for case, meas, (_, _, offset, peak) in zip(cases, measured, fixed, strict=True):
-                case_cfg = _case_config(cfg, case)
-                radius, nodes = case_cfg.bushing_radius, case_cfg.contact.nodes
-                target = meas.profile_at(radius, nodes, offset)
-                simulations += 1
-                try:
-                    simulated = _simulate(case_cfg)
-                except JointwearError:
-                    failed.add(tuple(config_value(cfg, key) for key in keys))
-                    parts.append(np.full(nodes, _FAILED_RESIDUAL))
-                    continue
-                parts.append((simulated - target) / peak)
-            return np.concatenate(parts)
+    def residual(u: FloatArray) -> FloatArray:
+        nonlocal evaluations
+        evaluations += 1
+        return scaled(trial(u))
 
-        result = calibrate(config, parameters, residual, labels, values, max_evaluations)
-        evaluations += result.evaluations
-        values = dict(result.values)
-        if tuple(values[key] for key in keys) in failed:
-            raise DataError(
-                f"calibrate: the simulation fails at {_describe(values)} (e.g. the bushing "
-                "wears through); narrow the bounds"
+    def scaled(item: _Trial) -> FloatArray:
+        """The residual vector of a trial [-] (point residuals over each case's noise)."""
+        if item.failed:
+            # larger than any residual of a simulation that runs (wear within the wall)
+            return np.concatenate(
+                [
+                    np.full(case.x.size, 10 * cfg.bushing_radius / sigma)
+                    for case, cfg, sigma in zip(cases, item.configs, weights(item), strict=True)
+                ]
             )
-        alignment = align(values)
-        moved = max(
-            abs(np.angle(np.exp(1j * (new[2] - old[2])))) / (2 * np.pi / new[1])
-            for new, old in zip(alignment, fixed, strict=True)
+        return np.concatenate(
+            [f.residuals / sigma for f, sigma in zip(item.fits, weights(item), strict=True)]
         )
-        if moved <= _REALIGN_TOLERANCE or passes >= _MAX_PASSES:
-            break
 
+    steps = _steps(parameters)
+
+    def jacobian(u: FloatArray) -> FloatArray:
+        """Jacobian of the profiled residual: d(profile)/du, centre and rotation projected out."""
+        item = trial(u)
+        if item.failed:  # no slope where the simulation fails: the cost there is a wall
+            return np.zeros((sum(case.x.size for case in cases), len(parameters)))
+        blocks = []
+        for index, (fitted, sigma) in enumerate(zip(item.fits, weights(item), strict=True)):
+            columns = []
+            for i, step in enumerate(steps):
+                up, down = np.array(u, dtype=float), np.array(u, dtype=float)
+                up[i], down[i] = min(u[i] + step, 1.0), max(u[i] - step, 0.0)
+                high, low = simulated(up, index), simulated(down, index)
+                if isinstance(high, JointwearError):
+                    high, up = item.profiles[index], np.array(u, dtype=float)
+                if isinstance(low, JointwearError):
+                    low, down = item.profiles[index], np.array(u, dtype=float)
+                span = up[i] - down[i]
+                slope = (high - low) / span if span > 0 else np.zeros_like(high)
+                k, w = interpolation_weights(fitted.angles, slope.size)
+                columns.append(-((1 - w) * slope[k] + w * slope[(k + 1) % slope.size]) / sigma)
+            block = np.column_stack(columns)
+            nuisance = fitted.jacobian / sigma
+            if nuisance.shape[1]:
+                basis, _ = np.linalg.qr(nuisance)
+                block = block - basis @ (basis.T @ block)
+            blocks.append(block)
+        return np.vstack(blocks)
+
+    def cost(u: FloatArray) -> float:
+        nonlocal evaluations
+        evaluations += 1
+        item = trial(u)
+        return math.inf if item.failed else float(np.sum(scaled(item) ** 2))
+
+    # 1. global stage
+    start_u = np.array([p.to_unit(start[p.key]) for p in parameters])
+    points = _global_trials(parameters, start_u)
+    costs = np.array([cost(u) for u in points])
+    if not np.any(np.isfinite(costs)):
+        failed = trial(start_u)
+        raise _reworded(
+            failed.failure or DataError("the simulation fails"),
+            f"{failed.failed_case}: the simulation fails at {_describe(start)} "
+            f"({failed.failure}), and at every value of the global search; narrow the bounds",
+        )
+    scan = [(values_at(u), float(c)) for u, c in zip(points, costs, strict=True)]
+
+    # 2. polish the best candidates
+    best: Any = None
+    starts = 0
+    for index in _candidates(points, costs, _POLISH_STARTS):
+        starts += 1
+        solution = least_squares(
+            residual,
+            points[index],
+            jac=jacobian,
+            bounds=(0.0, 1.0),
+            method="trf",
+            x_scale="jac",
+            xtol=1e-10,
+            ftol=1e-12,
+            gtol=1e-12,
+            max_nfev=max_evaluations,
+        )
+        if best is None or solution.cost < best.cost:
+            best = solution
+    u_best = np.clip(best.x, 0.0, 1.0)
+    final = trial(u_best)
+    if final.failure is not None:
+        raise _reworded(
+            final.failure,
+            f"calibrate: the simulation fails at {_describe(final.values)} (e.g. the bushing "
+            "wears through); narrow the bounds",
+        )
+
+    # 3. uncertainty from the profiled Jacobian
+    r = scaled(final)
+    jac = jacobian(u_best)
+    nuisance = sum(len(f.free) for f in final.fits)
+    dof = r.size - len(parameters) - nuisance
+    uncertainty = {key: math.nan for key in keys}
+    intervals = {key: (math.nan, math.nan) for key in keys}
+    correlation = np.full((len(keys), len(keys)), math.nan)
+    if dof > 0:
+        try:
+            covariance = np.linalg.inv(jac.T @ jac) * float(r @ r) / dof
+        except np.linalg.LinAlgError:
+            covariance = None
+        if covariance is not None and np.all(np.isfinite(covariance)):
+            quantile = float(stdtrit(dof, 0.5 + CONFIDENCE / 2))  # Student's t
+            sigma_u = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+            with np.errstate(invalid="ignore", divide="ignore"):
+                correlation = covariance / np.outer(sigma_u, sigma_u)
+            for p, s in zip(parameters, sigma_u, strict=True):
+                value = final.values[p.key]
+                if p.logarithmic:
+                    spread = s * math.log(p.upper / p.lower)  # of ln(value)
+                    uncertainty[p.key] = value * spread
+                    intervals[p.key] = (
+                        value * math.exp(-quantile * spread),
+                        value * math.exp(quantile * spread),
+                    )
+                else:
+                    spread = s * (p.upper - p.lower)
+                    uncertainty[p.key] = spread
+                    intervals[p.key] = (value - quantile * spread, value + quantile * spread)
+
+    result = CalibrationResult(
+        values=final.values,
+        uncertainty=uncertainty,
+        residuals=r,
+        labels=[f"{case.name}:point {i}" for case in cases for i in range(case.x.size)],
+        config=config.replace(final.values),
+        evaluations=evaluations,
+        message=str(best.message),
+    )
+    fits = []
     comparisons = []
-    for case, meas, (radius, _, offset, _) in zip(cases, measured, alignment, strict=True):
-        cfg = _case_config(result.config, case)
-        simulations += 1
-        comparisons.append(
-            compare_measurement(
-                _simulate(cfg),
-                case.x,
-                case.y,
-                radius,
-                fit=meas.circle(radius),
-                profile=meas.profile,
-                align=offset,
-                axial_length=cfg.joint.axial_length,
-                density=cfg.materials.bushing.density,
-            )
+    for meas, cfg, depth, points_fit in zip(
+        measured, final.configs, final.profiles, final.fits, strict=True
+    ):
+        radius = cfg.bushing_radius
+        sigma, source = meas.noise(radius)
+        circle = meas.circle(radius)
+        centre = CircleFit(
+            points_fit.center_x,
+            points_fit.center_y,
+            radius,
+            points_fit.rms_residual,
+            "profile" if meas.fit == "robust" else circle.method,
+            int(meas.case.x.size),
+            True,
+            None,
+            circle.resolution,
         )
-    return ProfileCalibration(
+        comparison = compare_measurement(
+            depth,
+            meas.case.x,
+            meas.case.y,
+            radius,
+            fit=centre,
+            profile=meas.profile,
+            align=points_fit.offset,
+            axial_length=cfg.joint.axial_length,
+            density=cfg.materials.bushing.density,
+        )
+        comparisons.append(comparison)
+        fits.append(
+            CaseFit(points_fit, sigma, source, comparison.measured_metrics.peak_depth, depth.size)
+        )
+    outcome = ProfileCalibration(
         result=result,
         parameters=list(parameters),
         initial=start,
         cases=list(cases),
         comparisons=comparisons,
-        passes=passes,
+        fits=fits,
+        intervals=intervals,
+        correlation=correlation,
+        scan=scan,
+        starts=starts,
         evaluations=evaluations,
         simulations=simulations,
     )
+    for message in outcome.warnings:
+        warnings.warn(message, FitMisfitWarning, stacklevel=2)
+    return outcome
