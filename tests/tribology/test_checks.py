@@ -245,3 +245,15 @@ def test_the_papers_cases_stay_inside_their_models(name: str) -> None:
     )
     said, _ = validity_warnings(config)
     assert not said
+
+
+def test_wear_deeper_than_a_tenth_of_the_radius_warns() -> None:
+    """The contour models wear along the bushing's rays: past h = 0.1 R_b they fall ~2 %
+    short of the exact conformal bore, and the run says so (and where to stop)."""
+    config = liner()
+    radius = config.joint.bushing_radius
+    shallow = np.full(config.contact.nodes, 0.09 * radius)
+    assert "deep_wear" not in model_validity(config, "asymmetric-winkler", shallow)
+    found = model_validity(config, "asymmetric-winkler", shallow / 0.09 * 0.12)
+    assert found["deep_wear"].startswith("life.peak_wear_depth: the wear (0.9 mm)")
+    assert "2.4% low" in found["deep_wear"]
