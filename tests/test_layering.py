@@ -70,6 +70,8 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "jointwear.measurement",
             "jointwear.references.compare",
             "jointwear.references.calibrate",
+            # runs the simulation against the exact references (the Validation page)
+            "jointwear.references.validation",
             "jointwear.sweep",
             "jointwear.life",
         ),

@@ -703,13 +703,15 @@ class _Measured:
 def _simulate(config: Config) -> FloatArray:
     import warnings
 
-    from jointwear.errors import WearFeedbackWarning, WearThroughError
+    from jointwear.errors import ContactModelWarning, WearFeedbackWarning, WearThroughError
     from jointwear.simulation import Simulation
 
     # the trial values of a fit are no run of the user's: what they would warn about
-    # (e.g. a trial K_d wearing past the clearance) says nothing about the result
+    # (e.g. a trial K_d wearing past the clearance, or deeper than the models' range)
+    # says nothing about the result
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", WearFeedbackWarning)
+        warnings.simplefilter("ignore", ContactModelWarning)
         result = Simulation(config).run()
     summary = result.summary()
     if summary["stopped_by"] is not None:
