@@ -361,18 +361,27 @@ def build_contents(
     return ResultContents(data_vars, coords, attrs)
 
 
+_STOPPED_BY = {"long_name": "life limit that ended the joint's run ('' if none)"}
+
+
 def combine_joints(datasets: list[xr.Dataset]) -> xr.Dataset:
     """One dataset with a ``joint`` dimension from the datasets of single joints.
 
-    Joints updated a different number of times (adaptive updating) leave the
-    shorter ``update`` series padded with NaN.
+    Joints updated a different number of times (adaptive updating, or a run that a
+    limit ended) leave the shorter ``update`` series padded with NaN; the saved profiles
+    are on the union of the joints' revolutions, NaN where a joint has none
+    (:func:`select_joint` takes each joint's own). ``stopped_by`` is a variable along
+    ``joint``.
     """
     import xarray as xr
 
     names = [str(ds.attrs["joint"]) for ds in datasets]
+    # (each joint's run ends on its own: what ended it is a variable along the joints, an
+    # attribute that differs between them would be dropped)
     per_joint = [
         ds.reset_coords("update_revolution").assign(
-            update_revolution=ds["update_revolution"].astype(float)
+            update_revolution=ds["update_revolution"].astype(float),
+            stopped_by=xr.Variable((), str(ds.attrs.get("stopped_by", "")), _STOPPED_BY),
         )
         for ds in datasets
     ]
@@ -415,6 +424,9 @@ def select_joint(dataset: xr.Dataset, joint: str | None = None) -> xr.Dataset:
 
         raise DataError(f"result: no clearance joint {joint!r}{suggest(joint, names)}")
     single = dataset.sel(joint=joint, drop=True)
+    if "stopped_by" in single.data_vars:
+        single.attrs["stopped_by"] = str(single["stopped_by"].values)
+        single = single.drop_vars("stopped_by")
     updates = int(np.count_nonzero(np.isfinite(single["update_revolution"].values)))
     single = single.isel(update=slice(0, updates))
     # the profiles are saved at every joint's revolutions (each joint's run ends at its
