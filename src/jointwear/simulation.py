@@ -554,9 +554,9 @@ class Simulation:
         ----------
         progress : callable, optional
             Called as ``progress(revolutions_done, revolutions_total)`` after every contour
-            update, and as ``progress(total, total)`` once the run is complete, at its
-            end or where a ``[life]`` limit ended it (the result's ``stopped_by`` and
-            ``revolutions`` say which and when).
+            update, and with ``done == total`` once the run is complete: ``(total,
+            total)`` at its end, ``(stop, stop)`` where a ``[life]`` limit ended it at
+            revolution ``stop`` (fractional).
         state : SimulationState, optional
             Resume from this state (e.g. a checkpoint).
         on_step : callable, optional
@@ -590,7 +590,8 @@ class Simulation:
             if progress is not None and state.stopped_by is None:
                 progress(state.revolution, total)
         if progress is not None:
-            progress(total, total)
+            end = total if state.stopped_by is None else state.revolution
+            progress(end, end)
         initial_solution = final_solution = None
         if pressures:
             final_solution = (
@@ -726,9 +727,11 @@ class Simulation:
         if stop is None:
             depth = end
         else:
+            from jointwear.results import revolution_number
+
             # the run ends inside the interval, at the limit (a fractional revolution)
             at, stopped_by = stop
-            interval = _revolutions(0, at)
+            interval = revolution_number(at)
             depth = self._at_stop(step.depth_at(at))
         if stopped_by is None:
             # the contour must stay inside the wall (a run without a wall limit cannot
@@ -950,8 +953,12 @@ class Simulation:
             None if state.pin_wear_depth is None
             else self.pin_wear_per_revolution(solution, contour)
         )
-        stop = self.life.first_reached(lambda n: rate * n, total, (state.wear_depth, rate))
-        end, stopped_by = (total, None) if stop is None else (_revolutions(0, stop[0]), stop[1])
+        stop = self.life.first_reached(lambda n: rate * n, total, (np.zeros_like(rate), rate))
+        end, stopped_by = total, None
+        if stop is not None:
+            from jointwear.results import revolution_number
+
+            end, stopped_by = revolution_number(stop[0]), stop[1]
         # the saved profiles before the end, and the end (the last mark without a stop)
         for revolution in [t for t in self._profile_targets if t < end] + [end]:
             depth = contour.worn(rate * revolution).wear_depth
@@ -1147,12 +1154,6 @@ def jump_error(
         abs(float(np.dot(radius + after, difference))) / area if area > 0 else 0.0,
     )
     return max(errors)
-
-
-def _revolutions(start: int, into: float) -> int | float:
-    """Revolutions completed ``into`` an interval from ``start``: a whole number stays an
-    ``int``, a stop inside a revolution is a ``float`` [-]."""
-    return start + int(into) if float(into).is_integer() else start + float(into)
 
 
 def _slope(previous: FloatArray | None, offset: FloatArray, interval: int) -> FloatArray | None:

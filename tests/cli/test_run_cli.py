@@ -280,11 +280,13 @@ def test_progress_bar_ends_where_a_limit_ended_the_run(monkeypatch):
     with ProgressBar("revolutions", delay=0.0) as bar:
         bar.enabled = True  # as on a terminal
         bar(1000, 100000000)
-        bar(100000000, 100000000)  # the run is complete
+        bar(10755123.25, 10755123.25)  # the run is complete, ended at a limit
+        assert bar._bar.tasks[0].total == 100000000
         bar.finish(*run_ends(summary))
         assert bar._bar.tasks[0].completed == 10755123.25
         kept = not bar._bar.live.transient
     assert kept
     assert "stopped: wall_thickness" in screen.getvalue()
     assert "10755123/100000000" in screen.getvalue()
+    assert "100000000/100000000" not in screen.getvalue()
     assert run_ends({"revolutions": 1000, "stopped_by": None}) == (1000.0, "revolutions")

@@ -54,7 +54,9 @@ class ProgressBar:
         self._task = None
         self._drawn = -math.inf
 
-    def __call__(self, done: int, total: int) -> None:
+    def __call__(self, done: float, total: float) -> None:
+        """Show ``done`` of ``total``; ``done == total``: the job is complete (the bar keeps
+        the total it began with, so a run a limit ended shows where it ended)."""
         raise_pending()  # the work goes on only if no signal has arrived
         if not self.enabled:
             return
@@ -94,10 +96,14 @@ class ProgressBar:
         """
         if self._bar is None:
             return
-        self._bar.update(self._task, completed=done, description=description, refresh=True)
         total = self._bar.tasks[0].total
         if total is not None and done < total:
+            from rich.progress import TimeElapsedColumn
+
+            # (no time remaining: the time it took, and the bar stays)
+            self._bar.columns = (*self._bar.columns[:-1], TimeElapsedColumn())
             self._bar.live.transient = False
+        self._bar.update(self._task, completed=done, description=description, refresh=True)
 
     def close(self) -> None:
         if self._bar is not None:
