@@ -177,6 +177,38 @@ def test_wear_through_within_the_first_revolution_ends_at_the_wall(
     assert data["life_revolutions"] == pytest.approx(thickness / rate, rel=1e-9)
 
 
+def test_a_wearing_pin_stops_with_the_bushing_on_its_own_path(wearing: Config) -> None:
+    """The pin's wear at the stop is its rate times the fractional life, like the
+    bushing's (both linear in their wear coefficients over the first update)."""
+    pin = wearing.replace(
+        {
+            "contact.nodes": 60,
+            "simulation.steps_per_revolution": 60,
+            "simulation.update_contour": True,
+            "simulation.update_every": 1000,
+        }
+    )
+    worn = pin.replace(
+        {"materials.bushing.wear_coefficient": 1e-6, "materials.pin.wear_coefficient": 1e-6}
+    )
+    data = summary(worn)
+    one = summary(
+        pin.replace(
+            {
+                "simulation.revolutions": 1,
+                "materials.bushing.wear_coefficient": 1e-12,
+                "materials.pin.wear_coefficient": 1e-12,
+            }
+        )
+    )
+    life = data["life_revolutions"]
+    assert data["stopped_by"] == "wall_thickness"
+    assert 0 < life < 1
+    assert 0.0 <= data["min_wall_thickness_m"] <= 1e-12
+    for key in ("peak_wear_depth_m", "pin_peak_wear_depth_m"):
+        assert data[key] == pytest.approx(one[key] * 1e6 * life, rel=1e-9), key
+
+
 LIMITS = {
     "peak_wear_depth": (3e-4, "peak_wear_depth_m"),
     "wear_mass": (1e-4, "wear_mass_kg"),
