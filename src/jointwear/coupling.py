@@ -100,20 +100,6 @@ class LifeLimits:
                 limits.append((key, metric, float(value), sense))
         return cls(tuple(limits), joint_geometry(config))
 
-    def reached(self, wear_depth: FloatArray) -> str | None:
-        """The first limit (in :data:`LIFE_LIMITS` order) a profile reaches, if any.
-
-        Parameters
-        ----------
-        wear_depth : ndarray, shape (N,)
-            Wear-depth profile [m].
-        """
-        values = _limit_metrics(wear_depth, self.joint, self._metrics)
-        for key, metric, limit, sense in self.limits:
-            if sense * (values[metric] - limit) >= 0.0:
-                return key
-        return None
-
     @functools.cached_property
     def _metrics(self) -> frozenset[str]:
         return frozenset(metric for _, metric, _, _ in self.limits)
