@@ -19,6 +19,7 @@ from jointwear.checkpoint import (
     CHECKPOINT_CONFIG,
     CHECKPOINT_STATE,
     Checkpointer,
+    check_state,
     load_checkpoint,
     read_state,
     write_state,
@@ -114,6 +115,37 @@ def test_state_round_trip_keeps_every_field(tmp_path):
         else:
             assert value == other, name
     assert all(isinstance(r, int) for r in back.history_columns["revolution"])
+
+
+@pytest.mark.filterwarnings("ignore::jointwear.errors.WearFeedbackWarning")
+def test_a_state_stopped_inside_a_revolution_round_trips(tmp_path):
+    """A limit ends the run at a fractional revolution; its checkpoint keeps the fraction
+    (revolution, record and last profile), and resuming it gives the same result."""
+    config = load_config(
+        UPDATE_CONFIG,
+        {
+            **SMALL,
+            "simulation.revolutions": 10000,
+            "simulation.update_every": 3,
+            "materials.bushing.wear_coefficient": 1e-9,
+        },
+    )
+    simulation = Simulation(config)
+    state = simulation.initial_state()
+    while state.stopped_by is None:
+        state = simulation.step(state)
+    assert not float(state.revolution).is_integer()
+    path = tmp_path / "stopped.npz"
+    write_state(path, state, "digest")
+    back, _ = read_state(path)
+    check_state(back, config, path)
+    assert back.revolution == state.revolution
+    assert back.history_columns["revolution"][-1] == state.revolution
+    assert back.last_saved == state.revolution
+    assert back.stopped_by == "wall_thickness"
+    resumed = Simulation(config).run(state=back).summary()
+    assert resumed["life_revolutions"] == state.revolution
+    assert resumed["min_wall_thickness_m"] == pytest.approx(0.0, abs=1e-12)
 
 
 def test_truncated_checkpoint_is_a_data_error(tmp_path):

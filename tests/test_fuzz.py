@@ -135,8 +135,9 @@ def test_any_configuration_runs_or_fails_cleanly(overrides):
     if summary["stopped_by"] is None:
         assert summary["revolutions"] == config.simulation.revolutions
     else:  # a [life] limit (e.g. worn through the wall) ends the run early, and says which
-        assert 1 <= summary["revolutions"] <= config.simulation.revolutions
+        assert 0 < summary["revolutions"] <= config.simulation.revolutions
         assert summary["life_revolutions"] == summary["revolutions"]
+    assert summary["min_wall_thickness_m"] >= 0  # a limit ends the run at the wall at most
     assert np.isfinite(result.wear_depth).all()
 
 

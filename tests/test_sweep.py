@@ -316,7 +316,7 @@ def test_failed_cases_are_recorded_not_fatal(tmp_path):
     assert statuses == ["ok", "failed", "ok", "failed"]
     # wear-through ends a case at the wall, with its results
     assert result.records[2]["metrics"]["stopped_by"] == "wall_thickness"
-    assert result.records[2]["metrics"]["life_revolutions"] == 1
+    assert 0 < result.records[2]["metrics"]["life_revolutions"] < 1  # inside the first
     assert "cannot assemble" in result.records[1]["error"]  # invalid combination
     assert all("\n" not in r["error"] for r in result.records)
     with open(tmp_path / "out" / CASES_CSV, newline="", encoding="utf-8") as handle:

@@ -137,7 +137,10 @@ def _state_arrays(state: SimulationState, digest: str) -> dict[str, np.ndarray]:
         elif isinstance(value, Log):
             schema[name] = "profiles"
             rows = value.items()
-            arrays[f"f_{name}__keys"] = np.asarray([r for r, _ in rows], dtype=np.int64)
+            # (whole revolutions, but the fractional one where a limit ended the run)
+            keys = [r for r, _ in rows]
+            whole = all(isinstance(r, int | np.integer) for r in keys)
+            arrays[f"f_{name}__keys"] = np.asarray(keys, dtype=np.int64 if whole else np.float64)
             for i, (_, profile) in enumerate(rows):
                 arrays[f"f_{name}__{i}"] = np.asarray(profile)
         else:  # a state field this module does not know how to store: a bug
@@ -147,6 +150,7 @@ def _state_arrays(state: SimulationState, digest: str) -> dict[str, np.ndarray]:
 
 
 def _state_from_arrays(arrays: dict[str, np.ndarray]) -> SimulationState:
+    from jointwear.results import revolution_number
     from jointwear.simulation import SimulationState
     from jointwear.state import Log
 
@@ -176,7 +180,7 @@ def _state_from_arrays(arrays: dict[str, np.ndarray]) -> SimulationState:
             )
         elif kind == "profiles":
             values[name] = Log.of(
-                (int(key), arrays[f"f_{name}__{i}"].copy())
+                (revolution_number(key), arrays[f"f_{name}__{i}"].copy())
                 for i, key in enumerate(arrays[f"f_{name}__keys"])
             )
         else:

@@ -670,7 +670,7 @@ class WearConfig(_Section):
 
 
 class LifeConfig(_Section):
-    """Wear limits: the run stops at the first revolution where one is reached.
+    """Wear limits: the run stops where the first one is reached (inside a revolution).
 
     ``wall_thickness`` is the least remaining wall; its default 0 stops the run where
     wear goes through the wall.

@@ -5,10 +5,11 @@ built from the config:
 
 * :class:`LifeLimits` — the ``[life]`` limits. A contour update advances the
   wear depth over an interval of revolutions along a known path (linear for a
-  fixed update interval, the corrector's quadratic inside an adaptive jump); the
-  limits are checked at the end of the interval and, if one is reached, the first
-  revolution at which it is reached is found by bisection on that path, so the run
-  stops within one revolution of the limit wherever it falls.
+  fixed update interval and without contour update, the corrector's quadratic inside
+  an adaptive jump); the limits are checked at the end of the interval and, if one is
+  reached, the point where it is reached is found on that path to a fraction of a
+  revolution (closed form for the peak on a linear path, else Brent's method), so the
+  run ends *at* the limit: a wall worn through is exactly 0, never negative.
 * :class:`DynamicsSchedule` — ``simulation.dynamics_update``: when the dynamics are
   solved again on the worn joint. ``"once"``: never (the load of the unworn joint
   throughout). ``K``: every ``K`` contour updates. ``"adaptive"``: when the wear
@@ -99,53 +100,92 @@ class LifeLimits:
                 limits.append((key, metric, float(value), sense))
         return cls(tuple(limits), joint_geometry(config))
 
-    def reached(self, wear_depth: FloatArray) -> str | None:
-        """The first limit (in :data:`LIFE_LIMITS` order) a profile reaches, if any.
-
-        Parameters
-        ----------
-        wear_depth : ndarray, shape (N,)
-            Wear-depth profile [m].
-        """
-        values = _limit_metrics(wear_depth, self.joint, self._metrics)
-        for key, metric, limit, sense in self.limits:
-            if sense * (values[metric] - limit) >= 0.0:
-                return key
-        return None
-
     @functools.cached_property
     def _metrics(self) -> frozenset[str]:
         return frozenset(metric for _, metric, _, _ in self.limits)
 
     def first_reached(
-        self, depth_at: Callable[[int], FloatArray], interval: int
-    ) -> tuple[int, str] | None:
-        """The first revolution of an interval at which a limit is reached.
+        self,
+        depth_at: Callable[[float], FloatArray],
+        interval: float,
+        linear: tuple[FloatArray, FloatArray] | None = None,
+    ) -> tuple[float, str] | None:
+        """Where inside an interval the first limit is reached, to a fraction of a revolution.
+
+        Each limit reached at the end of the interval is followed back along the depth
+        path to where its metric equals the limit: in closed form where the metric is a
+        function of the peak and the path is linear (the first node to reach the limiting
+        depth), else as the root of ``metric(depth_at(n)) - limit`` by Brent's method.
+        The metrics grow monotonically along the path, so each root is the first crossing.
 
         Parameters
         ----------
         depth_at : callable
-            ``depth_at(n)``: the wear depth ``n`` revolutions into the interval [m];
-            the wear grows monotonically with ``n``.
-        interval : int
-            Revolutions of the interval.
+            ``depth_at(n)``: the wear depth ``n`` revolutions into the interval [m], ``n``
+            real in ``[0, interval]``; the wear grows monotonically with ``n``.
+        interval : float
+            Revolutions of the interval [-].
+        linear : tuple of ndarray, optional
+            ``(start, rate)`` when the path is ``start + n * rate`` [m, m per revolution].
 
         Returns
         -------
-        tuple of (int, str) or None
-            Revolutions into the interval and the limit reached there; ``None`` if no
-            limit is reached by the end of the interval.
+        tuple of (float, str) or None
+            Revolutions into the interval (fractional) and the limit reached there (the
+            first in :data:`LIFE_LIMITS` order if several at once); ``None`` if no limit is
+            reached by the end of the interval.
         """
-        if self.reached(depth_at(interval)) is None:
-            return None
-        low, high = 0, interval  # not reached at ``low`` (the state before), reached at ``high``
-        while high - low > 1:
-            middle = (low + high) // 2
-            if self.reached(depth_at(middle)) is None:
-                low = middle
-            else:
-                high = middle
-        return high, str(self.reached(depth_at(high)))
+        end = _limit_metrics(depth_at(interval), self.joint, self._metrics)
+        first: tuple[float, str] | None = None
+        for key, metric, limit, sense in self.limits:
+            if sense * (end[metric] - limit) < 0.0:
+                continue
+            at = self._crossing(metric, limit, sense, depth_at, interval, linear)
+            if first is None or at < first[0]:
+                first = (at, key)
+        return first
+
+    def _crossing(
+        self,
+        metric: str,
+        limit: float,
+        sense: int,
+        depth_at: Callable[[float], FloatArray],
+        interval: float,
+        linear: tuple[FloatArray, FloatArray] | None,
+    ) -> float:
+        """Revolutions into the interval at which ``metric`` reaches ``limit`` (reached at
+        the end) [-]."""
+        joint = self.joint
+
+        def beyond(revolutions: float) -> float:
+            values = _limit_metrics(depth_at(revolutions), joint, frozenset((metric,)))
+            return sense * (values[metric] - limit)
+
+        if beyond(0.0) >= 0.0:
+            return 0.0
+        if linear is not None and metric in _PEAK_AT_LIMIT:
+            # the peak reaches the limiting depth where the first node does
+            start, rate = linear
+            depth = _PEAK_AT_LIMIT[metric](limit, joint)
+            growing = rate > 0.0
+            at = float(np.min((depth - start[growing]) / rate[growing]))
+            return min(max(at, 0.0), interval)
+        from scipy.optimize import brentq  # (only when a limit is reached: a run stops once)
+
+        # (a relative tolerance: a stop early in a long interval keeps its digits)
+        return float(
+            brentq(beyond, 0.0, interval, xtol=1e-300, rtol=4.0 * np.finfo(float).eps,
+                   maxiter=400)
+        )  # fmt: skip
+
+
+#: metric of the peak -> the peak wear depth at which it equals a limit [m]
+_PEAK_AT_LIMIT: dict[str, Callable[[float, JointGeometry], float]] = {
+    "peak_wear_depth": lambda limit, joint: limit,
+    "min_wall_thickness": lambda limit, joint: joint.bushing_thickness - limit,
+    "max_clearance": lambda limit, joint: limit - joint.clearance,
+}
 
 
 #: metrics of a profile that need its peak only, and that need its removed area

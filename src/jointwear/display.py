@@ -37,13 +37,20 @@ def array_summary(values: Any) -> str:
 
 
 def _rows(result: Any) -> list[tuple[str, str]]:
+    from jointwear.results import end_of_run, revolutions_text
+
     summary = result.summary()
     peak = summary["peak_wear_depth_m"]
     scale, unit = depth_unit(peak)
     mass_mg = summary["wear_mass_kg"] * 1e6
     return [
         ("contact model", str(summary["contact_model"])),
-        ("revolutions", f"{summary['revolutions']} ({summary['contour_updates']} contour updates)"),
+        (
+            "revolutions",
+            f"{revolutions_text(summary['revolutions'])} "
+            f"({summary['contour_updates']} contour updates)",
+        ),
+        ("end", end_of_run(summary)),
         ("wear peak", f"{peak / scale:.4g} {unit}"),
         ("wear width", f"{summary['wear_width_deg']:.4g}°"),
         ("wear mass", f"{mass_mg:.4g} mg"),

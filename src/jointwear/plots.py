@@ -28,6 +28,7 @@ from matplotlib.figure import Figure
 
 from jointwear.errors import JointwearError
 from jointwear.io import atomic_path
+from jointwear.results import revolutions_text
 
 __all__ = [
     "FIGURES",
@@ -176,7 +177,7 @@ def _wear_polar(dataset: xr.Dataset, label: str, magnification: float | str) -> 
             closed,
             (original + mag * np.append(profile, profile[0])) * 1e3,
             lw=1.3,
-            label=f"{rev} r",
+            label=f"{revolutions_text(rev)} r",
         )
     ax.set_title(f"{label}: worn contour [mm], wear x{mag:g}", pad=14)
     ax.legend(loc="lower left", fontsize=7, bbox_to_anchor=(-0.1, -0.12), ncol=3)
@@ -190,7 +191,7 @@ def _wear_profiles(dataset: xr.Dataset, label: str) -> Figure:
     ax = fig.subplots()
     scale, unit = depth_unit(float(depth.max()))
     for rev, profile in zip(dataset["revolution"].values, depth, strict=True):
-        ax.plot(theta_deg, profile / scale, label=f"{rev} r")
+        ax.plot(theta_deg, profile / scale, label=f"{revolutions_text(rev)} r")
     ax.set_xlabel("bushing angle θ [deg]")
     ax.set_ylabel(f"wear depth [{unit}]")
     ax.set_xlim(0, 360)

@@ -156,6 +156,58 @@ class ResultContents:
         )
 
 
+#: what the revolution coordinates count (floats: a limit ends a run inside a revolution)
+_REVOLUTIONS_DONE = "revolutions completed (fractional where a life limit ended the run)"
+
+
+def revolution_number(value: float) -> int | float:
+    """A revolution count as read from a result: an ``int`` if whole, else the ``float`` [-].
+
+    Parameters
+    ----------
+    value : float
+        Revolutions [-].
+    """
+    value = float(value)
+    return int(value) if value.is_integer() else value
+
+
+def revolutions_text(value: float) -> str:
+    """A revolution count for people: a whole number in full, a fraction to two decimals,
+    under one revolution to three digits (``352011``, ``352011.63``, ``0.00513``).
+
+    Parameters
+    ----------
+    value : float
+        Revolutions [-].
+    """
+    number = revolution_number(value)
+    if isinstance(number, int):
+        return str(number)
+    return f"{number:.2f}" if abs(number) >= 1.0 else f"{number:.3g}"
+
+
+def end_of_run(summary: dict[str, Any]) -> str:
+    """Why and when a run ended, one line from its :func:`summarize` values.
+
+    ``stopped: wall_thickness reached at 0.00513 revolutions (7.13e-07 h)`` or
+    ``completed: 1000 revolutions (no life limit reached)``.
+
+    Parameters
+    ----------
+    summary : dict
+        A single joint's summary.
+    """
+    if summary.get("stopped_by"):
+        return (
+            f"stopped: {summary['stopped_by']} reached at "
+            f"{revolutions_text(summary['life_revolutions'])} revolutions "
+            f"({summary['life_hours']:.3g} h)"
+        )
+    revolutions = revolutions_text(summary["revolutions"])
+    return f"completed: {revolutions} revolutions (no life limit reached)"
+
+
 def _var(dims, values, units: str, long_name: str) -> ResultVariable:
     return ResultVariable(dims, values, {"units": units, "long_name": long_name})
 
@@ -199,7 +251,7 @@ def build_contents(
     nodes = config.contact.nodes
     theta = 2 * np.pi * np.arange(nodes) / nodes
     saved = state.saved_profiles
-    revolutions = np.array(sorted(saved), dtype=np.int64)
+    revolutions = np.array(sorted(saved), dtype=np.float64)
     profiles = np.array([saved[r] for r in revolutions]).reshape(len(revolutions), nodes)
     steps = cycle.steps
     sliding = simulation.sliding_distance
@@ -238,7 +290,7 @@ def build_contents(
     }
     coords = {
         "theta": _var(("theta",), theta, "rad", "bushing angle"),
-        "revolution": _var(("revolution",), revolutions, "1", "revolutions completed"),
+        "revolution": _var(("revolution",), revolutions, "1", _REVOLUTIONS_DONE),
         "step": _var(("step",), np.arange(steps), "1", "time step of the revolution"),
         "phase": _var(("step",), cycle.phase, "rad", "phase of the cycle at the step start"),
         "time": _var(("step",), cycle.time, "s", "time of the step start"),
@@ -287,9 +339,9 @@ def build_contents(
     )
     coords["update_revolution"] = _var(
         ("update",),
-        np.asarray(history["revolution"], dtype=np.int64),
+        np.asarray(history["revolution"], dtype=np.float64),
         "1",
-        "revolutions completed at the update",
+        f"{_REVOLUTIONS_DONE} at the update",
     )
     attrs = {
         "title": "jointwear wear simulation",
@@ -309,18 +361,27 @@ def build_contents(
     return ResultContents(data_vars, coords, attrs)
 
 
+_STOPPED_BY = {"long_name": "life limit that ended the joint's run ('' if none)"}
+
+
 def combine_joints(datasets: list[xr.Dataset]) -> xr.Dataset:
     """One dataset with a ``joint`` dimension from the datasets of single joints.
 
-    Joints updated a different number of times (adaptive updating) leave the
-    shorter ``update`` series padded with NaN.
+    Joints updated a different number of times (adaptive updating, or a run that a
+    limit ended) leave the shorter ``update`` series padded with NaN; the saved profiles
+    are on the union of the joints' revolutions, NaN where a joint has none
+    (:func:`select_joint` takes each joint's own). ``stopped_by`` is a variable along
+    ``joint``.
     """
     import xarray as xr
 
     names = [str(ds.attrs["joint"]) for ds in datasets]
+    # (each joint's run ends on its own: what ended it is a variable along the joints, an
+    # attribute that differs between them would be dropped)
     per_joint = [
         ds.reset_coords("update_revolution").assign(
-            update_revolution=ds["update_revolution"].astype(float)
+            update_revolution=ds["update_revolution"].astype(float),
+            stopped_by=xr.Variable((), str(ds.attrs.get("stopped_by", "")), _STOPPED_BY),
         )
         for ds in datasets
     ]
@@ -363,12 +424,21 @@ def select_joint(dataset: xr.Dataset, joint: str | None = None) -> xr.Dataset:
 
         raise DataError(f"result: no clearance joint {joint!r}{suggest(joint, names)}")
     single = dataset.sel(joint=joint, drop=True)
+    if "stopped_by" in single.data_vars:
+        single.attrs["stopped_by"] = str(single["stopped_by"].values)
+        single = single.drop_vars("stopped_by")
     updates = int(np.count_nonzero(np.isfinite(single["update_revolution"].values)))
     single = single.isel(update=slice(0, updates))
+    # the profiles are saved at every joint's revolutions (each joint's run ends at its
+    # own, fractional where a limit ended it): rows of NaN only are the other joints'
+    # padding
+    depth = single["wear_depth"]
+    saved = depth.notnull().any([dim for dim in depth.dims if dim != "revolution"]).values
+    if not saved.all():
+        single = single.isel(revolution=np.flatnonzero(saved))
     if "dynamics_revolution" in single:
         solves = int(np.count_nonzero(np.isfinite(single["dynamics_revolution"].values)))
         single = single.isel(dynamics_update=slice(0, solves))
-    single = single.assign_coords(update_revolution=single["update_revolution"].astype(np.int64))
     single.attrs["joint"] = joint
     return single
 
@@ -378,8 +448,9 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
 
     The wear metrics (:data:`~jointwear.tribology.metrics.WEAR_METRICS`) at the end
     of the run, what ran, and the life: ``stopped_by`` (the ``[life]`` limit that
-    ended the run, or ``None``), ``life_revolutions`` and ``life_hours`` (when it
-    was reached, or ``None``) and ``dynamics_updates`` (solves of the dynamics on the
+    ended the run, or ``None``), ``life_revolutions`` and ``life_hours`` (where it
+    was reached, a fraction of a revolution included, or ``None``; then ``revolutions``
+    is the same) and ``dynamics_updates`` (solves of the dynamics on the
     worn joint, the first on the unworn joint not counted).
     """
     out: dict[str, Any] = {
@@ -387,7 +458,7 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
         for m in (*WEAR_METRICS, *PIN_METRICS)
         if m.key is not None and m.name in dataset
     }
-    revolutions = int(dataset["update_revolution"].values[-1])
+    revolutions = revolution_number(dataset["update_revolution"].values[-1])
     stopped_by = str(dataset.attrs.get("stopped_by", "")) or None
     period = float(dataset.attrs.get("period_s", math.nan))
     updates = dataset.sizes.get("dynamics_update", 1)
@@ -514,6 +585,19 @@ def check_result_content(dataset: xr.Dataset, path: str | Path) -> None:
         )
     if "theta" not in dataset.coords or dataset.sizes["theta"] < 3:
         raise DataError(f"{path}: no 'theta' coordinate with at least 3 nodes")
+    # several joints: each joint's own rows (a joint's records end where its run ended; the
+    # rest is NaN padding)
+    singles: tuple[xr.Dataset, ...] = (dataset,)
+    if "joint" in dataset.dims:
+        # (records that cannot be split by joint are checked whole, and refused there)
+        with contextlib.suppress(TypeError, ValueError, KeyError, DataError):
+            singles = tuple(joint_datasets(dataset).values())
+    for single in singles:
+        _check_wear_values(single, path)
+
+
+def _check_wear_values(dataset: xr.Dataset, path: str | Path) -> None:
+    """Refuse wear variables of one joint that are not finite, non-negative metres."""
     for name in WEAR_VARIABLES:
         variable = dataset[name]
         units = variable.attrs.get("units")

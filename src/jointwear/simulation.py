@@ -255,14 +255,15 @@ class WearStep:
         )  # fmt: skip
         return step
 
-    def pin_depth_at(self, revolutions: int) -> FloatArray | None:
-        """The pin's wear depth ``revolutions`` into the interval [m] (explicit scheme)."""
+    def pin_depth_at(self, revolutions: float) -> FloatArray | None:
+        """The pin's wear depth ``revolutions`` (real) into the interval [m] (explicit scheme)."""
         if self.pin_rate is None:
             return self.base.pin_wear_depth
         return self.base.pin_wear_depth + self.pin_rate * revolutions
 
-    def depth_at(self, revolutions: int) -> FloatArray:
-        """Wear depth ``revolutions`` into the interval [m].
+    def depth_at(self, revolutions: float) -> FloatArray:
+        """Wear depth ``revolutions`` (real, ``0 <= revolutions <= interval``) into the
+        interval [m].
 
         The explicit scheme grows linearly; an adaptive jump follows the trapezoid
         corrector's quadratic, whose end value is the corrector's.
@@ -564,7 +565,10 @@ class Simulation:
         Parameters
         ----------
         progress : callable, optional
-            Called as ``progress(revolutions_done, revolutions_total)``.
+            Called as ``progress(revolutions_done, revolutions_total)`` after every contour
+            update, and with ``done == total`` once the run is complete: ``(total,
+            total)`` at its end, ``(stop, stop)`` where a ``[life]`` limit ended it at
+            revolution ``stop`` (fractional).
         state : SimulationState, optional
             Resume from this state (e.g. a checkpoint).
         on_step : callable, optional
@@ -594,10 +598,12 @@ class Simulation:
             state = self.step(state)
             if on_step is not None:
                 on_step(state)
-            if progress is not None:
+            # (a run a limit has ended is complete: said by the last call)
+            if progress is not None and state.stopped_by is None:
                 progress(state.revolution, total)
         if progress is not None:
-            progress(total, total)
+            end = total if state.stopped_by is None else state.revolution
+            progress(end, end)
         initial_solution = final_solution = None
         if pressures:
             final_solution = (
@@ -669,9 +675,11 @@ class Simulation:
         sim = self.config.simulation
         thickness = self.config.joint.bushing_thickness
         base = state
+        solved = None
         if base.wear_rate is None:  # the first update (or a new load): the current rate
             contour = self._contour(base.wear_depth)
             solution = self._solve(contour, base, 0)
+            solved = (solution, contour)
             base = replace(
                 base,
                 wear_rate=self.wear_per_revolution(solution),
@@ -686,6 +694,16 @@ class Simulation:
         wearing = rate0 > 0
         if np.any(wearing):
             room = float(np.min((thickness - base.wear_depth[wearing]) / rate0[wearing]))
+            if room < 1.0:
+                # the wall goes within this revolution: there is no contour to predict
+                # beyond it. The revolution is explicit (linear from the current contour's
+                # rate), and the wall limit ends the run inside it
+                if solved is None:
+                    contour = self._contour(base.wear_depth)
+                    solved = (self.contact(contour, base), contour)
+                solution, contour = solved
+                rate = self.wear_per_revolution(solution)
+                return WearStep._explicit(base, 1, rate, solution, contour, None)
             interval = max(1, min(interval, math.floor(room)))
         if self.schedule.setting == "adaptive" and not self._given_cycle:
             # a jump ends where the dynamics are due again, so that they see the wear
@@ -714,18 +732,23 @@ class Simulation:
         """The state after a contour update, cut short where a ``[life]`` limit is reached."""
         base, interval = step.base, step.interval
         end = step.depth_at(interval)
+        adaptive = step.end_rate is not None
         # (the end of the interval is the limits' first question, and usually the answer)
         stop = self.life.first_reached(
             lambda revolutions: end if revolutions == interval else step.depth_at(revolutions),
             interval,
+            None if adaptive else (base.wear_depth, step.rate),
         )
         stopped_by = None
         if stop is None:
             depth = end
         else:
-            interval, stopped_by = stop
-            depth = step.depth_at(interval)
-        adaptive = step.end_rate is not None
+            from jointwear.results import revolution_number
+
+            # the run ends inside the interval, at the limit (a fractional revolution)
+            at, stopped_by = stop
+            interval = revolution_number(at)
+            depth = self._at_stop(step.depth_at(at))
         if stopped_by is None:
             # the contour must stay inside the wall (a run without a wall limit cannot
             # get here with wear beyond it: the wall is always a limit); a fixed step's
@@ -762,6 +785,11 @@ class Simulation:
             pin_wear_rate=step.pin_rate,
             **self._warm_start(step.solution, step.contour, base.warm_offset, interval),
         )
+
+    def _at_stop(self, depth: FloatArray) -> FloatArray:
+        """The wear depth where a limit ends the run [m]: never deeper than the wall (the
+        stop is found to rounding, and wear-through leaves a wall of exactly 0)."""
+        return np.minimum(depth, self.config.joint.bushing_thickness)
 
     def _warm_start(
         self,
@@ -843,7 +871,7 @@ class Simulation:
                 "separation",
                 f"dynamics: the pin separates from the bushing ({int(row['impacts'])} impacts, "
                 f"{row['free_flight_fraction']:.3g} of the cycle in free flight at revolution "
-                f"{state.revolution}); the wear follows the contact-impact load",
+                f"{state.revolution:.10g}); the wear follows the contact-impact load",
             )
         return replace(state, dynamics_updates=state.dynamics_updates.append(row))
 
@@ -873,7 +901,7 @@ class Simulation:
             self._warn_once(
                 "clearance",
                 f"simulation: the wear ({peak * 1e3:.3g} mm) has grown past the clearance "
-                f"({clearance * 1e3:.3g} mm) by revolution {revolution}, but the massless-"
+                f"({clearance * 1e3:.3g} mm) by revolution {revolution:.10g}, but the massless-"
                 f"link load assumes the pin stays on the wall; set dynamics.model = "
                 f"'contact-impact' and simulation.dynamics_update = 'adaptive' to let the "
                 f"worn joint's dynamics feed back",
@@ -941,17 +969,24 @@ class Simulation:
             None if state.pin_wear_depth is None
             else self.pin_wear_per_revolution(solution, contour)
         )
-        stop = self.life.first_reached(lambda n: rate * n, total)
-        end, stopped_by = (total, None) if stop is None else stop
+        stop = self.life.first_reached(lambda n: rate * n, total, (np.zeros_like(rate), rate))
+        end, stopped_by = total, None
+        if stop is not None:
+            from jointwear.results import revolution_number
+
+            end, stopped_by = revolution_number(stop[0]), stop[1]
         # the saved profiles before the end, and the end (the last mark without a stop)
         for revolution in [t for t in self._profile_targets if t < end] + [end]:
+            depth = contour.worn(rate * revolution).wear_depth
+            if stopped_by is not None and revolution == end:
+                depth = self._at_stop(depth)
             state = self._record(
                 state,
                 solution,
                 revolution=revolution,
                 wear_rate=rate,
                 interval=revolution,
-                wear_depth=contour.worn(rate * revolution).wear_depth,
+                wear_depth=depth,
                 stopped_by=stopped_by if revolution == end else None,
                 pin_wear_depth=None if pin_rate is None else pin_rate * revolution,
                 pin_wear_rate=pin_rate,
@@ -1000,7 +1035,7 @@ class Simulation:
             None if pin_depth is None else pin_metrics(pin_depth, self.config),
         )
         last = profiles.last
-        last_saved = 0 if last is None else int(last[0])
+        last_saved = 0 if last is None else last[0]
         targets = self._profile_targets
         # a target in (last_saved, revolution]
         due = bisect.bisect_right(targets, last_saved)

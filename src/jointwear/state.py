@@ -148,20 +148,22 @@ class SimulationState:
 
     Attributes
     ----------
-    revolution : int
-        Revolutions (cycles) completed.
+    revolution : int or float
+        Revolutions (cycles) completed: whole until a ``[life]`` limit ends the run, and
+        then where the limit was reached, a fraction of a revolution included.
     wear_depth : ndarray, shape (N,)
         Accumulated radial wear depth [m] (kept as depth, not radius, so small
         depths carry full precision).
     wear_rate : ndarray, shape (N,) or None
         Wear depth per revolution on the current contour [m].
-    interval : int
-        Revolutions covered by the last update.
+    interval : int or float
+        Revolutions covered by the last update (fractional where a limit ended it).
     history : Log of dict
         One row per contour update: ``revolution``, the wear metrics
         (:data:`~jointwear.tribology.metrics.WEAR_METRICS`) and ``contact_iterations``.
-    profiles : Log of (int, ndarray)
-        Saved wear-depth profiles ``(revolution, depth [m])``, by increasing revolution.
+    profiles : Log of (int or float, ndarray)
+        Saved wear-depth profiles ``(revolution, depth [m])``, by increasing revolution
+        (the last one at the fractional revolution of a stop).
     warm_offset : ndarray or None
         Pin displacement along each load line at the last solve [m] (warm start).
     window : int or None
@@ -189,10 +191,10 @@ class SimulationState:
         The pin's wear per revolution on the current contours [m].
     """
 
-    revolution: int
+    revolution: int | float
     wear_depth: FloatArray
     wear_rate: FloatArray | None = None
-    interval: int = 1
+    interval: int | float = 1
     history: Log = field(default_factory=Log)
     profiles: Log = field(default_factory=Log)
     warm_offset: FloatArray | None = None
@@ -244,15 +246,15 @@ class SimulationState:
         return self.history.columns()
 
     @property
-    def saved_profiles(self) -> dict[int, FloatArray]:
+    def saved_profiles(self) -> dict[int | float, FloatArray]:
         """Saved wear-depth profiles by revolution [m]."""
         return dict(self.profiles.items())
 
     @property
-    def last_saved(self) -> int:
+    def last_saved(self) -> int | float:
         """Revolution of the last saved profile (0 if none)."""
         last = self.profiles.last
-        return 0 if last is None else int(last[0])
+        return 0 if last is None else last[0]
 
 
 #: the fields that may hold an array (made read-only, copied if given writeable)

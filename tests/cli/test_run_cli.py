@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import json
 import tomllib
+from pathlib import Path
 
+import numpy as np
 import pytest
 
 from jointwear.cli import main
 from jointwear.config import config_from_dict
 
+REPO = Path(__file__).resolve().parents[2]
 FAST = ["--set", "contact.nodes=120", "--set", "simulation.steps_per_revolution=90"]
 REQUIRED = {
     "peak_wear_depth_m",
@@ -125,11 +128,83 @@ def test_wear_through_ends_the_run_with_its_results(paper_config_path, tmp_path,
     data = json.loads(captured.out)
     assert data["stopped_by"] == "wall_thickness"
     assert 0 < data["life_revolutions"] == data["revolutions"] < 10000
-    assert data["min_wall_thickness_m"] <= 0
+    assert data["min_wall_thickness_m"] == pytest.approx(0.0, abs=1e-12)
+    assert data["min_wall_thickness_m"] >= 0
     assert data["life_hours"] == pytest.approx(data["revolutions"] * 0.5 / 3600)
     summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
-    assert summary["life_revolutions"] == data["life_revolutions"]
+    for key in ("revolutions", "life_revolutions", "life_hours", "stopped_by"):
+        assert summary[key] == data[key]
     assert (out / "result.nc").exists()
+
+
+def test_run_says_why_and_when_it_ended(paper_config_path, capsys) -> None:
+    stopped = ok_cli(
+        ["run", str(paper_config_path), *FAST, "--set", "materials.bushing.wear_coefficient=1e-3"],
+        capsys,
+    ).out
+    data = json.loads(
+        ok_cli(
+            [
+                "run",
+                str(paper_config_path),
+                *FAST,
+                "--set",
+                "materials.bushing.wear_coefficient=1e-3",
+                "--json",
+            ],
+            capsys,
+        ).out
+    )
+    life, hours = data["life_revolutions"], data["life_hours"]
+    assert f"stopped: wall_thickness reached at {life:.3g} revolutions ({hours:.3g} h)" in stopped
+    completed = ok_cli(["run", str(paper_config_path), *FAST], capsys).out
+    assert "completed: 1 revolutions (no life limit reached)" in completed
+
+
+def test_joints_that_end_apart_are_written_drawn_and_read_back(tmp_path, capsys) -> None:
+    """Each clearance joint of a four-bar ends on its own, one at a limit: each keeps its
+    own profiles and its own end (the other joints' ends are not NaN rows of its own)."""
+    out = tmp_path / "run"
+    captured = ok_cli(
+        [
+            "run",
+            str(REPO / "examples" / "four_bar.toml"),
+            *FAST,
+            "--set",
+            "contact.model=asymmetric-winkler",
+            "--set",
+            "simulation.revolutions=150",
+            "--set",
+            "simulation.update_contour=true",
+            "--set",
+            "simulation.update_every=3",
+            "--set",
+            "materials.bushing.wear_coefficient=2e-10",
+            "--set",
+            "life.peak_wear_depth=0.05 mm",
+            "--out",
+            str(out),
+        ],
+        capsys,
+    )
+    from jointwear.results import joint_datasets, read_result
+
+    joints = json.loads((out / "summary.json").read_text(encoding="utf-8"))["joints"]
+    stopped = joints.pop("crank-coupler")
+    assert stopped["stopped_by"] == "peak_wear_depth"
+    assert 0 < stopped["life_revolutions"] == stopped["revolutions"] < 150
+    assert "crank-coupler: stopped: peak_wear_depth reached at" in captured.out
+    for joint, entry in joints.items():
+        assert entry["stopped_by"] is None
+        assert entry["revolutions"] == 150
+        assert f"{joint}: completed: 150 revolutions" in captured.out
+    for joint, single in joint_datasets(read_result(out / "result.nc")).items():
+        profiles = single["wear_depth"].values
+        assert np.isfinite(profiles).all()
+        end = stopped["revolutions"] if joint == "crank-coupler" else 150
+        assert single["revolution"].values[-1] == end
+        assert single["update_revolution"].values[-1] == end
+        assert (out / "plots" / joint / "wear_polar.png").exists()
 
 
 def test_plot_of_a_broken_file(tmp_path, capsys) -> None:
@@ -188,3 +263,30 @@ def test_progress_bar_on_a_terminal_runs_no_thread():
         assert bar._bar is not None
         bar(5, 5)
     assert bar._bar is None
+
+
+def test_progress_bar_ends_where_a_limit_ended_the_run(monkeypatch):
+    """The bar stays on screen at the stop with the limit, not at total/total."""
+    import io
+
+    from rich.console import Console
+
+    import jointwear.cli.run_cmd as run_cmd
+    from jointwear.cli.run_cmd import ProgressBar, run_ends
+
+    screen = io.StringIO()
+    monkeypatch.setattr(run_cmd, "err_console", Console(file=screen, force_terminal=True))
+    summary = {"revolutions": 10755123.25, "stopped_by": "wall_thickness"}
+    with ProgressBar("revolutions", delay=0.0) as bar:
+        bar.enabled = True  # as on a terminal
+        bar(1000, 100000000)
+        bar(10755123.25, 10755123.25)  # the run is complete, ended at a limit
+        assert bar._bar.tasks[0].total == 100000000
+        bar.finish(*run_ends(summary))
+        assert bar._bar.tasks[0].completed == 10755123.25
+        kept = not bar._bar.live.transient
+    assert kept
+    assert "stopped: wall_thickness" in screen.getvalue()
+    assert "10755123/100000000" in screen.getvalue()
+    assert "100000000/100000000" not in screen.getvalue()
+    assert run_ends({"revolutions": 1000, "stopped_by": None}) == (1000.0, "revolutions")

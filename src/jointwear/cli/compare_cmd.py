@@ -80,9 +80,14 @@ def parse_align(text: str) -> str | float:
     return to_angle(text, "--align")
 
 
-def simulated_profile(dataset: Any, path: Path, revolution: int | None) -> tuple[np.ndarray, int]:
-    """The wear profile of a saved revolution (default the last) [m] and its revolution."""
-    revolutions = [int(r) for r in dataset["revolution"].values]
+def simulated_profile(
+    dataset: Any, path: Path, revolution: int | None
+) -> tuple[np.ndarray, int | float]:
+    """The wear profile of a saved revolution (default the last) [m] and its revolution
+    (fractional for the last profile of a run a life limit ended)."""
+    from jointwear.results import revolution_number
+
+    revolutions = [revolution_number(r) for r in dataset["revolution"].values]
     if revolution is None:
         index = len(revolutions) - 1
     elif revolution in revolutions:

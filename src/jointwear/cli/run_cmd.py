@@ -54,7 +54,9 @@ class ProgressBar:
         self._task = None
         self._drawn = -math.inf
 
-    def __call__(self, done: int, total: int) -> None:
+    def __call__(self, done: float, total: float) -> None:
+        """Show ``done`` of ``total``; ``done == total``: the job is complete (the bar keeps
+        the total it began with, so a run a limit ended shows where it ended)."""
         raise_pending()  # the work goes on only if no signal has arrived
         if not self.enabled:
             return
@@ -80,6 +82,28 @@ class ProgressBar:
         self._bar.update(self._task, completed=done, refresh=due)
         if due:
             self._drawn = now
+
+    def finish(self, done: float, description: str) -> None:
+        """Show where the job ended and why; a job that ended before its total (a life
+        limit) stays on screen, at the revolution it ended, with ``description``.
+
+        Parameters
+        ----------
+        done : float
+            Where the job ended [-].
+        description : str
+            Why, e.g. ``"stopped: wall_thickness"``.
+        """
+        if self._bar is None:
+            return
+        total = self._bar.tasks[0].total
+        if total is not None and done < total:
+            from rich.progress import TimeElapsedColumn
+
+            # (no time remaining: the time it took, and the bar stays)
+            self._bar.columns = (*self._bar.columns[:-1], TimeElapsedColumn())
+            self._bar.live.transient = False
+        self._bar.update(self._task, completed=done, description=description, refresh=True)
 
     def close(self) -> None:
         if self._bar is not None:
@@ -138,7 +162,30 @@ def add_checks(summary: dict, result) -> None:
         entry["checks"] = engineering_checks(result.joint_data(joint), result.config)
 
 
+def run_ends(summary: dict) -> tuple[float, str]:
+    """Where a run ended (revolutions; the farthest joint's of several) and a short reason
+    for the progress bar."""
+    joints = list(summary.get("joints", {}).values()) or [summary]
+    done = max(float(joint["revolutions"]) for joint in joints)
+    limits = sorted({str(joint["stopped_by"]) for joint in joints if joint["stopped_by"]})
+    if limits and all(joint["stopped_by"] for joint in joints):
+        return done, f"stopped: {', '.join(limits)}"
+    return done, "revolutions"
+
+
+def end_lines(summary: dict) -> list[str]:
+    """Why and when the run (each joint's, of several) ended, one line each."""
+    from jointwear.results import end_of_run
+
+    joints = summary.get("joints")
+    if not joints:
+        return [end_of_run(summary)]
+    return [f"{joint}: {end_of_run(entry)}" for joint, entry in joints.items()]
+
+
 def summary_table(summary: dict, title: str) -> Table:
+    from jointwear.results import revolutions_text
+
     table = Table(title=title)
     table.add_column("metric")
     table.add_column("value", justify="right")
@@ -147,7 +194,7 @@ def summary_table(summary: dict, title: str) -> Table:
     table.add_row("wear mass", f"{summary['wear_mass_kg'] * 1e3:.6g} g")
     table.add_row("wear volume", f"{summary['wear_volume_m3'] * 1e9:.6g} mm³")
     table.add_row("min. wall left", f"{summary['min_wall_thickness_m'] * 1e3:.6g} mm")
-    table.add_row("revolutions", f"{summary['revolutions']}")
+    table.add_row("revolutions", revolutions_text(summary["revolutions"]))
     table.add_row("contour updates", f"{summary['contour_updates']}")
     table.add_row("run time", f"{summary['runtime_s']:.3g} s")
     pv = summary.get("checks", {}).get("pv")
@@ -260,6 +307,8 @@ def run(
         with ProgressBar("revolutions", quiet=quiet) as bar:
             progress = deadline.watching(bar)
             result = simulation.run(progress=progress, state=state, on_step=checkpointer)
+            summary = result.summary()
+            bar.finish(*run_ends(summary))
     except TimeLimitError:
         raise  # a checkpoint stays for --resume
     except JointwearError as exc:
@@ -279,12 +328,13 @@ def run(
         write_outputs(result, out, plots=plots)
     if checkpointer is not None:
         checkpointer.clear()
-    summary = result.summary()
     add_checks(summary, result)
     if json_:
         emit_json(summary)
     else:
         console.print(summary_table(summary, f"{name}: {summary['contact_model']}"))
+        for line in end_lines(summary):
+            console.print(line, highlight=False)
         if out is not None:
             console.print(f"results in {out}/")
 
