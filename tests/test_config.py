@@ -119,6 +119,29 @@ def test_overrides_apply_with_units(paper_config_path):
     assert replaced.joint.clearance == cfg.joint.clearance
 
 
+def test_replace_takes_a_mapping_strings_or_one_string(paper_config):
+    wider = 2e-4
+    for overrides in (
+        {"joint.clearance": "0.2 mm"},
+        ["joint.clearance=0.2 mm"],
+        ("joint.clearance=0.2 mm" for _ in range(1)),
+        "joint.clearance=0.2 mm",
+    ):
+        assert paper_config.replace(overrides).joint.clearance == pytest.approx(wider, rel=1e-15)
+    # one string is one override, not a sequence of one-character ones
+    with pytest.raises(ConfigError, match=r"^joint\.clearance: .*'abc'"):
+        paper_config.replace("joint.clearance=abc")
+
+
+@pytest.mark.parametrize(
+    "overrides", [5, None, b"joint.clearance=1e-4", [("joint.clearance", 1e-4)]]
+)
+def test_replace_refuses_other_overrides_with_a_config_error(paper_config, overrides):
+    with pytest.raises(ConfigError, match="^overrides: expected") as info:
+        paper_config.replace(overrides)
+    assert "\n" not in str(info.value)
+
+
 def test_defaults_from_the_parameter_set():
     cfg = load_config()
     assert cfg.parameter_set == "nlcp-paper"

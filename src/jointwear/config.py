@@ -75,6 +75,7 @@ __all__ = [
     "is_section",
     "key_field",
     "load_config",
+    "normalized_overrides",
     "parse_override",
     "read_toml",
 ]
@@ -822,8 +823,20 @@ class Config(_Section):
                 values[name] = f"{value!r} {DIMENSIONS[kind]}"  # reads back exactly
         return _dump_toml(data)
 
-    def replace(self, overrides: Mapping[str, Any]) -> Config:
-        """Return a new config with dotted-key overrides applied and validated."""
+    def replace(self, overrides: Mapping[str, Any] | Iterable[str] | str) -> Config:
+        """Return a new config with dotted-key overrides applied and validated.
+
+        Parameters
+        ----------
+        overrides : mapping, iterable of str, or str
+            ``{"joint.clearance": "0.2 mm"}``, ``["joint.clearance=0.2 mm"]`` or
+            ``"joint.clearance=0.2 mm"``; quantities as SI numbers or strings with units.
+
+        Raises
+        ------
+        ConfigError
+            For overrides of another form, an unknown key or an invalid value.
+        """
         # the raw fields, not to_dict(): derived defaults (rod inertia from the rod
         # mass, spring area from the axial length) must follow the overrides
         data = _without_none(self.model_dump(mode="json"))
@@ -1004,14 +1017,45 @@ def parse_override(text: str) -> tuple[str, Any]:
     return key, value
 
 
-def apply_overrides(data: dict[str, Any], overrides: Mapping[str, Any] | Iterable[str]) -> None:
-    """Apply dotted-key overrides in place (a mapping, or ``key=value`` strings)."""
-    items = (
-        overrides.items()
-        if isinstance(overrides, Mapping)
-        else (parse_override(o) for o in overrides)
+def normalized_overrides(
+    overrides: Mapping[str, Any] | Iterable[str] | str,
+) -> list[tuple[str, Any]]:
+    """The ``(dotted key, value)`` pairs of overrides given in any of their forms.
+
+    Parameters
+    ----------
+    overrides : mapping, iterable of str, or str
+        A dotted-key mapping, ``"section.key=VALUE"`` strings (``--set``), or one such string.
+
+    Raises
+    ------
+    ConfigError
+        For anything else, or a string that is not ``section.key=VALUE``.
+    """
+    if isinstance(overrides, Mapping):
+        return list(overrides.items())
+    if isinstance(overrides, str):
+        return [parse_override(overrides)]
+    if isinstance(overrides, Iterable) and not isinstance(overrides, bytes | bytearray):
+        items = list(overrides)
+        for item in items:
+            if not isinstance(item, str):
+                raise ConfigError(
+                    f"overrides: expected 'section.key=VALUE' strings, got {shown(item)}"
+                )
+        return [parse_override(item) for item in items]
+    raise ConfigError(
+        "overrides: expected a mapping of dotted keys or 'section.key=VALUE' strings, "
+        f"got {type(overrides).__name__}"
     )
-    for dotted, value in items:
+
+
+def apply_overrides(
+    data: dict[str, Any], overrides: Mapping[str, Any] | Iterable[str] | str
+) -> None:
+    """Apply dotted-key overrides in place (a mapping, ``key=value`` strings or one such
+    string, :func:`normalized_overrides`)."""
+    for dotted, value in normalized_overrides(overrides):
         if not isinstance(dotted, str) or not dotted:
             raise ConfigError(f"{dotted!r}: a config key is a dotted name, e.g. 'joint.clearance'")
         parts = dotted.split(".")
@@ -1270,7 +1314,7 @@ def _depth(value: Any) -> int:
 
 
 def load_config(
-    path: str | Path | None = None, overrides: Iterable[str] | Mapping[str, Any] = ()
+    path: str | Path | None = None, overrides: Iterable[str] | Mapping[str, Any] | str = ()
 ) -> Config:
     """Read a TOML config, apply overrides, validate.
 
@@ -1278,8 +1322,9 @@ def load_config(
     ----------
     path : path-like, optional
         TOML file; ``None`` uses the parameter set's defaults only.
-    overrides : iterable of str or mapping
-        ``"section.key=VALUE"`` strings (CLI ``--set``) or a dotted-key mapping.
+    overrides : iterable of str, str or mapping
+        ``"section.key=VALUE"`` strings (CLI ``--set``), one such string, or a
+        dotted-key mapping.
     """
     data: dict[str, Any] = {} if path is None else read_toml(path)
     apply_overrides(data, overrides)
