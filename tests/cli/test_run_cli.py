@@ -84,6 +84,18 @@ def test_run_out_writes_everything(paper_config_path, tmp_path, capsys) -> None:
     assert config.contact.nodes == 120
 
 
+def test_summary_json_is_the_object_run_json_prints(paper_config_path, tmp_path, capsys) -> None:
+    # the engineering checks are part of the object whether or not a limit is known
+    out = tmp_path / "run"
+    args = ["run", str(paper_config_path), *FAST, "--out", str(out), "--no-plots", "--json"]
+    printed = json.loads(ok_cli(args, capsys).out)
+    written = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    assert "checks" in printed
+    assert list(written) == list(printed)
+    for key in printed:
+        assert written[key] == printed[key], key
+
+
 def test_plot_redraws_from_a_saved_result(paper_config_path, tmp_path, capsys) -> None:
     out = tmp_path / "run"
     ok_cli(["run", str(paper_config_path), *FAST, "--out", str(out), "--no-plots", "-q"], capsys)

@@ -136,18 +136,26 @@ def plot_joints(dataset, directory: Path, **options) -> list[Path]:
 RUN_FILES = ("result.nc", "metrics.csv", "config.toml", "summary.json")
 
 
-def write_outputs(result, out: Path, plots: bool = True) -> None:
-    """Write a run's files into ``out``: all or nothing (staged, then published at once)."""
+def write_outputs(result, out: Path, summary: dict, plots: bool = True) -> None:
+    """Write a run's files into ``out``: all or nothing (staged, then published at once).
+
+    ``summary`` is the run's summary with its checks (:func:`add_checks`), written as
+    ``summary.json`` as it is: the object ``run --json`` prints.
+    """
     from jointwear.io import staged_output, write_json
     from jointwear.results import write_metrics_csv
 
+    # the result file already holds the config as TOML text: written, not made again
+    config_text = result.dataset.attrs.get("config")
+    if not isinstance(config_text, str):
+        config_text = result.config.to_toml()
     with staged_output(out, files=RUN_FILES, dirs=("plots",)) as staging:
         result.to_netcdf(staging / "result.nc")
         write_metrics_csv(result.dataset, staging / "metrics.csv")
         (staging / "config.toml").write_text(
-            "# fully resolved configuration, SI units\n" + result.config.to_toml(), encoding="utf-8"
+            "# fully resolved configuration, SI units\n" + config_text, encoding="utf-8"
         )
-        write_json(staging / "summary.json", result.summary())
+        write_json(staging / "summary.json", summary)
         if plots:
             plot_joints(result.dataset, staging / "plots")
 
@@ -324,11 +332,12 @@ def run(
         if checkpointer is None or not checkpointer.config_path.exists():
             raise
         raise with_resume(exc, f"jointwear run --resume {out}") from None
+    # one summary, made once: the object `--json` prints is the one summary.json holds
+    add_checks(summary, result)
     if out is not None:
-        write_outputs(result, out, plots=plots)
+        write_outputs(result, out, summary, plots=plots)
     if checkpointer is not None:
         checkpointer.clear()
-    add_checks(summary, result)
     if json_:
         emit_json(summary)
     else:
