@@ -2,7 +2,7 @@
 
 A joint's life — revolutions until the first ``[life]`` limit — depends on inputs
 that scatter: wear coefficients differ by +-40-60 % between nominally equal tests
-(Pödra & Andersson 1999), clearances by their tolerance, loads by the duty. A life
+(Pödra & Andersson 1999 [1]_), clearances by their tolerance, loads by the duty. A life
 is therefore a distribution. :func:`run_life` draws ``cases`` samples of the inputs
 (the sweep's ``[sample]`` distributions), runs each case to its first limit (local
 processes or a Dask cluster, as :func:`~jointwear.sweep.run_sweep`), and

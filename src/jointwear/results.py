@@ -34,7 +34,7 @@ if TYPE_CHECKING:
 
     from jointwear.config import Config
     from jointwear.contact import ContactSolution
-    from jointwear.simulation import Simulation, SimulationState
+    from jointwear.simulation import Simulation, SimulationState, WearResult
 
 __all__ = [
     "WEAR_VARIABLES",
@@ -47,6 +47,7 @@ __all__ = [
     "config_of",
     "joint_datasets",
     "read_result",
+    "read_wear_result",
     "select_joint",
     "summarize",
     "write_metrics_csv",
@@ -552,6 +553,38 @@ def read_result(path: str | Path) -> xr.Dataset:
             raise DataError(f"{path}: not a jointwear result (no {required!r} variable)")
     check_result_content(dataset, path)
     return dataset
+
+
+def read_wear_result(path: str | Path) -> WearResult:
+    """Read a ``result.nc`` written by ``jointwear run --out`` back into a result.
+
+    Parameters
+    ----------
+    path : path-like
+        The result file.
+
+    Returns
+    -------
+    WearResult
+        Its dataset, the configuration stored in it and the run's wall-clock time
+        (``summary()`` is the summary the run wrote, without the engineering checks).
+
+    Raises
+    ------
+    DataError
+        If the file is missing, unreadable, not a jointwear result or without a
+        readable stored config.
+    """
+    from jointwear.errors import ConfigError
+    from jointwear.simulation import WearResult
+
+    dataset = read_result(path)
+    try:
+        config = config_of(dataset)
+    except (ConfigError, DataError) as exc:
+        raise DataError(f"{path}: {exc}") from None
+    runtime = float(dataset.attrs.get("runtime_s", math.nan))
+    return WearResult(config=config, dataset=dataset, runtime=runtime)
 
 
 #: variables of a result whose values are wear depths: present, in metres, finite, >= 0
