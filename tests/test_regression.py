@@ -2,7 +2,8 @@
 
 ``data/paper_configs_golden.json`` was written by the slider-crank-only code (the
 last version before mechanism types and the load cycle); the restructuring must
-change no result. Long runs are cut to 300 revolutions to keep the test quick.
+change no result. Long runs are cut to 300 revolutions to keep the test quick. They are
+compared to 1e-9 relative: a change that only reorders a sum passes, a changed result does not.
 """
 
 from __future__ import annotations
@@ -40,7 +41,7 @@ def _run(name: str, overrides: list[str]) -> dict:
 def test_paper_config_unchanged(name: str) -> None:
     summary = _run(name, [])
     for key, expected in GOLDEN[name].items():
-        assert summary[key] == pytest.approx(expected, rel=1e-12, abs=0), key
+        assert summary[key] == pytest.approx(expected, rel=1e-9, abs=0), key
 
 
 @pytest.mark.filterwarnings("ignore::jointwear.errors.ContactLossWarning")

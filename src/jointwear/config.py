@@ -22,6 +22,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+import tomli_w
 from pydantic import (
     BaseModel,
     BeforeValidator,
@@ -821,7 +822,7 @@ class Config(_Section):
             value = values[name]
             if isinstance(value, float) and abs(value) > limit:
                 values[name] = f"{value!r} {DIMENSIONS[kind]}"  # reads back exactly
-        return _dump_toml(data)
+        return tomli_w.dumps(_toml_ready(data))
 
     def replace(self, overrides: Mapping[str, Any] | Iterable[str] | str) -> Config:
         """Return a new config with dotted-key overrides applied and validated.
@@ -1343,63 +1344,22 @@ def load_config(
     return config_from_dict(data)
 
 
-#: characters a TOML basic string must escape, besides the other control characters
-_TOML_ESCAPES = {
-    '"': '\\"',
-    "\\": "\\\\",
-    "\b": "\\b",
-    "\t": "\\t",
-    "\n": "\\n",
-    "\f": "\\f",
-    "\r": "\\r",
-}
+def _toml_ready(data: Mapping[str, Any]) -> dict[str, Any]:
+    """``data`` without its ``None`` values (TOML has no null), every string writable.
 
-
-def _toml_string(text: str) -> str:
-    """``text`` as a TOML basic string: quotes, backslashes and control characters escaped."""
-    out = []
-    for char in text:
-        if char in _TOML_ESCAPES:
-            out.append(_TOML_ESCAPES[char])
-        elif ord(char) < 0x20 or ord(char) == 0x7F:
-            out.append(f"\\u{ord(char):04x}")
-        elif 0xD800 <= ord(char) <= 0xDFFF:  # a lone surrogate has no UTF-8 form
-            raise ConfigError(f"{shown(text)}: not a valid Unicode string")
-        else:
-            out.append(char)
-    return '"' + "".join(out) + '"'
-
-
-def _toml_key(key: str) -> str:
-    bare = key and all(c.isascii() and (c.isalnum() or c in "_-") for c in key)
-    return key if bare else _toml_string(key)
-
-
-def _toml_value(value: Any) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, str):
-        return _toml_string(value)
-    if isinstance(value, float):
-        return repr(value)
-    if isinstance(value, list):
-        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
-    return str(value)
-
-
-def _dump_toml(data: Mapping[str, Any], prefix: str = "") -> str:
-    lines: list[str] = []
-    tables: list[tuple[str, Mapping[str, Any]]] = []
+    Raises
+    ------
+    ConfigError
+        If a string holds a lone surrogate: it has no UTF-8 form, so no file can hold it.
+    """
+    out: dict[str, Any] = {}
     for key, value in data.items():
+        if value is None:
+            continue
         if isinstance(value, Mapping):
-            tables.append((f"{prefix}{_toml_key(key)}", value))
-        elif value is not None:
-            lines.append(f"{_toml_key(key)} = {_toml_value(value)}")
-    out = "\n".join(lines)
-    for name, table in tables:
-        body = _dump_toml(table, prefix=f"{name}.")
-        header = (
-            f"\n\n[{name}]\n" if any(not isinstance(v, Mapping) for v in table.values()) else "\n"
-        )
-        out += header + body if body else ""
-    return out.strip() + "\n" if not prefix else out
+            value = _toml_ready(value)
+        for text in [key, *(value if isinstance(value, list) else [value])]:
+            if isinstance(text, str) and any(0xD800 <= ord(c) <= 0xDFFF for c in text):
+                raise ConfigError(f"{shown(text)}: not a valid Unicode string")
+        out[key] = value
+    return out

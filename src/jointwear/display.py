@@ -12,28 +12,7 @@ from typing import Any
 
 from jointwear.plots import depth_unit
 
-__all__ = ["array_summary", "wear_result_html", "wear_result_repr"]
-
-
-def array_summary(values: Any) -> str:
-    """``shape`` of an array, or ``None``, for compact reprs.
-
-    Parameters
-    ----------
-    values : array_like or None
-        Any array.
-
-    Returns
-    -------
-    str
-        E.g. ``"array(4, 360)"``.
-    """
-    if values is None:
-        return "None"
-    shape = getattr(values, "shape", None)
-    if shape is None:
-        return type(values).__name__
-    return f"array({', '.join(str(n) for n in shape)})" if shape else "array()"
+__all__ = ["wear_result_html", "wear_result_repr"]
 
 
 def _rows(result: Any) -> list[tuple[str, str]]:

@@ -41,7 +41,6 @@ __all__ = [
     "ResultContents",
     "ResultVariable",
     "build_contents",
-    "build_dataset",
     "check_result_content",
     "combine_joints",
     "config_of",
@@ -211,17 +210,6 @@ def end_of_run(summary: dict[str, Any]) -> str:
 
 def _var(dims, values, units: str, long_name: str) -> ResultVariable:
     return ResultVariable(dims, values, {"units": units, "long_name": long_name})
-
-
-def build_dataset(
-    simulation: Simulation,
-    state: SimulationState,
-    initial: ContactSolution,
-    final: ContactSolution,
-    runtime: float,
-) -> xr.Dataset:
-    """Assemble the result Dataset of a finished run (SI units)."""
-    return build_contents(simulation, state, initial, final, runtime).to_dataset()
 
 
 def build_contents(

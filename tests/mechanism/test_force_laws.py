@@ -69,19 +69,22 @@ def test_bad_restitution_and_law_rejected(ce: float) -> None:
 
 @pytest.mark.parametrize("law", POINT)
 def test_point_law_elastic_part_and_hysteresis(law: str) -> None:
-    function = getattr(fl, law.replace("-", "_"))
+    """Each point law is Hertz's force with its hysteresis factor, as the joint applies it."""
     k, n, ce, v_in = 8.2e8, 1.5, 0.6, 0.2
+    chi = fl.hysteresis_factor(law, ce)
+
+    def force(delta, rate):
+        return fl.dissipative_force(delta, rate, v_in, k, chi, n)
+
     delta = np.array([-1e-6, 0.0, 1e-6, 2e-5])
     # no rate: Hertz, zero without penetration
-    np.testing.assert_allclose(function(delta, 0.0, v_in, k, ce, n),
-                               k * np.maximum(delta, 0) ** n, rtol=1e-14)
-    loading = function(2e-5, 0.1, v_in, k, ce, n)
-    unloading = function(2e-5, -0.1, v_in, k, ce, n)
+    np.testing.assert_allclose(force(delta, 0.0), k * np.maximum(delta, 0) ** n, rtol=1e-14)
+    loading = force(2e-5, 0.1)
+    unloading = force(2e-5, -0.1)
     assert loading > k * 2e-5**n > unloading >= 0  # energy is lost over a cycle
-    chi = fl.hysteresis_factor(law, ce)
     assert loading == pytest.approx(k * 2e-5**n * (1 + chi * 0.5), rel=1e-14)
     # never tensile: a fast withdrawal is clipped at zero
-    assert function(2e-5, -10.0, v_in, k, ce, n) == 0.0
+    assert force(2e-5, -10.0) == 0.0
 
 
 def test_elastic_potential_is_integral_of_force() -> None:

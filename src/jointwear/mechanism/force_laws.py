@@ -106,13 +106,10 @@ __all__ = [
     "dissipative_force",
     "elastic_force",
     "elastic_potential",
-    "flores",
     "friction_force",
     "friction_ramp",
-    "hunt_crossley",
     "hysteresis_factor",
     "hysteresis_restitution",
-    "lankarani_nikravesh",
     "pin_in_hole_stiffness",
     "spring_gap",
     "spring_resultant",
@@ -326,109 +323,6 @@ def dissipative_force(
     elastic = elastic_force(penetration, stiffness, exponent)
     rate = np.asarray(penetration_rate, dtype=float) / np.asarray(impact_velocity, dtype=float)
     return np.maximum(elastic * (1.0 + hysteresis * rate), 0.0)
-
-
-def lankarani_nikravesh(
-    penetration: ArrayLike,
-    penetration_rate: ArrayLike,
-    impact_velocity: ArrayLike,
-    stiffness: float,
-    restitution: float,
-    exponent: float = 1.5,
-) -> FloatArray:
-    """Lankarani–Nikravesh force ``K delta^n (1 + 3 (1 - c_e^2)/4 delta'/delta'^-)`` [N].
-
-    Derived for ``c_e`` close to 1 (the energy lost per impact is computed with
-    the elastic Hertz trajectory); it underestimates the dissipation for low
-    ``c_e``.
-
-    Parameters
-    ----------
-    penetration : array_like
-        Penetration ``delta`` [m].
-    penetration_rate : array_like
-        ``d delta / dt`` [m/s].
-    impact_velocity : array_like
-        Approach velocity at the start of the contact ``delta'^-`` [m/s].
-    stiffness : float
-        ``K`` [N/m^n].
-    restitution : float
-        Coefficient of restitution ``c_e`` [-].
-    exponent : float
-        ``n`` [-].
-    """
-    chi = hysteresis_factor("lankarani-nikravesh", restitution)
-    return dissipative_force(
-        penetration, penetration_rate, impact_velocity, stiffness, chi, exponent
-    )
-
-
-def hunt_crossley(
-    penetration: ArrayLike,
-    penetration_rate: ArrayLike,
-    impact_velocity: ArrayLike,
-    stiffness: float,
-    restitution: float,
-    exponent: float = 1.5,
-) -> FloatArray:
-    """Hunt–Crossley force ``K delta^n (1 + 3 (1 - c_e)/2 delta'/delta'^-)`` [N].
-
-    The damping ``lambda = 3 (1 - c_e) K / (2 delta'^-)`` of Hunt and Crossley's
-    linearisation in ``1 - c_e`` (valid for ``c_e`` close to 1).
-
-    Parameters
-    ----------
-    penetration : array_like
-        Penetration ``delta`` [m].
-    penetration_rate : array_like
-        ``d delta / dt`` [m/s].
-    impact_velocity : array_like
-        Approach velocity at the start of the contact ``delta'^-`` [m/s].
-    stiffness : float
-        ``K`` [N/m^n].
-    restitution : float
-        Coefficient of restitution ``c_e`` [-].
-    exponent : float
-        ``n`` [-].
-    """
-    chi = hysteresis_factor("hunt-crossley", restitution)
-    return dissipative_force(
-        penetration, penetration_rate, impact_velocity, stiffness, chi, exponent
-    )
-
-
-def flores(
-    penetration: ArrayLike,
-    penetration_rate: ArrayLike,
-    impact_velocity: ArrayLike,
-    stiffness: float,
-    restitution: float,
-    exponent: float = 1.5,
-) -> FloatArray:
-    """Flores et al. (2011) force ``K delta^n (1 + 8 (1 - c_e)/(5 c_e) delta'/delta'^-)`` [N].
-
-    Derived from the energy balance of the whole impact without assuming
-    ``c_e -> 1``; meant for soft materials and the whole range of ``c_e``.
-
-    Parameters
-    ----------
-    penetration : array_like
-        Penetration ``delta`` [m].
-    penetration_rate : array_like
-        ``d delta / dt`` [m/s].
-    impact_velocity : array_like
-        Approach velocity at the start of the contact ``delta'^-`` [m/s].
-    stiffness : float
-        ``K`` [N/m^n].
-    restitution : float
-        Coefficient of restitution ``c_e`` [-].
-    exponent : float
-        ``n`` [-].
-    """
-    chi = hysteresis_factor("flores", restitution)
-    return dissipative_force(
-        penetration, penetration_rate, impact_velocity, stiffness, chi, exponent
-    )
 
 
 def friction_ramp(
