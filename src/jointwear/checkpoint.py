@@ -80,8 +80,13 @@ _NODE_ARRAYS = ("wear_depth", "wear_rate", "load_depth", "pin_wear_depth", "pin_
 
 
 def config_digest(config: Config) -> str:
-    """SHA-256 of the resolved configuration (TOML text)."""
-    return hashlib.sha256(config.to_toml().encode("utf-8")).hexdigest()
+    """SHA-256 of the resolved configuration's values (canonical JSON of ``to_dict``).
+
+    The values, not a written text: a change of how configs are written (layout,
+    quoting) must not orphan the checkpoints of an unchanged configuration.
+    """
+    canonical = json.dumps(config.to_dict(), sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(canonical.encode("utf-8")).hexdigest()
 
 
 def has_checkpoint(directory: str | Path) -> bool:
