@@ -237,6 +237,19 @@ CASES: list[Bad] = [
         {"ring.csv": "x [mm],y [mm]\n7.5,0\n"},
     ),
     Bad(
+        "fem-in-a-wear-run",
+        "config",
+        [
+            "run",
+            "{paper}",
+            "--set",
+            "contact.model=fem",
+            "--set",
+            "simulation.update_contour=true",
+        ],
+        ["contact.model", "'fem'", "every contour update", "'asymmetric-winkler'"],
+    ),
+    Bad(
         "nlcp-paper-form-off-its-mesh",
         "config",
         ["run", "{paper}", "--set", "contact.model=nlcp", "--set", "contact.nodes=720"],

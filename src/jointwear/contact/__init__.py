@@ -43,6 +43,7 @@ from jointwear.registry import Registry
 __all__ = [
     "CIRCULAR_ONLY",
     "CONTACT_MODELS",
+    "NOT_FOR_WEAR_RUNS",
     "CallableSpringLaw",
     "ContactParameters",
     "ContactSolution",
@@ -92,6 +93,14 @@ CIRCULAR_ONLY: dict[str, str] = {
     "persson": "is exact for a circular bushing only",
 }
 
+#: registered models refused in wear runs for another reason than circles, and why
+NOT_FOR_WEAR_RUNS: dict[str, str] = {
+    "fem": (
+        "meshes and factorises the bushing wall anew at every contour update (minutes per "
+        "run) and is a reference for single contours, not checked against worn-joint wear"
+    ),
+}
+
 #: relative difference between NLCP's spring area and a node's area that the paper form
 #: (node force ``K delta^n``) accepts [-]: a 1 degree mesh in floating point, nothing more
 SPRING_AREA_TOLERANCE = 1e-9
@@ -104,7 +113,10 @@ def check_model_choice(model: str | Callable[..., Any] | SpringLaw, update_conto
     ``hertz`` and ``persson`` solve circles: on a bushing worn into conformity (a load
     fixed in the bushing) their groove narrows as it deepens instead of widening, and
     the worn volume falls short of Archard's. A spring law on the real contour
-    (``asymmetric-winkler``, ``nlcp``, a callable) and the ``fem`` reference follow it.
+    (``asymmetric-winkler``, ``nlcp``, a callable) follows it (the documentation's
+    Validation page). The ``fem`` reference solves a worn contour, but a wear run would
+    mesh the wall anew at every update and it was never checked against worn-joint
+    wear (:data:`NOT_FOR_WEAR_RUNS`): it is refused there too.
 
     Parameters
     ----------
@@ -128,6 +140,12 @@ def check_model_choice(model: str | Callable[..., Any] | SpringLaw, update_conto
         raise ConfigError(
             f"contact.model: {name!r} {reason} and cannot follow a worn contour; with "
             f"simulation.update_contour = true use 'asymmetric-winkler' (the default) or 'nlcp'"
+        )
+    if name in NOT_FOR_WEAR_RUNS:
+        raise ConfigError(
+            f"contact.model: {name!r} {NOT_FOR_WEAR_RUNS[name]}; with "
+            f"simulation.update_contour = true use 'asymmetric-winkler' (the default) or "
+            f"'nlcp', and compare single contours with `jointwear compare-models`"
         )
 
 
