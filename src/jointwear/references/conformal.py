@@ -202,6 +202,12 @@ class ConformalWear:
     peak_pressure: float
 
 
+def _groove_edge(sinking: float, pin_radius: float, clearance: float) -> float:
+    """Angle from the load line, at the bushing's centre, where the groove meets the bore [rad]."""
+    beta = float(contact_half_angle(sinking, pin_radius, clearance))
+    return math.atan2(pin_radius * math.sin(beta), sinking + pin_radius * math.cos(beta))
+
+
 def _depth_along_rays(
     theta: FloatArray, sinking: float, pin_radius: float, clearance: float
 ) -> FloatArray:
@@ -226,8 +232,7 @@ def _removed_area(sinking: float, pin_radius: float, clearance: float) -> float:
     if sinking <= clearance:
         return 0.0
     bore = pin_radius + clearance
-    beta = float(contact_half_angle(sinking, pin_radius, clearance))
-    edge = math.atan2(pin_radius * math.sin(beta), sinking + pin_radius * math.cos(beta))
+    edge = _groove_edge(sinking, pin_radius, clearance)
 
     def strip(theta: float) -> float:
         depth = float(_depth_along_rays(np.array(theta), sinking, pin_radius, clearance))
@@ -311,7 +316,7 @@ def conformal_wear(
     peak = sinking - clearance
     if peak > 0:
         # the depth falls monotonically away from the load line
-        edge = math.atan2(pin_radius * math.sin(beta), sinking + pin_radius * math.cos(beta))
+        edge = _groove_edge(sinking, pin_radius, clearance)
         half_width = optimize.brentq(
             lambda t: (
                 float(_depth_along_rays(np.array(t), sinking, pin_radius, clearance))

@@ -310,13 +310,12 @@ def uniform_wear_comparison(
             },
         }  # fmt: skip
         config = config_from_dict(data)
-        result = Simulation(config).run(pressures=False)
+        simulation = Simulation(config)
+        result = simulation.run(pressures=False)
     depth = result.dataset["wear_depth"].values[-1]
     joint, bushing = config.joint, config.materials.bushing
-    from jointwear.contact.laws import ContactParameters
-
-    parameters = ContactParameters.from_config(config)
-    stiffness = winkler.spring_law(parameters).coefficient
+    # the run's own spring law: its stiffness E_w / L is the closed form's
+    stiffness = simulation.law.coefficient
     radius0 = joint.bushing_radius
 
     def rate(_s: float, h: FloatArray) -> list[float]:
