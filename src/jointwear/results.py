@@ -19,7 +19,6 @@ import datetime as _dt
 import math
 import sys
 import tomllib
-from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -468,52 +467,30 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
     return out
 
 
-@contextlib.contextmanager
-def _dask_for_write() -> Iterator[None]:
-    """How dask takes part in writing an in-memory result.
+def _local_scheduler() -> contextlib.AbstractContextManager[Any]:
+    """Serialise with dask's synchronous scheduler while a dask.distributed client is current.
 
-    A result holds NumPy arrays only. Yet xarray's netCDF writer asks dask, if it is
-    installed, for its scheduler (importing ``distributed``) and for its array type
-    (importing ``dask.array``): ~0.5 s for nothing. While nobody in this process uses
-    dask arrays or a dask.distributed client, dask stays hidden during the write (and
-    xarray's memo of the dask array type is forgotten again, so that dask works as
-    usual afterwards). With a client loaded, dask's synchronous scheduler serialises
-    the write (a client's locks cannot key a memory buffer).
+    xarray's netCDF writer takes a client's locks then, and they cannot key the memory
+    buffer the result is written to. (Only a process that has loaded ``distributed`` can
+    have a client: the check imports nothing.)
     """
-    if "distributed" in sys.modules:
-        import dask
-
-        with dask.config.set(scheduler="synchronous"):
-            yield
-        return
-    if "dask.array" in sys.modules:
-        yield
-        return
-    from xarray.namedarray import pycompat
-
-    memo = getattr(pycompat, "_cached_duck_array_modules", None)
-    remembered = memo is not None and "dask" in memo
-    saved = sys.modules.get("dask", _ABSENT)
-    sys.modules["dask"] = None  # type: ignore[assignment]  # `import dask` fails
+    distributed = sys.modules.get("distributed")
+    if distributed is None:
+        return contextlib.nullcontext()
     try:
-        yield
-    finally:
-        if saved is _ABSENT:
-            sys.modules.pop("dask", None)
-        else:
-            sys.modules["dask"] = saved
-        if memo is not None and not remembered:
-            memo.pop("dask", None)
+        distributed.Client.current(allow_global=True)
+    except ValueError:  # no client
+        return contextlib.nullcontext()
+    import dask
 
-
-_ABSENT = object()
+    return dask.config.set(scheduler="synchronous")
 
 
 def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
     """Write a result Dataset to netCDF-4 (h5netcdf) atomically."""
     # serialised in memory, then written as plain bytes: a full disk fails in an ordinary
     # write (no HDF5 file handle is left open to be closed again at exit)
-    with _dask_for_write():
+    with _local_scheduler():
         data = dataset.to_netcdf(engine="h5netcdf", invalid_netcdf=False)
     with atomic_write(path, "wb") as handle:
         handle.write(data)

@@ -28,78 +28,15 @@ number is SI), more than 6.283 rad; give a unit, e.g. "35 deg"``.
 
 from __future__ import annotations
 
-import importlib
-import importlib.util
 import io
 import math
-import sys
 import tokenize
 from functools import cache
 from typing import Any
 
+import pint
+
 from jointwear.errors import ConfigError
-
-
-class _Deferred:
-    """Attributes of a module imported when first read."""
-
-    def __init__(self, module: str) -> None:
-        self._module = module
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(importlib.import_module(self._module), name)
-
-
-def _deferred_call(module: str, name: str) -> Any:
-    def call(*args: Any, **kwargs: Any) -> Any:
-        return getattr(importlib.import_module(module), name)(*args, **kwargs)
-
-    call.__name__ = name
-    return call
-
-
-def _import_pint() -> Any:
-    """pint, imported without importing dask.
-
-    With dask installed, pint's import loads ``dask.base`` (~0.1 s, most of it for
-    ``Quantity.compute()`` on dask arrays), at every start of the command line. dask
-    stays hidden while pint loads; then pint's dask helpers are pointed at modules
-    imported on first use, so quantities of dask arrays work as before.
-    """
-    if "pint" in sys.modules or "dask" in sys.modules:
-        import pint
-
-        return pint
-    try:
-        has_dask = importlib.util.find_spec("dask") is not None
-    except (ImportError, ValueError):
-        has_dask = False
-    sys.modules["dask"] = None  # type: ignore[assignment]  # find_spec answers None
-    try:
-        import pint
-    finally:
-        if sys.modules.get("dask", 0) is None:
-            del sys.modules["dask"]
-    if has_dask:
-        from pint import compat
-        from pint.facets import dask as facet
-
-        helpers = {
-            "dask_array": _Deferred("dask.array"),
-            **{
-                name: _deferred_call("dask.base", name)
-                for name in ("compute", "persist", "visualize")
-            },
-        }
-        for module in (compat, facet):
-            for name, value in helpers.items():
-                if getattr(module, name, 0) is None:
-                    setattr(module, name, value)
-        compat.HAS_DASK = True
-    return pint
-
-
-pint = _import_pint()
 
 __all__ = [
     "BARE_LIMITS",

@@ -18,9 +18,15 @@ from jointwear import load_config
 from jointwear.simulation import COMPILED_KERNEL_SOLVES, compiled_kernel
 
 SRC = Path(__file__).resolve().parents[2] / "src"
-#: libraries a summary of a run needs none of
-HEAVY = ("dask", "xarray", "pandas", "matplotlib", "distributed")
+#: libraries a summary of a run needs none of (the dask package itself is not one of them:
+#: pint imports ``dask.base`` whenever dask is installed)
+HEAVY = ("dask.array", "xarray", "pandas", "matplotlib", "distributed")
 ONE_REVOLUTION = ["--set", "simulation.revolutions=1", "--json", "-q"]
+
+
+def heavy(modules: set[str]) -> list[str]:
+    """The modules of :data:`HEAVY` (or inside them) among ``modules``."""
+    return [m for m in modules if any(m == h or m.startswith(h + ".") for h in HEAVY)]
 
 
 def loaded_after(code: str, tmp_path: Path) -> set[str]:
@@ -53,7 +59,7 @@ def test_plain_run_imports_no_dataset_plotting_or_compiler_library(
         cli(["run", str(paper_config_path), "--set", f"contact.model={model}", *ONE_REVOLUTION]),
         tmp_path,
     )
-    assert not [m for m in modules if m.split(".")[0] in HEAVY]
+    assert not heavy(modules)
     # one revolution plans two contact solves: the NumPy kernel, numba never loaded
     assert "numba" not in modules
 
@@ -65,7 +71,11 @@ def test_short_contact_impact_run_does_not_load_numba(paper_config_path, tmp_pat
     assert "numba" not in modules
 
 
-def test_writing_a_result_imports_neither_dask_arrays_nor_distributed(paper_config_path, tmp_path):
+def test_writing_a_result_imports_xarray_but_no_plotting_or_compiler_library(
+    paper_config_path, tmp_path
+):
+    # (xarray's netCDF writer asks an installed dask for its scheduler and array type,
+    # which imports dask.array and distributed: no public option of xarray avoids that)
     out = tmp_path / "out"
     modules = loaded_after(
         cli(["run", str(paper_config_path), *ONE_REVOLUTION, "--out", str(out), "--no-plots"]),
@@ -73,8 +83,8 @@ def test_writing_a_result_imports_neither_dask_arrays_nor_distributed(paper_conf
     )
     assert (out / "result.nc").is_file()
     assert "xarray" in modules
-    assert "dask.array" not in modules
-    assert "distributed" not in modules
+    assert "matplotlib" not in modules
+    assert "numba" not in modules
 
 
 def test_a_sweep_case_builds_no_dataset(paper_config_path, tmp_path):
@@ -86,14 +96,13 @@ def test_a_sweep_case_builds_no_dataset(paper_config_path, tmp_path):
         "assert record['status'] == 'ok', record\n"
     )
     modules = loaded_after(code, tmp_path)
-    assert not [m for m in modules if m.split(".")[0] in HEAVY]
+    assert not heavy(modules)
 
 
 def test_units_then_dask_arrays_with_units_still_work(tmp_path):
-    # pint is imported with dask hidden; its dask helpers must still reach dask
+    # the package's unit registry keeps pint's support of dask arrays
     code = (
         "import jointwear.units as units\n"
-        "assert 'dask' not in sys.modules\n"
         "import dask.array as da\n"
         "q = units.ureg.Quantity(da.arange(4.0, chunks=2), 'mm')\n"
         "assert list(q.to('m').compute().magnitude) == [0.0, 0.001, 0.002, 0.003]\n"
@@ -105,14 +114,13 @@ def test_units_then_dask_arrays_with_units_still_work(tmp_path):
 
 
 def test_dask_arrays_in_xarray_after_writing_a_result(paper_config_path, tmp_path):
-    # the write hides dask from xarray; afterwards xarray must see dask arrays again
+    # a result of NumPy arrays written first, then one of dask arrays
     code = (
         "from jointwear import Simulation, load_config\n"
         "from jointwear.results import read_result, write_netcdf\n"
         f"result = Simulation(load_config({str(paper_config_path)!r}, "
         "{'simulation.revolutions': 1})).run()\n"
         f"write_netcdf(result.dataset, {str(tmp_path / 'a.nc')!r})\n"
-        "assert 'dask.array' not in sys.modules\n"
         "chunked = result.dataset.chunk({'theta': 30})\n"
         "assert type(chunked['wear_depth'].data).__module__.startswith('dask.array')\n"
         f"write_netcdf(chunked, {str(tmp_path / 'b.nc')!r})\n"
