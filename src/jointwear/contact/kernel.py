@@ -128,15 +128,17 @@ class RevolutionWear:
         iterations: NDArray[np.int64], normal_force: FloatArray, *, balanced: Any = None,
         solution: ContactSolution | None = None, context: Any = None, **evaluated: Any,
     ) -> None:  # fmt: skip
-        unknown = set(evaluated) - self._EVALUATED
-        if unknown:
-            raise TypeError(f"RevolutionWear: unknown fields {sorted(unknown)}")
-        # (the instance's dict: attributes are read-only, __setattr__ refuses them)
-        vars(self).update(
-            wear=wear, offset=offset, window=window, iterations=iterations,
-            normal_force=normal_force, _balanced=balanced, _solution=solution,
-            _context=context, **evaluated,
-        )  # fmt: skip
+        if evaluated and not self._EVALUATED.issuperset(evaluated):
+            unknown = sorted(set(evaluated) - self._EVALUATED)
+            raise TypeError(f"RevolutionWear: unknown fields {unknown}")
+        # (the instance's dict: attributes are read-only, __setattr__ refuses them; one
+        # store each, as a run builds one of these per revolution)
+        fields = self.__dict__
+        fields["wear"], fields["offset"], fields["window"] = wear, offset, window
+        fields["iterations"], fields["normal_force"] = iterations, normal_force
+        fields["_balanced"], fields["_solution"], fields["_context"] = balanced, solution, context
+        if evaluated:
+            fields.update(evaluated)
 
     def __setattr__(self, name: str, value: Any) -> None:
         raise AttributeError(f"RevolutionWear is read-only: cannot set {name!r}")
@@ -621,16 +623,11 @@ def _run(
             "springs_right": springs[1],
         }  # fmt: skip
 
+    # (the widest window holds every node in contact, and one beyond)
     return RevolutionWear(
-        wear=wear,
-        offset=offset,
-        # (the widest window holds every node in contact, and one beyond)
-        window=widest + 2,
-        iterations=counts[0],
-        normal_force=total,
-        balanced=balanced,
+        wear, offset, widest + 2, counts[0], total, balanced=balanced,
         context=(contour, pin, azimuth, law, centre_gap),
-    )
+    )  # fmt: skip
 
 
 def _arguments(contour, pin, load, azimuth, law, max_penetration):
