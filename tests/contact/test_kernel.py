@@ -367,3 +367,17 @@ second.solution().pressure  # the pressure, and the fields with it
 print(len(kernel._compiled().balanced_state.signatures), int(second.springs_left.sum() > 0))
 """
     assert printed_by(code) == ["1", "1"]
+
+
+def test_a_revolution_is_read_only(config):
+    """A revolution's result cannot be changed after the fact (a run keeps its wear
+    uncopied), nor built with fields it does not have."""
+    args, options = revolution_inputs(config, "nlcp", "circle")
+    result = revolution_wear(*args, compiled=False, **options)
+    with pytest.raises(AttributeError, match="read-only"):
+        result.wear = result.wear * 2
+    with pytest.raises(AttributeError, match="read-only"):
+        del result.offset
+    with pytest.raises(TypeError, match="unknown fields"):
+        kernel.RevolutionWear(result.wear, result.offset, 3, result.iterations,
+                              result.normal_force, peak=1.0)  # fmt: skip
