@@ -15,7 +15,8 @@ import pytest
 
 from jointwear import Simulation
 from jointwear.config import Config, load_config
-from jointwear.contact import balance, solve_contact
+from jointwear.contact import solve_contact
+from jointwear.contact.balance.guesses import coarse_guess
 from jointwear.geometry import BushingContour
 
 from .conftest import REPO
@@ -275,7 +276,7 @@ def test_coarse_pass_guesses_a_worn_contour(table5, model):
     simulation = Simulation(table5.replace({"contact.model": model}))
     contour = contour_for(simulation, "worn")
     load = simulation.load_cycle
-    guess, widest = balance._coarse_guess(
+    guess, widest = coarse_guess(
         contour,
         simulation.pin,
         simulation.law,

@@ -96,9 +96,6 @@ KNOWN_LAYER_EXCEPTIONS: dict[tuple[str, str], str] = {
     ("jointwear.mechanism.force_laws", "jointwear.contact.laws"): "spring laws of the impact",
     # a load history can be read from an earlier run's result file
     ("jointwear.mechanism.history", "jointwear.results"): "lazy: reads a result file's loads",
-    # the fused per-revolution kernel computes the pressure and Archard's wear increment
-    # in one compiled pass
-    ("jointwear.contact.kernel", "jointwear.tribology.archard"): "fused pressure + wear kernel",
     # WearResult's conveniences (summary, netCDF, plot, repr) delegate to the modules that
     # present a result; all lazy, at call time
     ("jointwear.simulation", "jointwear.results"): "lazy: WearResult builds its dataset",
@@ -107,27 +104,7 @@ KNOWN_LAYER_EXCEPTIONS: dict[tuple[str, str], str] = {
 }
 
 #: (importing module, imported module) -> why private names are shared between them
-KNOWN_PRIVATE_EXCEPTIONS: dict[tuple[str, str], str] = {
-    # the contact balance is one algorithm split over a package's modules; its helpers
-    # are internal to jointwear.contact (re-exported by the package for the kernel)
-    **{
-        pair: "the balance's internals, split over modules of one package"
-        for pair in (
-            ("jointwear.contact.balance", "jointwear.contact.balance.guesses"),
-            ("jointwear.contact.balance", "jointwear.contact.balance.window"),
-            ("jointwear.contact.balance.equilibrium", "jointwear.contact.balance.window"),
-            ("jointwear.contact.balance.guesses", "jointwear.contact.balance.residual"),
-            ("jointwear.contact.balance.guesses", "jointwear.contact.balance.window"),
-            ("jointwear.contact.balance.residual", "jointwear.contact.balance.window"),
-            ("jointwear.contact.balance.solve", "jointwear.contact.balance.equilibrium"),
-            ("jointwear.contact.balance.solve", "jointwear.contact.balance.guesses"),
-            ("jointwear.contact.balance.solve", "jointwear.contact.balance.residual"),
-            ("jointwear.contact.balance.solve", "jointwear.contact.balance.window"),
-            ("jointwear.contact.kernel", "jointwear.contact.balance.guesses"),
-            ("jointwear.contact.kernel", "jointwear.contact.balance.solve"),
-        )
-    },
-}
+KNOWN_PRIVATE_EXCEPTIONS: dict[tuple[str, str], str] = {}
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,11 @@
-"""The compiled revolution (balance + Archard in one loop) against the NumPy path.
+"""The compiled revolution (balance + Archard in one loop) against the NumPy path, the
+plain statement of the balance and Archard's law.
 
 Both balance every load to round-off, so they agree to 1e-12 relative in wear and in
-force balance; the dense pressure, assembled only on request, matches as well.
+force balance; the dense pressure, assembled only on request, matches as well. Both
+are held to the reference (:mod:`jointwear.contact.balance.paper` and
+:func:`jointwear.tribology.archard.wear_depth`) at 1e-9, and their own Archard sums to
+``wear_depth`` of their pressure at 1e-12.
 """
 
 from __future__ import annotations
@@ -16,18 +20,21 @@ import pytest
 from jointwear import Simulation
 from jointwear.config import load_config
 from jointwear.contact import kernel
-from jointwear.contact.balance.paper import paper_balance
+from jointwear.contact.balance.paper import paper_balance, paper_pressure
 from jointwear.contact.kernel import revolution_wear
 from jointwear.geometry import BushingContour
+from jointwear.tribology.archard import wear_depth
 
 from ..conftest import REPO
 from ..test_fast_path import CALIBRATED, PAPER, worn_profile
 
 MODELS = ["winkler", "asymmetric-winkler", "nlcp"]
 
-pytestmark = pytest.mark.skipif(
+needs_numba = pytest.mark.skipif(
     not kernel.compiled_available(), reason="numba missing or JOINTWEAR_NO_NUMBA set"
 )
+#: both paths of :func:`revolution_wear`: the NumPy one runs without numba too
+PATHS = [pytest.param(False, id="numpy"), pytest.param(True, id="compiled", marks=needs_numba)]
 
 
 @pytest.fixture(scope="module")
@@ -69,6 +76,7 @@ def relative(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
 
 
+@needs_numba
 @pytest.mark.parametrize("shape", ["circle", "worn"])
 @pytest.mark.parametrize("model", MODELS)
 def test_compiled_equals_numpy(config, model, shape):
@@ -92,6 +100,7 @@ def test_compiled_equals_numpy(config, model, shape):
         np.testing.assert_allclose(fast.peak_pressure, reference.max(axis=1), rtol=1e-12)
 
 
+@needs_numba
 @pytest.mark.parametrize("model", MODELS)
 def test_fast_solvers_solve_the_stated_balance(config, model):
     """The plain statement of eqs. (5)/(7) on every node (balance.paper) gives the offsets
@@ -105,6 +114,40 @@ def test_fast_solvers_solve_the_stated_balance(config, model):
         assert relative(result.offset[rows], stated) <= 1e-12
 
 
+@pytest.mark.parametrize("compiled", PATHS)
+@pytest.mark.parametrize("shape", ["circle", "worn"])
+@pytest.mark.parametrize("model", MODELS)
+def test_revolution_wear_is_the_reference_wear(config, model, shape, compiled):
+    """Every 12th step of the paper's revolution: the wear of eqs. (5)/(7) solved plainly on
+    every node (balance.paper) and of Archard's law (tribology.archard), to 1e-9."""
+    args, options = revolution_inputs(config, model, shape)
+    contour, pin, load, azimuth, sliding, law, k_d = args
+    rows = slice(0, None, 12)
+    steps = (load[rows].copy(), azimuth[rows].copy(), sliding[rows].copy())
+    result = revolution_wear(contour, pin, *steps, law, k_d, compiled=compiled, **options)
+    offset = paper_balance(contour, pin, steps[0], steps[1], law)
+    pressure = paper_pressure(contour, pin, offset, steps[1], law)
+    assert relative(result.wear, wear_depth(pressure, steps[2], k_d)) <= 1e-9
+
+
+@pytest.mark.parametrize("compiled", PATHS)
+@pytest.mark.parametrize("model", MODELS)
+def test_fused_wear_is_archards(config, model, compiled):
+    """The kernel adds Archard's ``K_d p ds`` itself (its one copy of a formula): cold and
+    warm, its wear is tribology.archard's of its own pressure to 1e-12 relative."""
+    args, options = revolution_inputs(config, model, "worn")
+    sliding, k_d = args[4], args[6]
+    cold = revolution_wear(*args, compiled=compiled, **options)
+    guess = cold.offset * (1 + 1e-7)
+    warm = revolution_wear(
+        *args, compiled=compiled, initial_offset=guess, window=cold.window, **options
+    )
+    for result in (cold, warm):
+        expected = wear_depth(result.solution().pressure, sliding, k_d)
+        assert relative(result.wear, expected) <= 1e-12
+
+
+@needs_numba
 def test_dense_pressure_is_the_balanced_state(config):
     """The pressure assembled on request is the state the balance accepted: its Archard
     wear is the accumulated one, and its resultant the reported force."""
@@ -121,6 +164,7 @@ def test_dense_pressure_is_the_balanced_state(config):
     np.testing.assert_allclose(normal, result.normal_force, rtol=1e-13)
 
 
+@needs_numba
 @pytest.mark.parametrize("model", MODELS)
 def test_contact_fields_are_evaluated_when_read(config, model):
     """The compiled path evaluates the extent, peak, tangential force and springs only
@@ -146,6 +190,7 @@ def test_contact_fields_are_evaluated_when_read(config, model):
     np.testing.assert_array_equal(result.peak_pressure, pressure.max(axis=1))
 
 
+@needs_numba
 def test_simulation_steps_match_the_numpy_path(config):
     """Ten per-revolution updates with the kernel and with the NumPy path."""
     cfg = config.replace({"simulation.revolutions": 10, "simulation.update_contour": True})
@@ -163,6 +208,7 @@ def test_simulation_steps_match_the_numpy_path(config):
     assert relative(depths[0], depths[1]) <= 1e-12
 
 
+@needs_numba
 def test_zero_loads_and_errors(config):
     """No load: the pin touches, no wear; a load through the wall raises ContactError."""
     args, options = revolution_inputs(config, "nlcp", "circle")
@@ -181,6 +227,7 @@ def test_zero_loads_and_errors(config):
         revolution_wear(contour, pin, 1e9 * load, azimuth, sliding, law, k_d, **options)
 
 
+@needs_numba
 @pytest.mark.parametrize("model", MODELS)
 def test_warm_inputs_checked_as_cold(config, model):
     """A warm start builds the contour's arguments in the compiled loop: the same result as
@@ -215,6 +262,7 @@ def test_warm_inputs_checked_as_cold(config, model):
         )  # fmt: skip
 
 
+@needs_numba
 def test_numba_is_imported_only_when_used():
     """``import jointwear`` (and a whole simulation object) does not import numba."""
     code = (
@@ -228,6 +276,7 @@ def test_numba_is_imported_only_when_used():
     assert out.stdout.strip() == "False"
 
 
+@needs_numba
 @pytest.mark.parametrize("shape", ["circle", "worn"])
 @pytest.mark.parametrize("model", MODELS)
 def test_warm_arguments_are_the_numpy_ones(config, model, shape):
@@ -266,6 +315,7 @@ def printed_by(code: str) -> list[str]:
     return out.stdout.split()
 
 
+@needs_numba
 def test_one_compiled_variant_of_the_kernel():
     """Cold and warm revolutions, read-only and scalar inputs and a whole run reach the
     compiled kernel with the same array types: numba compiles (and caches) one variant,
@@ -296,6 +346,7 @@ print(len(module.revolution.signatures), len(module.prepare.signatures))
     assert printed_by(code) == ["1", "1"]
 
 
+@needs_numba
 def test_one_compiled_variant_of_the_fields_read_later():
     """The fields evaluated on read and the dense pressure reach ``balanced_state`` with
     one set of array types, whichever is read first: one compiled variant."""
@@ -316,3 +367,17 @@ second.solution().pressure  # the pressure, and the fields with it
 print(len(kernel._compiled().balanced_state.signatures), int(second.springs_left.sum() > 0))
 """
     assert printed_by(code) == ["1", "1"]
+
+
+def test_a_revolution_is_read_only(config):
+    """A revolution's result cannot be changed after the fact (a run keeps its wear
+    uncopied), nor built with fields it does not have."""
+    args, options = revolution_inputs(config, "nlcp", "circle")
+    result = revolution_wear(*args, compiled=False, **options)
+    with pytest.raises(AttributeError, match="read-only"):
+        result.wear = result.wear * 2
+    with pytest.raises(AttributeError, match="read-only"):
+        del result.offset
+    with pytest.raises(TypeError, match="unknown fields"):
+        kernel.RevolutionWear(result.wear, result.offset, 3, result.iterations,
+                              result.normal_force, peak=1.0)  # fmt: skip

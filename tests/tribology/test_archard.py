@@ -1,4 +1,4 @@
-"""Archard wear: local law, global form, sliding distances."""
+"""Archard wear: local law, global form, for every contact model."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ import pytest
 from jointwear import Simulation, load_config
 from jointwear.contact import ContactParameters, nlcp, solve, winkler
 from jointwear.errors import ConfigError, ContactModelWarning
-from jointwear.tribology import archard, sliding
+from jointwear.tribology import archard
 
 
 def test_uniform_pressure_wears_k_d_p_s() -> None:
@@ -43,19 +43,6 @@ def test_local_law_summed_over_the_surface_is_the_global_form() -> None:
     volume = float(archard.wear_depth(pressure, ds, 5e-13) @ area)
     normal_force = pressure @ area  # [N] per step
     assert volume == pytest.approx(archard.archard_volume(normal_force, ds, 5e-13), rel=1e-12)
-
-
-def test_relative_rotation_sliding() -> None:
-    np.testing.assert_allclose(sliding.relative_rotation([0.1, -0.2], 7.5e-3), [7.5e-4, 1.5e-3])
-
-
-def test_contact_azimuth_sliding_is_periodic_and_wrapped() -> None:
-    # the azimuth sweeps across the +-pi cut: increments must be wrapped, not 2 pi jumps
-    psi = np.array([3.1, -3.1, -3.0, 3.1])
-    ds = sliding.contact_azimuth(psi, 1.0)
-    expected = np.abs(np.angle(np.exp(1j * (np.roll(psi, -1) - psi))))
-    np.testing.assert_allclose(ds, expected)
-    assert ds.max() < 1.0
 
 
 def test_archard_volume() -> None:

@@ -38,6 +38,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from jointwear.contact.balance.window import angle_addition, nearest_nodes
 from jointwear.contact.laws import ContactParameters, effective_modulus
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ContactError
@@ -216,68 +217,85 @@ def solve(
     relative = r_p * r_b / (r_b - r_p)
     a = half_width(load, b, relative, modulus)
     p0 = peak_pressure(load, b, relative, modulus)
-
     # the profile is nonzero only within a of the compression centre: evaluate it on a
-    # window of nodes about each load line (angle addition, one cos and sin of the
-    # offsets and of each load's shift) and scatter it into the (M, N) pressure
-    nodes, dtheta = contour.nodes, contour.dtheta
-    wrapped = np.mod(azimuth, 2 * np.pi)
-    centre = np.rint(wrapped / dtheta).astype(np.int64)
-    reach = np.minimum(a / r_b, 0.5 * np.pi)
-    width = int(min(np.ceil(float(reach.max(initial=0.0)) / dtheta) + 2, (nodes - 1) // 2))
-    offsets = np.arange(-width, width + 1)
-    shift = centre * dtheta - wrapped
-    phi = offsets * dtheta + shift[:, None]
-    cos_o, sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
-    cos_s, sin_s = np.cos(shift)[:, None], np.sin(shift)[:, None]
-    cos_phi = cos_o * cos_s - sin_o * sin_s
-    sin_phi = sin_o * cos_s + cos_o * sin_s
-    index = (centre[:, None] + offsets) % nodes
-    profile = _window_profile(r_b[:, None] * phi, a, p0)
-    # Hertz knows nothing of the geometry: past a quarter of the circumference its
-    # ellipse would wrap onto the back of the bushing, where a smaller pin cannot
-    # touch (and where cos(beta) < 0 would make springs pull). Cut it at 90 degrees
-    # (|shift| <= dtheta / 2: a window short of it has nothing to cut).
-    if (width + 0.5) * dtheta >= 0.5 * np.pi:
-        profile[np.abs(phi) >= 0.5 * np.pi] = 0.0
-    # contacts narrower than a node: share the load between the two nearest nodes. The
-    # centre column is the nearest node (|phi| = |shift| <= dtheta / 2, and the profile
-    # falls with |phi| in floating point too): no node is inside where it is not
-    narrow = profile[:, width] <= 0.0
-    if np.any(narrow & (load > 0)):
-        rows = np.flatnonzero(narrow & (load > 0))
-        pos = wrapped[rows] / dtheta
-        lo = np.floor(pos).astype(int) % nodes
-        frac = pos - np.floor(pos)
-        # the window columns of nodes lo and lo + 1
-        column = (lo - centre[rows] + width) % nodes
-        profile[rows, column] = 1.0 - frac
-        profile[rows, column + 1] = frac
-    area = contour.spring_area[index]
-    force_shape = profile * area
-    carried = (force_shape * cos_phi).sum(axis=1)
+    # window of nodes about each load line and scatter it into the (M, N) pressure
+    window = _Window(contour.nodes, azimuth, np.minimum(a / r_b, 0.5 * np.pi))
+    profile = _window_profile(r_b[:, None] * window.phi, a, p0)
+    narrow = window.shape(profile, load)
+    area = contour.spring_area[window.index]
+    carried = (profile * area * window.cos).sum(axis=1)
     scale = np.where(carried > 0, load / np.where(carried > 0, carried, 1.0), 0.0)
     window_pressure = profile * scale[:, None]
-    force = window_pressure * area
-    pressure = np.zeros((load.size, nodes))
-    # a window holds each node at most once (2 width + 1 <= nodes): one flat scatter,
-    # without put_along_axis's index broadcasting (a fifth of the solve)
-    row_start = np.arange(load.size)[:, None] * nodes
-    pressure.reshape(-1)[row_start + index] = window_pressure
     half_angle = np.where(narrow, 0.0, np.minimum(a / r_b, 0.5 * np.pi))
-    contact = window_pressure > 0
-    return ContactSolution(
-        pressure=pressure,
-        eccentricity=np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1)
-        * ((r_b - r_p) + penetration)[:, None],
-        penetration=penetration,
-        normal_force=(force * cos_phi).sum(axis=1),
-        tangential_force=(force * sin_phi).sum(axis=1),
-        half_angle_left=half_angle,
-        half_angle_right=half_angle,
-        # (phi grows along a row, and only the centre column's sign is its shift's)
-        springs_left=contact[:, width + 1 :].sum(axis=1) + (contact[:, width] & (shift > 0)),
-        springs_right=contact[:, :width].sum(axis=1) + (contact[:, width] & (shift < 0)),
-        iterations=np.zeros(load.size, dtype=np.int64),
-        model="hertz",
+    eccentricity = (
+        np.stack([np.cos(azimuth), np.sin(azimuth)], axis=1) * ((r_b - r_p) + penetration)[:, None]
     )
+    return window.solution(window_pressure, area, eccentricity, penetration, half_angle)
+
+
+class _Window:
+    """Nodes within the widest Hertz contact of each load line (offsets ``-W .. W``
+    about the nearest node, :func:`~jointwear.contact.balance.window.nearest_nodes`)."""
+
+    def __init__(self, nodes: int, azimuth: FloatArray, reach: FloatArray) -> None:
+        dtheta = 2 * np.pi / nodes
+        self.nodes, self.dtheta = nodes, dtheta
+        self.position, self.centre, self.shift = nearest_nodes(nodes, azimuth)
+        width = int(min(np.ceil(float(reach.max(initial=0.0)) / dtheta) + 2, (nodes - 1) // 2))
+        offsets = np.arange(-width, width + 1)
+        self.width = width
+        self.phi = offsets * dtheta + self.shift[:, None]
+        self.cos, self.sin = angle_addition(offsets, dtheta, self.shift)
+        self.index = (self.centre[:, None] + offsets) % nodes
+
+    def shape(self, profile: FloatArray, load: FloatArray) -> NDArray[np.bool_]:
+        """Cut ``profile`` [Pa] at 90 degrees and give a contact narrower than a node to
+        the two nearest nodes, in place; the loads [N] so given."""
+        width, dtheta = self.width, self.dtheta
+        # Hertz knows nothing of the geometry: past a quarter of the circumference its
+        # ellipse would wrap onto the back of the bushing, where a smaller pin cannot
+        # touch (and where cos(beta) < 0 would make springs pull). Cut it at 90 degrees
+        # (|shift| <= dtheta / 2: a window short of it has nothing to cut).
+        if (width + 0.5) * dtheta >= 0.5 * np.pi:
+            profile[np.abs(self.phi) >= 0.5 * np.pi] = 0.0
+        # contacts narrower than a node: share the load between the two nearest nodes. The
+        # centre column is the nearest node (|phi| = |shift| <= dtheta / 2, and the profile
+        # falls with |phi| in floating point too): no node is inside where it is not
+        narrow = profile[:, width] <= 0.0
+        if np.any(narrow & (load > 0)):
+            rows = np.flatnonzero(narrow & (load > 0))
+            pos = self.position[rows] / dtheta
+            lo = np.floor(pos).astype(int) % self.nodes
+            frac = pos - np.floor(pos)
+            # the window columns of nodes lo and lo + 1
+            column = (lo - self.centre[rows] + width) % self.nodes
+            profile[rows, column] = 1.0 - frac
+            profile[rows, column + 1] = frac
+        return narrow
+
+    def solution(self, window_pressure, area, eccentricity, penetration, half_angle):
+        """The :class:`ContactSolution` of the window's pressure [Pa] (spring areas [m^2],
+        pin centre [m], approach [m], contact half-angles [rad])."""
+        m, width, nodes = window_pressure.shape[0], self.width, self.nodes
+        force = window_pressure * area
+        pressure = np.zeros((m, nodes))
+        # a window holds each node at most once (2 width + 1 <= nodes): one flat scatter,
+        # without put_along_axis's index broadcasting (a fifth of the solve)
+        row_start = np.arange(m)[:, None] * nodes
+        pressure.reshape(-1)[row_start + self.index] = window_pressure
+        contact = window_pressure > 0
+        centre, shift = contact[:, width], self.shift
+        return ContactSolution(
+            pressure=pressure,
+            eccentricity=eccentricity,
+            penetration=penetration,
+            normal_force=(force * self.cos).sum(axis=1),
+            tangential_force=(force * self.sin).sum(axis=1),
+            half_angle_left=half_angle,
+            half_angle_right=half_angle,
+            # (phi grows along a row, and only the centre column's sign is its shift's)
+            springs_left=contact[:, width + 1 :].sum(axis=1) + (centre & (shift > 0)),
+            springs_right=contact[:, :width].sum(axis=1) + (centre & (shift < 0)),
+            iterations=np.zeros(m, dtype=np.int64),
+            model="hertz",
+        )

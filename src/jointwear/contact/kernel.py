@@ -7,12 +7,21 @@ contact window; the dense (M, N) pressure is assembled only when asked for
 peak pressure, tangential force and springs in contact then too. With numba installed
 the balance runs in a fused, compiled loop (:mod:`jointwear.contact._compiled`,
 imported on first use and cached on disk); without it, or with
-``JOINTWEAR_NO_NUMBA=1``, the same result comes from the NumPy path
-(:func:`jointwear.contact.balance.solve_contact` and
-:func:`jointwear.tribology.archard.wear_depth`), which stays the readable reference.
+``JOINTWEAR_NO_NUMBA=1``, the same result comes from the NumPy path, the windowed
+balance :func:`jointwear.contact.balance.solve_contact` itself. Both are held to the
+plain statement of the balance (:mod:`jointwear.contact.balance.paper`) by the tests.
 
 The compiled path applies to the power laws ``p = k delta^n`` with ``n`` 1 or 1.5
 (Winkler, asymmetric Winkler, NLCP); any other law takes the NumPy path.
+
+Archard's wear is computed here, not by :mod:`jointwear.tribology.archard`: this is
+the one deliberate exception to "one implementation of each formula". The contact
+stage sits below tribology, and the compiled loop adds a load's wear to the nodes as
+soon as the load is balanced (its pressure is never stored), so the kernel takes what
+it needs as plain numbers, the dimensional Archard coefficient ``K_d = k / H``
+[1/Pa] and the sliding distance of each step [m], and adds ``K_d p_jk ds_k``
+(:func:`archard_wear` on the NumPy path). ``tests/contact/test_kernel.py`` holds both
+paths' wear to :func:`jointwear.tribology.archard.wear_depth` at 1e-12 relative.
 """
 
 from __future__ import annotations
@@ -20,21 +29,31 @@ from __future__ import annotations
 import math
 import os
 import threading
-from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from jointwear.contact.balance.guesses import _conformal_depth, _curvature
-from jointwear.contact.balance.solve import _check, check_reach, checked_loads, solve_contact
+from jointwear.contact.balance.guesses import conformal_depth, step_curvature
+from jointwear.contact.balance.solve import (
+    check_converged,
+    check_reach,
+    checked_loads,
+    solve_contact,
+)
+from jointwear.contact.balance.window import PIN_REACH, nearest_nodes, upper_bound
 from jointwear.contact.laws import PowerLaw, SpringLaw
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ContactError
 from jointwear.geometry.contour import BushingContour, Pin, RadiusStencil
-from jointwear.tribology.archard import wear_depth
 
-__all__ = ["RevolutionWear", "WarmRevolutions", "compiled_available", "revolution_wear"]
+__all__ = [
+    "RevolutionWear",
+    "WarmRevolutions",
+    "archard_wear",
+    "compiled_available",
+    "revolution_wear",
+]
 
 FloatArray = NDArray[np.float64]
 
@@ -64,9 +83,8 @@ def _compiled():
     return _COMPILED or None
 
 
-@dataclass(frozen=True, eq=False)
 class RevolutionWear:
-    """Wear and contact summary of one revolution.
+    """Wear and contact summary of one revolution (read-only).
 
     Attributes
     ----------
@@ -92,40 +110,46 @@ class RevolutionWear:
     A run reads the wear, the offsets, the window and the iterations of every
     revolution, and the rest seldom: the compiled path evaluates the half-angles, the
     peak pressure, the tangential force and the springs when one of them is first read
-    (one more evaluation per load, at its balanced offset).
+    (one more evaluation per load, at its balanced offset). Built with the first five
+    attributes, and either the other six (``**evaluated``) or ``balanced``, ``rows ->
+    (pressure, fields)``: the compiled path's balanced state, its dense pressure
+    (``rows`` rows) and the fields it leaves out. ``solution``: the NumPy path's
+    :class:`ContactSolution`; ``context``: ``(contour, pin, azimuth, law, centre_gap)``.
     """
-
-    wear: FloatArray
-    offset: FloatArray
-    window: int
-    iterations: NDArray[np.int64]
-    half_angle_left: FloatArray
-    half_angle_right: FloatArray
-    peak_pressure: FloatArray
-    normal_force: FloatArray
-    tangential_force: FloatArray
-    springs_left: NDArray[np.int64]
-    springs_right: NDArray[np.int64]
-    #: ``rows -> (pressure, fields)``: the compiled path's balanced state, its dense
-    #: pressure (``rows`` rows) and the fields it leaves out (None: the NumPy path's
-    #: solution is kept)
-    _balanced: Any = None
-    _solution: ContactSolution | None = None
-    _context: Any = None
-
-    @classmethod
-    def _of(cls, **fields: Any) -> RevolutionWear:
-        """The instance of ``fields`` without the frozen dataclass's ``__init__`` (its
-        ``object.__setattr__`` per field cost a few microseconds a revolution)."""
-        instance = object.__new__(cls)
-        vars(instance).update(fields)
-        return instance
 
     #: the fields the compiled path evaluates when first read
     _EVALUATED: ClassVar[frozenset[str]] = frozenset(
         {"half_angle_left", "half_angle_right", "peak_pressure", "tangential_force",
          "springs_left", "springs_right"}
     )  # fmt: skip
+
+    def __init__(
+        self, wear: FloatArray, offset: FloatArray, window: int,
+        iterations: NDArray[np.int64], normal_force: FloatArray, *, balanced: Any = None,
+        solution: ContactSolution | None = None, context: Any = None, **evaluated: Any,
+    ) -> None:  # fmt: skip
+        if evaluated and not self._EVALUATED.issuperset(evaluated):
+            unknown = sorted(set(evaluated) - self._EVALUATED)
+            raise TypeError(f"RevolutionWear: unknown fields {unknown}")
+        # (the instance's dict: attributes are read-only, __setattr__ refuses them; one
+        # store each, as a run builds one of these per revolution)
+        fields = self.__dict__
+        fields["wear"], fields["offset"], fields["window"] = wear, offset, window
+        fields["iterations"], fields["normal_force"] = iterations, normal_force
+        fields["_balanced"], fields["_solution"], fields["_context"] = balanced, solution, context
+        if evaluated:
+            fields.update(evaluated)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError(f"RevolutionWear is read-only: cannot set {name!r}")
+
+    def __delattr__(self, name: str) -> None:
+        raise AttributeError(f"RevolutionWear is read-only: cannot delete {name!r}")
+
+    def __repr__(self) -> str:
+        return (
+            f"<RevolutionWear: {self.offset.size} loads, peak wear {float(self.wear.max()):.4g} m>"
+        )
 
     def __getattr__(self, name: str) -> Any:
         # only reached for a field not set: one the compiled path evaluates on first read
@@ -169,7 +193,9 @@ class _WindowSolution(ContactSolution):
 
     #: fields assembled on first read, by the method of the revolution that builds them
     _ASSEMBLED: ClassVar[dict[str, str]] = {
-        "pressure": "_pressure", "eccentricity": "_eccentricity", "penetration": "_penetration"
+        "pressure": "_pressure",
+        "eccentricity": "_eccentricity",
+        "penetration": "_penetration",
     }
     #: fields that are the revolution's own
     _SHARED = frozenset(
@@ -210,14 +236,12 @@ class _Lines:
     def __init__(self, nodes: int, azimuth: FloatArray) -> None:
         self.nodes = nodes
         dtheta = 2 * np.pi / nodes
-        wrapped = np.mod(azimuth, 2 * np.pi)
-        self.centre = np.rint(wrapped / dtheta).astype(np.int64)
-        self.shift = self.centre * dtheta - wrapped
+        position, self.centre, self.shift = nearest_nodes(nodes, azimuth)
         self.cos_shift, self.sin_shift = np.cos(self.shift), np.sin(self.shift)
         #: the azimuths this is cached for (the key's bytes): a warm revolution's context
         self.azimuth = azimuth.copy()
         self.finite = bool(np.isfinite(azimuth).all())
-        self.stencil = RadiusStencil.at(nodes, wrapped)
+        self.stencil = RadiusStencil.at(nodes, position)
         self.lower_weight = 1 - self.stencil.weight
         self.quarter = nodes // 4
         self.pad = self.quarter + 1
@@ -319,7 +343,8 @@ def revolution_wear(
     law : SpringLaw
         Spring law (:func:`jointwear.contact.contact_law`).
     wear_coefficient : float
-        Dimensional Archard coefficient ``K_d`` [1/Pa].
+        Dimensional Archard coefficient ``K_d = k / H`` [1/Pa] (the kernel adds the wear
+        itself: the module notes).
     max_penetration : float, optional
         Largest admissible penetration at the compression centre, normally the wall
         thickness [m]; a load needing more raises :class:`ContactError`.
@@ -356,6 +381,17 @@ def revolution_wear(
         result = None if warm is None else warm(contour, initial_offset)
         if result is not None:
             return result
+    return _compiled_revolution(
+        module, contour, pin, load, azimuth, sliding_distance, law, wear_coefficient,
+        max_penetration, initial_offset, tolerance, max_iterations,
+    )  # fmt: skip
+
+
+def _compiled_revolution(
+    module, contour, pin, load, azimuth, sliding_distance, law, wear_coefficient,
+    max_penetration, initial_offset, tolerance, max_iterations,
+):  # fmt: skip
+    """The compiled revolution from any inputs (checked here), cold or warm."""
     load, azimuth = checked_loads(load, azimuth)
     m = load.size
     sliding = np.asarray(sliding_distance, dtype=float).ravel()
@@ -367,16 +403,7 @@ def revolution_wear(
         contour, pin, load, azimuth, law, max_penetration
     )
     if initial_offset is None:
-        guess, conformal = known.zeros, np.zeros(m)
-        # the conformal estimate starts only a load without a balanced predecessor (the
-        # first, or one after a zero load): the others start from their predecessor
-        # (usually one: scalars cost less than arrays of one)
-        alone = np.flatnonzero((load > 0.0) & np.concatenate(([True], load[:-1] <= 0.0)))
-        for k in alone.tolist():
-            clearance = max(float(centre_gap[k]), 1e-12 * pin.radius)
-            conformal[k] = clearance + _conformal_depth(
-                contour, pin.radius, law, float(load[k]), clearance
-            )
+        guess, conformal = known.zeros, _conformal_starts(contour, pin, law, load, centre_gap)
     else:
         guess, conformal = np.asarray(initial_offset, dtype=float).ravel(), known.zeros
         if guess.size != m:
@@ -386,6 +413,20 @@ def revolution_wear(
         initial_offset is not None, _solver(law, tolerance, max_iterations), guess, conformal,
         nodes, grid, lines, centre_gap, known,
     )  # fmt: skip
+
+
+def _conformal_starts(contour, pin, law, load, centre_gap):
+    """The conformal estimate of the offset [m] of each load without a balanced
+    predecessor (the first, or one after a zero load), 0 for the others: they start from
+    their predecessor (usually one load: scalars cost less than arrays of one)."""
+    conformal = np.zeros(load.size)
+    alone = np.flatnonzero((load > 0.0) & np.concatenate(([True], load[:-1] <= 0.0)))
+    for k in alone.tolist():
+        clearance = max(float(centre_gap[k]), 1e-12 * pin.radius)
+        conformal[k] = clearance + conformal_depth(
+            contour, pin.radius, law, float(load[k]), clearance
+        )
+    return conformal
 
 
 class WarmRevolutions:
@@ -538,7 +579,7 @@ def _plain(array: FloatArray) -> FloatArray:
 def _solver(law: SpringLaw, tolerance: float, max_iterations: int) -> tuple[Any, ...]:
     """The compiled kernel's ``solver``: force tolerance [N], round-off ulps, evaluations
     allowed, the Chebyshev step's ``kappa``."""
-    return (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), _curvature(law))
+    return (float(tolerance), ROUND_OFF_ULPS, int(max_iterations), step_curvature(law))
 
 
 def _run(
@@ -564,7 +605,7 @@ def _run(
     # the revolution's own: a state keeps its wear uncopied
     wear.setflags(write=False)
     if failed:
-        _check(counts[1] == 0, offset, lines[7], load, azimuth, total - load)
+        check_converged(counts[1] == 0, offset, lines[7], load, azimuth, total - load)
 
     def balanced(rows: int) -> tuple[FloatArray, dict[str, Any]]:
         pressure = np.zeros((rows, contour.nodes))
@@ -582,16 +623,11 @@ def _run(
             "springs_right": springs[1],
         }  # fmt: skip
 
-    return RevolutionWear._of(
-        wear=wear,
-        offset=offset,
-        # (the widest window holds every node in contact, and one beyond)
-        window=widest + 2,
-        iterations=counts[0],
-        normal_force=total,
-        _balanced=balanced,
-        _context=(contour, pin, azimuth, law, centre_gap),
-    )
+    # (the widest window holds every node in contact, and one beyond)
+    return RevolutionWear(
+        wear, offset, widest + 2, counts[0], total, balanced=balanced,
+        context=(contour, pin, azimuth, law, centre_gap),
+    )  # fmt: skip
 
 
 def _arguments(contour, pin, load, azimuth, law, max_penetration):
@@ -616,7 +652,7 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
         padded_radius = radius.take(lines.padded)
         gap_ext, load_gap = padded_radius - rp, lines.zeros
         smallest = float(radius.min()) - rp
-        if smallest >= 0.999 * rp:
+        if smallest >= PIN_REACH * rp:
             check_reach(np.full(m, smallest), load, azimuth, rp)
         gap_min = np.full(m, smallest)
     if law.force_area is not None:
@@ -627,14 +663,8 @@ def _arguments(contour, pin, load, azimuth, law, max_penetration):
         area_ext, load_area = padded_radius * spring, lines.ones
     # the bracket: no node touches at the smallest gap; the pin's reach or the wall
     lower = gap_min
-    if max_penetration is not None:
-        upper = np.minimum(centre_gap + max_penetration, 0.999 * rp)
-    else:
-        upper = np.full(m, 0.999 * rp)
-    np.maximum(upper, lower, out=upper)
-    nodes, per_load = lines.arguments(
-        gap_ext, area_ext, load_gap, load_area, gap_min, lower, upper
-    )
+    upper = upper_bound(centre_gap, rp, max_penetration, lower)
+    nodes, per_load = lines.arguments(gap_ext, area_ext, load_gap, load_area, gap_min, lower, upper)
     grid = lines.grid(contour.dtheta, float(rp), law)
     return nodes, grid, per_load, centre_gap, lines
 
@@ -653,7 +683,7 @@ def _numpy_revolution(
     tolerance,
     max_iterations,
 ):
-    """The readable reference: the NumPy balance, then Archard on the dense pressure."""
+    """The NumPy path: the windowed balance, then Archard on the dense pressure."""
     warm: dict[str, Any] = {}
     if initial_offset is not None:
         warm = {"initial_offset": initial_offset, "window": window}
@@ -674,7 +704,7 @@ def _numpy_revolution(
     offset = np.einsum("ij,ij->i", solution.eccentricity, unit)
     widest = max(float(solution.half_angle_left.max()), float(solution.half_angle_right.max()))
     return RevolutionWear(
-        wear=wear_depth(solution.pressure, sliding, wear_coefficient),
+        wear=archard_wear(solution.pressure, sliding, wear_coefficient),
         offset=offset,
         window=int(math.ceil(widest / contour.dtheta) + 3),
         iterations=solution.iterations,
@@ -685,5 +715,28 @@ def _numpy_revolution(
         tangential_force=solution.tangential_force,
         springs_left=solution.springs_left,
         springs_right=solution.springs_right,
-        _solution=solution,
+        solution=solution,
     )
+
+
+def archard_wear(
+    pressure: FloatArray, sliding_distance: FloatArray, wear_coefficient: float
+) -> FloatArray:
+    """Archard's wear depth of a revolution at every node [m] (the NumPy path's).
+
+    .. math:: h_j = K_d \\sum_k p_{jk} \\, \\Delta s_k
+
+    :func:`jointwear.tribology.archard.wear_depth`, written here as the kernel's one
+    deliberate copy of a formula (the module notes); the compiled loop adds the same
+    ``K_d p_jk ds_k`` load by load.
+
+    Parameters
+    ----------
+    pressure : ndarray, shape (M, N)
+        Pressure on node ``j`` at step ``k`` [Pa].
+    sliding_distance : ndarray, shape (M,)
+        Sliding distance of each step [m].
+    wear_coefficient : float
+        Dimensional Archard coefficient ``K_d = k / H`` [1/Pa].
+    """
+    return wear_coefficient * (sliding_distance @ pressure)

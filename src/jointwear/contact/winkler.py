@@ -145,28 +145,29 @@ def circle_force(
     """
     s = clearance + np.asarray(approach, float)
     if pin_radius is None:
-        alpha = np.arccos(np.clip(clearance / s, -1.0, 1.0))
-        force = (
-            stiffness
-            * axial_length
-            * radius
-            * (0.5 * s * (2 * alpha + np.sin(2 * alpha)) - 2 * clearance * np.sin(alpha))
-        )
-        return force, alpha
+        return _first_order_force(s, clearance, stiffness * axial_length * radius)
+    return _curved_force(s, clearance, stiffness * axial_length * radius, pin_radius)
+
+
+def _first_order_force(s, clearance, scale):
+    """:func:`circle_force` without the pin's curvature: force [N] and half-angle [rad] at
+    offset ``s`` [m], clearance [m] and ``scale = k b R`` [N/m^2]."""
+    alpha = np.arccos(np.clip(clearance / s, -1.0, 1.0))
+    force = scale * (0.5 * s * (2 * alpha + np.sin(2 * alpha)) - 2 * clearance * np.sin(alpha))
+    return force, alpha
+
+
+def _curved_force(s, clearance, scale, pin_radius):
+    """:func:`circle_force` with the pin's curvature to second order (pin radius [m])."""
     kappa = s**2 / (2.0 * pin_radius)
     # root of kappa x^2 + s x - (c + kappa) = 0 in the cancellation-free form
     cos_alpha = 2.0 * (clearance + kappa) / (s + np.sqrt(s**2 + 4.0 * kappa * (clearance + kappa)))
     alpha = np.arccos(np.clip(cos_alpha, -1.0, 1.0))
     sin_alpha = np.sin(alpha)
-    force = (
-        stiffness
-        * axial_length
-        * radius
-        * (
-            s * (alpha + sin_alpha * np.cos(alpha))
-            - 2.0 * clearance * sin_alpha
-            - (2.0 / 3.0) * kappa * sin_alpha**3
-        )
+    force = scale * (
+        s * (alpha + sin_alpha * np.cos(alpha))
+        - 2.0 * clearance * sin_alpha
+        - (2.0 / 3.0) * kappa * sin_alpha**3
     )
     return force, alpha
 

@@ -20,12 +20,12 @@ smaller than the bushing), and a bracketed Newton iteration
 
 Starting points: a warm start takes the caller's offsets (the previous revolution).
 A cold start on a circle (an unworn bushing, or the symmetric law) takes the
-node-free contact of a pin in a circle (:func:`_circle_guess`, ~1e-5 of the load
-off); on a worn contour a batch of >= 64 loads solves every 8th load first and
-interpolates (:func:`_coarse_guess`), a small batch starts from a conformal-contact
-estimate. The balance of a cold start then takes fourth-order steps (power law
-1.5: the residual gives its second and third derivatives), which bring a ~1e-5
-start to round-off in one step: two evaluations per load, the step and the check.
+node-free contact of a pin in a circle (:func:`.guesses.circle_guess`, ~1e-5 of the
+load off); on a worn contour a batch of >= 64 loads solves every 8th load first and
+interpolates (:func:`.guesses.coarse_guess`), a small batch starts from a
+conformal-contact estimate. The balance of a cold start then takes fourth-order steps
+(power law 1.5: the residual gives its second and third derivatives), which bring a
+~1e-5 start to round-off in one step: two evaluations per load, the step and the check.
 
 Convergence: ``|F_total - F| <= max(tolerance, 8 eps * sum|f_j|)``: the
 paper's 1e-12 N, with a round-off floor for loads where 1e-12 N is below what
@@ -33,27 +33,24 @@ double precision can resolve in a sum of spring forces; and where one ulp of the
 offset moves the sum by more than that (deep wear, stiff contact), a residual that
 a few ulps of the offset explain (no bisection below what the arithmetic resolves).
 
-Modules:
+Modules: one statement of the balance, one windowed solver, one compiled kernel.
 
-* :mod:`.paper`: eqs. (5)/(7) stated plainly on every node, the reference;
+* :mod:`.paper`: eqs. (5)/(7) stated plainly on every node, the reference
+  (:func:`~.paper.paper_balance`, :func:`~.paper.paper_pressure`);
 * :mod:`.solve`: :func:`solve_contact`, the batched solver on node windows;
 * :mod:`.window`: window geometry (cached), bracket, contact extent;
 * :mod:`.residual`: the fused, allocation-free NumPy residual;
 * :mod:`.guesses`: conformal estimate, node-free circle, coarse pass;
 * :mod:`.equilibrium`: full 2-D equilibrium.
 
-The simulation's inner step, balance and Archard wear in one compiled loop per load,
-is :func:`jointwear.contact.kernel.revolution_wear`.
+The simulation's inner step, balance and Archard wear per revolution, is
+:func:`jointwear.contact.kernel.revolution_wear`: a compiled loop per load
+(:mod:`jointwear.contact._compiled`, held to :mod:`.paper` by the tests), or without
+numba :func:`solve_contact` itself.
 """
 
 from __future__ import annotations
 
-# the pieces the tests exercise one by one
-from jointwear.contact.balance.guesses import _circle_guess as _circle_guess
-from jointwear.contact.balance.guesses import _coarse_guess as _coarse_guess
 from jointwear.contact.balance.solve import check_reach, checked_loads, solve_contact
-from jointwear.contact.balance.window import _half_angles as _half_angles
-from jointwear.contact.balance.window import _reach_width as _reach_width
-from jointwear.contact.balance.window import _widest as _widest
 
 __all__ = ["check_reach", "checked_loads", "solve_contact"]

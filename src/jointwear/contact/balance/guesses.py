@@ -3,22 +3,25 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numpy.polynomial import chebyshev
 from numpy.typing import NDArray
 
-from jointwear.contact.balance.residual import _PaperResidual
-from jointwear.contact.balance.window import _bracket, _widest, _Window
+from jointwear.contact.balance.residual import PaperResidual
+from jointwear.contact.balance.window import Window, bracket, widest_half_angle
 from jointwear.contact.laws import PowerLaw, SpringLaw
-from jointwear.geometry.contour import BushingContour
+from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.solvers import bracketed_newton
+
+__all__ = ["circle_guess", "coarse_guess", "conformal_depth", "conformal_guess", "step_curvature"]
 
 FloatArray = NDArray[np.float64]
 
 
 #: the coarse pass solves every 8th load, to |F_total - F| <= 1e-3 F (then one more,
-#: unevaluated step: see _coarse_guess)
+#: unevaluated step: see coarse_guess)
 _COARSE_STRIDE = 8
 
 
@@ -29,8 +32,8 @@ _COARSE_RTOL = 1e-3
 _INTERPOLATION_CACHE: dict[tuple[int, bytes], tuple[NDArray[np.intp], FloatArray]] = {}
 
 
-def _initial_guess(
-    win: _Window,
+def conformal_guess(
+    win: Window,
     law: SpringLaw,
     contour: BushingContour,
     pin_radius: float,
@@ -38,15 +41,36 @@ def _initial_guess(
     lower: FloatArray,
     upper: FloatArray,
 ) -> FloatArray:
-    """Pin displacement estimated from a conformal-contact model, for a cold start."""
+    """Pin displacement along each load line estimated from conformal contact [m].
+
+    A cold start's guess (:func:`conformal_depth` beyond the clearance), within the
+    bracket; the bracket's middle for a law that is not a power law.
+
+    Parameters
+    ----------
+    win : Window
+        The loads' windows (their radius on the load lines).
+    law : SpringLaw
+        Spring law.
+    contour : BushingContour
+        The contour.
+    pin_radius : float
+        ``R_p`` [m].
+    load : ndarray, shape (M,)
+        Joint loads [N].
+    lower, upper : ndarray, shape (M,)
+        Bracket of the offset [m].
+    """
     if not isinstance(law, PowerLaw):
         return 0.5 * (lower + upper)
     clearance = np.maximum(win.centre_radius - pin_radius, 1e-12 * pin_radius)
-    delta = _conformal_depth(contour, pin_radius, law, load, clearance)
+    delta = conformal_depth(contour, pin_radius, law, load, clearance)
     return np.clip(clearance + delta, lower, upper)
 
 
-def _conformal_depth(contour, pin_radius, law, load, clearance):
+def conformal_depth(
+    contour: BushingContour, pin_radius: float, law: PowerLaw, load: Any, clearance: Any
+) -> Any:
     """Penetration at the compression centre from a conformal-contact model [m].
 
     A power law ``p = k delta^n`` on a circle of clearance ``c``, small angles: the
@@ -54,6 +78,9 @@ def _conformal_depth(contour, pin_radius, law, load, clearance):
     so ``F = (A k / dtheta) B(n) delta_0^n alpha``, ``B(n) = sqrt(pi) Gamma(n+1) /
     Gamma(n+3/2)``. Two fixed-point passes for ``delta_0``; only a starting point for Newton
     (the half-angle ``alpha`` came out 3 % below the solved one for the paper's NLCP case).
+
+    ``load`` [N] and ``clearance`` [m] are floats or arrays of one shape; ``pin_radius``
+    is ``R_p`` [m].
     """
     n = law.exponent
     if law.force_area is not None:
@@ -68,8 +95,8 @@ def _conformal_depth(contour, pin_radius, law, load, clearance):
     return delta
 
 
-def _curvature(law: SpringLaw) -> float:
-    """``kappa = (m - 1) / m`` of the total force ``F ~ u^m`` for the Chebyshev step.
+def step_curvature(law: SpringLaw) -> float:
+    """``kappa = (m - 1) / m`` [-] of the total force ``F ~ u^m`` for the Chebyshev step.
 
     A power law ``p ~ delta^n`` in conformal contact (small angles) carries
     ``F ~ delta_0^n alpha`` with the half-angle ``alpha ~ sqrt(delta_0)``: ``m = n + 1/2``.
@@ -103,8 +130,16 @@ _CIRCLE_RULE = _circle_rule(10)
 _CHEBYSHEV_POINTS = 12
 
 
-def _circle_guess(contour, pin, law, load, azimuth):
-    """Pin offsets from the node-free contact of a circle, and the widest half-angle [rad].
+def circle_guess(
+    contour: BushingContour,
+    pin: Pin,
+    law: SpringLaw,
+    load: FloatArray,
+    azimuth: FloatArray,
+) -> tuple[FloatArray, float] | None:
+    """Pin offsets [m] from the node-free contact of a circle, and the widest half-angle [rad].
+
+    ``load`` [N] and ``azimuth`` [rad] are the loads' magnitudes and directions.
 
     Applies where every spring of a load lies on one circle (an unworn bushing, or the
     symmetric law's circle through the compression centre) and the law is a power law
@@ -121,7 +156,7 @@ def _circle_guess(contour, pin, law, load, azimuth):
     radius = contour.radius
     rp = pin.radius
     if law.symmetric:
-        r = contour.radius_at(np.mod(azimuth, 2 * np.pi))
+        r = contour.radius_at(azimuth)  # (it takes the azimuths modulo 2 pi)
     elif radius.min() == radius.max():
         r = np.full(load.shape, radius[0])
     else:
@@ -179,7 +214,7 @@ def _circle_offsets(contour, pin_radius, law, load, radius, steps: int = 2) -> F
     rp = pin_radius
     n = law.exponent
     clearance = np.maximum(radius - rp, 1e-12 * rp)
-    start = delta = _conformal_depth(contour, rp, law, load, clearance)
+    start = delta = conformal_depth(contour, rp, law, load, clearance)
     if law.force_area is not None:
         per_radian = law.force_area / contour.dtheta
     else:
@@ -235,13 +270,21 @@ def _coarse_indices(size: int) -> NDArray[np.intp]:
     return coarse
 
 
-def _coarse_guess(
-    contour, pin, law, load, azimuth, tolerance, max_iterations, max_penetration, window
-):
-    """Pin offsets of every load from a coarse pass, and the widest contact half-angle [rad].
+def coarse_guess(
+    contour: BushingContour,
+    pin: Pin,
+    law: SpringLaw,
+    load: FloatArray,
+    azimuth: FloatArray,
+    tolerance: float,
+    max_iterations: int,
+    max_penetration: float | None,
+    window: int | None,
+) -> tuple[FloatArray, float]:
+    """Pin offsets of every load from a coarse pass [m], and the widest half-angle [rad].
 
     Used for a cold start where the springs do not lie on a circle (a worn contour; see
-    :func:`_circle_guess` for the others). Every 8th load (and the last) is balanced,
+    :func:`circle_guess` for the others). Every 8th load (and the last) is balanced,
     the others are interpolated (local cubic Lagrange in the load index: ~1e-5 of the
     load on the paper case, an error of the node grid's ripple rather than of the
     interpolation). The coarse loads are solved to ``|F_total - F| <= 1e-3 F`` with
@@ -251,6 +294,10 @@ def _coarse_guess(
     contact solution is assembled, and the window is sized from the conformal-contact
     estimate of the half-angle (widened to 90 degrees if the contact reaches its edge).
     A long batch starts its coarse pass from a coarser one (recursively).
+
+    ``load`` [N], ``azimuth`` [rad], ``tolerance`` [N], ``max_iterations``,
+    ``max_penetration`` [m] and ``window`` [nodes] are those of
+    :func:`jointwear.contact.balance.solve_contact`.
     """
     full = contour.nodes // 4
     coarse = _coarse_indices(load.size)
@@ -259,21 +306,14 @@ def _coarse_guess(
     clearance = np.maximum(centre - pin.radius, 1e-12 * pin.radius)
     start = depth0 = None
     if coarse.size >= 64:
-        start, widest = _coarse_guess(
-            contour,
-            pin,
-            law,
-            c_load,
-            c_azimuth,
-            tolerance,
-            max_iterations,
-            max_penetration,
-            window,
-        )
+        start, widest = coarse_guess(
+            contour, pin, law, c_load, c_azimuth, tolerance, max_iterations,
+            max_penetration, window,
+        )  # fmt: skip
         width = int(np.ceil(1.05 * widest / contour.dtheta) + 3)
     elif isinstance(law, PowerLaw):
         # conformal contact: a starting point, and the half-angle for the window
-        depth0 = _conformal_depth(contour, pin.radius, law, c_load, clearance)
+        depth0 = conformal_depth(contour, pin.radius, law, c_load, clearance)
         alpha = float(np.sqrt(2 * depth0 / (clearance + depth0)).max())
         width = window if window is not None else int(np.ceil(1.2 * alpha / contour.dtheta) + 3)
     else:
@@ -281,35 +321,42 @@ def _coarse_guess(
     width = int(min(max(width, 2), full))
     width = min(-(-width // 4) * 4, full)
     while True:
-        win = _Window(contour, c_azimuth, width, law, pin.radius, centre_radius=centre)
-        lower, upper = _bracket(win, contour, pin.radius, c_load, max_penetration)
+        win = Window(contour, c_azimuth, width, law, pin.radius, centre_radius=centre)
+        lower, upper = bracket(win, contour, pin.radius, c_load, max_penetration)
         if start is not None:
             guess = start
         elif depth0 is not None:
             guess = np.clip(clearance + depth0, lower, upper)
         else:
             guess = 0.5 * (lower + upper)
-        guess = np.where(c_load > 0, guess, lower)
-        # (third-order steps: from the conformal estimate, up to 2x off on a worn contour,
-        # a fourth-order one is no better and sometimes worse)
-        residual = _PaperResidual(win, law, pin.radius, c_load, tolerance, order=2)
-        root = bracketed_newton(
-            residual,
-            guess,
-            lower,
-            upper,
-            tolerance,
-            rtol=_COARSE_RTOL,
-            max_iterations=max_iterations,
-            curvature=_curvature(law),
-            polish=True,
-        )
-        depth = residual.depth
+        offset, depth = _coarse_balance(win, law, pin, c_load, guess, lower, upper, tolerance,
+                                        max_iterations)  # fmt: skip
         contact = depth > 0
         if width >= full or not (contact[:, 0].any() or contact[:, -1].any()):
             break
         width = full
-    return _cubic_interpolation(coarse, root.x, load.size), _widest(win.phi, depth, contact)
+    widest = widest_half_angle(win.phi, depth, contact)
+    return _cubic_interpolation(coarse, offset, load.size), widest
+
+
+def _coarse_balance(win, law, pin, load, guess, lower, upper, tolerance, max_iterations):
+    """The coarse loads balanced to :data:`_COARSE_RTOL`: offsets [m] and window depths [m]."""
+    guess = np.where(load > 0, guess, lower)
+    # (third-order steps: from the conformal estimate, up to 2x off on a worn contour,
+    # a fourth-order one is no better and sometimes worse)
+    residual = PaperResidual(win, law, pin.radius, load, tolerance, order=2)
+    root = bracketed_newton(
+        residual,
+        guess,
+        lower,
+        upper,
+        tolerance,
+        rtol=_COARSE_RTOL,
+        max_iterations=max_iterations,
+        curvature=step_curvature(law),
+        polish=True,
+    )
+    return root.x, residual.depth
 
 
 def _cubic_interpolation(known: NDArray[np.intp], values: FloatArray, size: int) -> FloatArray:

@@ -18,11 +18,13 @@ with ``p`` the spring law (Winkler ``k delta``, eq. 5; NLCP ``K delta^n / A``, e
     f'(s) = \\sum_j p'(\\delta_j) A_j \\cos\\beta_j \\, \\delta_j'(s), \\qquad
     \\delta_j' = \\cos\\beta_j - \\frac{s \\sin^2\\beta_j}{\\sqrt{R_p^2 - s^2 \\sin^2\\beta_j}}.
 
-This module solves exactly that, on every node, with :func:`bracketed_newton`: the
-statement the fast solvers are held to. :func:`jointwear.contact.balance.solve_contact`
-solves the same equation on node windows with fused NumPy arithmetic and warm starts
-(:mod:`.window`, :mod:`.residual`, :mod:`.guesses`), and
-:func:`jointwear.contact.kernel.revolution_wear` in one compiled loop per load.
+This module solves exactly that, on every node, with :func:`bracketed_newton`
+(:func:`paper_balance`), and gives the pressure of a pin position
+(:func:`paper_pressure`): the statement the fast solvers are held to (to 1e-9 and
+tighter, in the tests). :func:`jointwear.contact.balance.solve_contact` solves the same
+equation on node windows with fused NumPy arithmetic and warm starts (:mod:`.window`,
+:mod:`.residual`, :mod:`.guesses`), and :func:`jointwear.contact.kernel.revolution_wear`
+in one compiled loop per load.
 """
 
 from __future__ import annotations
@@ -30,11 +32,13 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from jointwear.contact.balance.window import PIN_REACH
 from jointwear.contact.laws import SpringLaw
+from jointwear.geometry.angles import wrap_angle
 from jointwear.geometry.contour import BushingContour, Pin, pin_penetration
 from jointwear.solvers import bracketed_newton
 
-__all__ = ["paper_balance", "paper_residual"]
+__all__ = ["paper_balance", "paper_pressure", "paper_residual"]
 
 FloatArray = NDArray[np.float64]
 
@@ -110,7 +114,57 @@ def paper_balance(
     """
     load = np.asarray(load, dtype=float).ravel()
     azimuth = np.asarray(azimuth, dtype=float).ravel()
-    beta = np.angle(np.exp(1j * (contour.theta[None, :] - azimuth[:, None])))
+    beta, gap, area = _nodes(contour, pin, azimuth, law)
+    lower = gap.min(axis=1)
+    upper = np.full(load.shape, PIN_REACH * pin.radius)
+
+    def residual(s: FloatArray, rows: NDArray[np.intp]):
+        return paper_residual(s, beta[rows], gap[rows], area[rows], law, pin.radius, load[rows])
+
+    root = bracketed_newton(
+        residual, 0.5 * (lower + upper), lower, upper, tolerance, max_iterations=max_iterations
+    )
+    return root.x
+
+
+def paper_pressure(
+    contour: BushingContour,
+    pin: Pin,
+    offset: ArrayLike,
+    azimuth: ArrayLike,
+    law: SpringLaw,
+) -> FloatArray:
+    """Pressure on every node with the pin displaced along each load line [Pa], (M, N).
+
+    ``p(delta_j(s))`` on the nodes within 90 degrees of the load line, 0 elsewhere: the
+    pressure whose resultant :func:`paper_balance` balances, at its offsets.
+
+    Parameters
+    ----------
+    contour : BushingContour
+        Bushing contour.
+    pin : Pin
+        The pin.
+    offset : array_like, shape (M,)
+        Pin displacement ``s`` along each load line [m].
+    azimuth : array_like, shape (M,)
+        Load directions in the bushing frame [rad].
+    law : SpringLaw
+        Spring law.
+    """
+    offset = np.asarray(offset, dtype=float).ravel()[:, None]
+    beta, gap, area = _nodes(contour, pin, np.asarray(azimuth, dtype=float).ravel(), law)
+    depth = pin_penetration(offset * np.cos(beta), offset * np.sin(beta), gap, pin.radius)
+    return np.where(area > 0, law.pressure(np.maximum(depth, 0.0)), 0.0)
+
+
+def _nodes(
+    contour: BushingContour, pin: Pin, azimuth: FloatArray, law: SpringLaw
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Node angles from each load line [rad], radial gaps [m] and spring areas [m^2]
+    (0 for nodes 90 degrees or more from the load line, which cannot touch), (M, N) each.
+    The symmetric law's springs lie on the circle through the compression centre."""
+    beta = wrap_angle(contour.theta[None, :] - azimuth[:, None])
     reach = np.abs(beta) < 0.5 * np.pi
     radius = np.broadcast_to(contour.radius, beta.shape)
     if law.symmetric:
@@ -120,13 +174,4 @@ def paper_balance(
         area = np.where(reach, law.force_area, 0.0)
     else:
         area = np.where(reach, radius * contour.dtheta * contour.axial_length, 0.0)
-    lower = gap.min(axis=1)
-    upper = np.full(load.shape, 0.999 * pin.radius)
-
-    def residual(s: FloatArray, rows: NDArray[np.intp]):
-        return paper_residual(s, beta[rows], gap[rows], area[rows], law, pin.radius, load[rows])
-
-    root = bracketed_newton(
-        residual, 0.5 * (lower + upper), lower, upper, tolerance, max_iterations=max_iterations
-    )
-    return root.x
+    return beta, gap, area

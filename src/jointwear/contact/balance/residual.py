@@ -1,4 +1,8 @@
-"""The paper balance's residual on a window, fused and allocation-free (NumPy)."""
+"""The paper balance's residual on a window, fused and allocation-free (NumPy).
+
+The same equation as :func:`jointwear.contact.balance.paper.paper_residual`, evaluated on
+the windows of :mod:`.window` in reused buffers.
+"""
 
 from __future__ import annotations
 
@@ -7,8 +11,10 @@ import threading
 import numpy as np
 from numpy.typing import NDArray
 
-from jointwear.contact.balance.window import _rowdot, _Window
+from jointwear.contact.balance.window import Window, rowdot
 from jointwear.contact.laws import PowerLaw, SpringLaw
+
+__all__ = ["PaperResidual"]
 
 FloatArray = NDArray[np.float64]
 
@@ -38,7 +44,7 @@ def _scratch(name: str, count: int, shape: tuple[int, int]) -> list[FloatArray]:
     return [store[i, :size].reshape(shape) for i in range(count)]
 
 
-class _PaperResidual:
+class PaperResidual:
     """Residual of the paper balance for :func:`bracketed_newton`, fused and allocation-free.
 
     For pin displacement ``s`` along the load the depth of window node ``j`` is
@@ -58,19 +64,36 @@ class _PaperResidual:
     hundred kB cost page faults, the ``sys`` time seen in profiles, and blocks stay
     in cache); power laws with exponent 1 or 1.5 (Winkler, NLCP) take a fused path
     (one ``sqrt`` serves force and stiffness); the sums are row-wise dot products
-    (:data:`_rowdot`). The derivative is computed only for loads that the residual
-    shows are not converged yet (the last evaluation of a warm-started load is just
-    the check). The depth and ``pressure / coefficient`` of every load's last
-    evaluation are kept, so the final state is read off instead of recomputed. A call
-    for most of the batch evaluates the whole batch (loads already converged are
-    re-evaluated at their root, bit for bit) rather than gathering rows.
+    (:data:`~jointwear.contact.balance.window.rowdot`). The derivative is computed only
+    for loads that the residual shows are not converged yet (the last evaluation of a
+    warm-started load is just the check). The depth and ``pressure / coefficient`` of
+    every load's last evaluation are kept, so the final state is read off instead of
+    recomputed. A call for most of the batch evaluates the whole batch (loads already
+    converged are re-evaluated at their root, bit for bit) rather than gathering rows.
+
+    Parameters
+    ----------
+    win : Window
+        The loads' node windows.
+    law : SpringLaw
+        Spring law ``p(delta)`` [m -> Pa].
+    pin_radius : float
+        ``R_p`` [m].
+    load : ndarray, shape (M,)
+        Joint loads ``F`` [N].
+    tolerance : float
+        Absolute force tolerance [N].
+    rtol : float
+        Round-off floor of the convergence test, relative to ``sum_j |f_j|`` [-].
+    order : int
+        Highest derivative formed with the slope (power law 1.5): 1, 2 or 3.
     """
 
     _BLOCK = 2**16
 
     def __init__(
         self,
-        win: _Window,
+        win: Window,
         law: SpringLaw,
         pin_radius: float,
         load: FloatArray,
@@ -206,12 +229,12 @@ class _PaperResidual:
         if self.exponent == 1.5:
             np.sqrt(pen, out=tmp)  # kept for the stiffness 1.5 sqrt(pen)
             np.multiply(tmp, pen, out=power)
-            total = _rowdot(power, weight)
+            total = rowdot(power, weight)
         elif self.exponent == 1.0:
             power[...] = pen
-            total = _rowdot(power, weight)
+            total = rowdot(power, weight)
         else:
-            total = _rowdot(self.law.pressure(pen), weight)
+            total = rowdot(self.law.pressure(pen), weight)
         derivatives = np.full((self.order, n), np.nan)
         slope = derivatives[0]
         # the derivative only where the residual is not yet within tolerance and the last
@@ -241,8 +264,8 @@ class _PaperResidual:
         np.divide(lat, root, out=lat)
         np.multiply(lat, weight, out=lat)
         if self.exponent == 1.5:
-            along = _rowdot(tmp, weight_cos)
-            across = _rowdot(tmp, lat)
+            along = rowdot(tmp, weight_cos)
+            across = rowdot(tmp, lat)
             slope[sel] = (1.5 * (along - across / s_sel))[pick]
             if self.order > 1:
                 higher = self._curvatures(s_sel, cos, sin2, weight, pen, tmp, across, lat, root)
@@ -250,13 +273,13 @@ class _PaperResidual:
                     derivatives[row, sel] = values[pick]
         elif self.exponent == 1.0:
             np.greater(pen, 0.0, out=root)  # 1.0 where in contact
-            along = _rowdot(root, weight_cos)
-            across = _rowdot(root, lat)
+            along = rowdot(root, weight_cos)
+            across = rowdot(root, lat)
             slope[sel] = (along - across / s_sel)[pick]
         else:
             derivative = self.law.pressure_derivative(pen)
-            along = _rowdot(derivative, weight_cos)
-            across = _rowdot(derivative, lat)
+            along = rowdot(derivative, weight_cos)
+            across = rowdot(derivative, lat)
             slope[sel] = (along - across / s_sel)[pick]
         return total, derivatives, need
 
@@ -286,11 +309,11 @@ class _PaperResidual:
         np.multiply(out, work, out=out)  # delta' / sqrt(delta)
         np.multiply(out, out, out=pen)  # delta'^2 / delta
         np.multiply(pen, root_pen, out=work)  # delta'^2 / sqrt(delta)
-        second = 0.75 * _rowdot(work, weight) - 1.5 * across / (s * s)
+        second = 0.75 * rowdot(work, weight) - 1.5 * across / (s * s)
         if self.order < 3:
             return (second,)
         pen *= out  # (delta' / sqrt(delta))^3
-        return second, -0.375 * _rowdot(pen, weight)
+        return second, -0.375 * rowdot(pen, weight)
 
     def pressure(self) -> FloatArray:
         """Pressure on the window at every load's last evaluation [Pa]."""

@@ -9,27 +9,30 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from jointwear.contact.balance.equilibrium import _equilibrium
+from jointwear.contact.balance.equilibrium import solve_equilibrium
 from jointwear.contact.balance.guesses import (
-    _circle_guess,
-    _coarse_guess,
-    _curvature,
-    _initial_guess,
+    circle_guess,
+    coarse_guess,
+    conformal_guess,
+    step_curvature,
 )
-from jointwear.contact.balance.residual import _PaperResidual
+from jointwear.contact.balance.residual import PaperResidual
 from jointwear.contact.balance.window import (
-    _bracket,
-    _half_angles,
-    _reach_width,
-    _resultant,
-    _springs,
-    _Window,
+    PIN_REACH,
+    Window,
+    bracket,
+    half_angles,
+    reach_width,
+    resultant,
+    springs_in_contact,
 )
 from jointwear.contact.laws import CallableSpringLaw, SpringLaw
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ContactError, ConvergenceError
 from jointwear.geometry.contour import BushingContour, Pin, pin_penetration
 from jointwear.solvers import bracketed_newton
+
+__all__ = ["check_converged", "check_reach", "checked_loads", "solve_contact"]
 
 FloatArray = NDArray[np.float64]
 
@@ -79,7 +82,8 @@ def solve_contact(
     initial_offset: ArrayLike | None = None,
     window: int | None = None,
 ) -> ContactSolution:
-    """Pressure on every bushing node for many loads on one contour.
+    """Pressure on every bushing node for many loads on one contour (a
+    :class:`ContactSolution`).
 
     Parameters
     ----------
@@ -92,9 +96,8 @@ def solve_contact(
     azimuth : array_like, shape (M,)
         Direction in which the pin presses on the bushing, in the bushing frame [rad].
     law : SpringLaw or callable
-        Spring law (e.g. from :func:`jointwear.contact.spring_law`) or a
-        callable ``pressure(penetration)`` [m -> Pa]. Hertz is solved by
-        :func:`jointwear.contact.hertz.solve` instead.
+        Spring law (:func:`jointwear.contact.contact_law`) or a callable
+        ``pressure(penetration)`` [m -> Pa]; Hertz is :func:`jointwear.contact.hertz.solve`.
     balance : {"paper", "equilibrium"}
         Balance along the load line only, or full 2-D equilibrium.
     tolerance : float
@@ -105,18 +108,13 @@ def solve_contact(
         Largest admissible penetration at the compression centre, normally the
         bushing wall thickness [m]; a load needing more raises :class:`ContactError`.
     initial_offset : array_like, shape (M,), optional
-        Initial guesses of the pin displacement along the load line [m]
-        (a previous solution), for warm starts.
+        Guesses of the pin displacement along the load line [m] (warm start).
     window : int, optional
         Half-width of the node window in nodes; widened automatically if the
         contact reaches its edge or a node beyond it could touch (non-contiguous
         contact on worn contours). Default: with ``initial_offset`` 90 degrees (always
         sufficient in paper mode; 2-D equilibrium may widen it up to 180 degrees),
         else sized from the cold start's estimate of the contact.
-
-    Returns
-    -------
-    ContactSolution
     """
     law = _law_from(law)
     load, azimuth = checked_loads(load, azimuth)
@@ -129,10 +127,38 @@ def solve_contact(
     # paper mode: the pin moves along the load, nodes > 90 deg away never touch; in 2-D
     # equilibrium the pin moves sideways too, so the window may have to grow further
     limit = full if balance == "paper" else max(full, (contour.nodes - 1) // 2)
+    guess, width = _start(
+        contour, pin, law, load, azimuth, tolerance, max_iterations, max_penetration,
+        initial_offset, window,
+    )  # fmt: skip
+    while True:
+        win = Window(contour, azimuth, width, law, pin.radius)
+        solution, edge, along, across = _solve_window(
+            win, contour, pin, load, azimuth, law, balance, tolerance, max_iterations,
+            max_penetration, guess, order=1 if initial_offset is not None else 3,
+        )  # fmt: skip
+        if width >= limit:
+            return solution
+        # contact need not be contiguous (worn contours): a node beyond a gap in the contact
+        # may touch although the window's edge nodes do not; the reach bound finds it
+        needed = reach_width(contour, pin, law, win.centre_radius, along, across)
+        if not edge and needed <= width:
+            return solution
+        width = int(min(max(needed, width + 1), limit))
+
+
+def _start(
+    contour, pin, law, load, azimuth, tolerance, max_iterations, max_penetration,
+    initial_offset, window,
+):  # fmt: skip
+    """Starting offsets [m] (None: :func:`conformal_guess`'s) and the window half-width
+    [nodes], a whole multiple of 4 (the cached window geometry is reused while the contact
+    width drifts from one solve to the next)."""
+    full = contour.nodes // 4
     if initial_offset is not None:
         guess = np.asarray(initial_offset, dtype=float).ravel()
         width = full if window is None else int(min(max(window, 2), full))
-    elif (circle := _circle_guess(contour, pin, law, load, azimuth)) is not None:
+    elif (circle := circle_guess(contour, pin, law, load, azimuth)) is not None:
         # every spring of a load on one circle (an unworn bushing, or the symmetric law):
         # the node-free contact gives every load's offset to ~1e-5 of its force, and the
         # contact's half-angle
@@ -145,67 +171,30 @@ def solve_contact(
         # warm start from neighbours: solve every 8th load (recursively, so a long
         # batch is solved coarse-to-fine), interpolate the rest, and size the node
         # window from the widest coarse contact
-        guess, widest = _coarse_guess(
+        guess, widest = coarse_guess(
             contour, pin, law, load, azimuth, tolerance, max_iterations, max_penetration, window
         )
         width = int(min(full, np.ceil(1.05 * widest / contour.dtheta) + 3))
     else:
         guess = None
         width = full if window is None else int(min(max(window, 2), full))
-    # whole multiples of 4 nodes: the cached window geometry is reused while the contact
-    # width drifts from one solve to the next
-    width = min(-(-width // 4) * 4, full)
-    while True:
-        win = _Window(contour, azimuth, width, law, pin.radius)
-        solution, edge, along, across = _solve_window(
-            win,
-            contour,
-            pin,
-            load,
-            azimuth,
-            law,
-            balance,
-            tolerance,
-            max_iterations,
-            max_penetration,
-            guess,
-            order=1 if initial_offset is not None else 3,
-        )
-        if width >= limit:
-            return solution
-        # contact need not be contiguous (worn contours): a node beyond a gap in the contact
-        # may touch although the window's edge nodes do not; the reach bound finds it
-        needed = _reach_width(contour, pin, law, win.centre_radius, along, across)
-        if not edge and needed <= width:
-            return solution
-        width = int(min(max(needed, width + 1), limit))
+    return guess, min(-(-width // 4) * 4, full)
 
 
 def _solve_window(
-    win,
-    contour,
-    pin,
-    load,
-    azimuth,
-    law,
-    balance,
-    tolerance,
-    max_iterations,
-    max_penetration,
-    guess,
-    order=1,
-):
+    win, contour, pin, load, azimuth, law, balance, tolerance, max_iterations,
+    max_penetration, guess, order=1,
+):  # fmt: skip
+    """The balance on windows of half-width ``win.width``: the solution, whether contact
+    reaches a window's edge, and the pin position along and across the load lines [m]."""
     radius_pin = pin.radius
-    lower, upper = _bracket(win, contour, radius_pin, load, max_penetration)
+    lower, upper = bracket(win, contour, radius_pin, load, max_penetration)
     check_reach(lower, load, azimuth, radius_pin)
-    area = win.area
-    geometry = win.geometry
-
     # a cold start (guesses good to ~1e-5 of the load) takes a fourth-order first step,
     # which lands within round-off for (almost) every load: two evaluations, not three
-    residual = _PaperResidual(win, law, radius_pin, load, tolerance, order=order)
+    residual = PaperResidual(win, law, radius_pin, load, tolerance, order=order)
     if guess is None:
-        guess = _initial_guess(win, law, contour, radius_pin, load, lower, upper)
+        guess = conformal_guess(win, law, contour, radius_pin, load, lower, upper)
     # no load: the pin just touches (a tolerance-sized contact would be arbitrary)
     guess = np.where(load > 0, guess, lower)
     root = bracketed_newton(
@@ -215,16 +204,12 @@ def _solve_window(
         upper,
         tolerance,
         max_iterations=max_iterations,
-        curvature=_curvature(law),
+        curvature=step_curvature(law),
     )
-    offset = root.x
-    iterations = root.iterations
-    _check(root.converged, offset, upper, load, azimuth, root.residual)
-
-    along = offset
-    across = None  # paper mode: the pin moves along the load only
+    check_converged(root.converged, root.x, upper, load, azimuth, root.residual)
+    along, across, iterations = root.x, None, root.iterations  # paper: along the load only
     if balance == "equilibrium":
-        along, across, extra = _equilibrium(
+        along, across, extra = solve_equilibrium(
             win, law, radius_pin, load, along, tolerance, max_iterations, lower, upper
         )
         iterations = iterations + extra
@@ -234,22 +219,30 @@ def _solve_window(
         cross = win.cos * b_col - win.sin * a_col
         depth = pin_penetration(proj, cross, win.gap, radius_pin)
         pressure_w = law.pressure(np.maximum(depth, 0.0))
-        normal = _resultant(pressure_w, area, win.cos)
+        normal = resultant(pressure_w, win.area, win.cos)
     else:
         # every load's last residual evaluation was at its root: reuse its depth and sum
         depth = residual.depth
         pressure_w = residual.pressure()
         normal = residual.total.copy()
-    tangential = _resultant(pressure_w, area, win.sin)
+    solution, edge = _solution(win, contour, radius_pin, law, depth, pressure_w, normal,
+                               (along, across), iterations)  # fmt: skip
+    return solution, edge, along, across
 
-    m = load.size
-    pressure = np.zeros((m, contour.nodes))
+
+def _solution(win, contour, radius_pin, law, depth, pressure_w, normal, position, iterations):
+    """The :class:`ContactSolution` of a balanced window state (depths [m], pressures [Pa],
+    normal resultants [N], pin position along and across [m]), and whether contact reaches
+    a window's edge."""
+    along, across = position
+    geometry = win.geometry
+    tangential = resultant(pressure_w, win.area, win.sin)
+    pressure = np.zeros((along.size, contour.nodes))
     pressure.reshape(-1)[geometry.flat] = pressure_w.reshape(-1)
     contact = depth > 0
-    left, right = _half_angles(win.phi, depth, contact)
-    springs_left, springs_right = _springs(win, contact)
+    left, right = half_angles(win.phi, depth, contact)
+    springs_left, springs_right = springs_in_contact(win, contact)
     edge = bool(contact[:, 0].any() or contact[:, -1].any())
-
     lateral = 0.0 if across is None else across
     centre_penetration = pin_penetration(along, lateral, win.centre_radius - radius_pin, radius_pin)
     eccentricity = along[:, None] * geometry.unit
@@ -268,18 +261,19 @@ def _solve_window(
         iterations=iterations,
         model=law.name,
     )
-    return solution, edge, along, across
+    return solution, edge
 
 
 def check_reach(lower: FloatArray, load: FloatArray, azimuth: FloatArray, pin_radius: float):
     """Raise :class:`ContactError` where a loaded pin cannot reach the bushing.
 
     The ray geometry needs ``|e| < R_p``: a radial gap ``lower`` [m] as wide as the pin
-    (radius ``pin_radius`` [m]) is out of its reach; ``load`` [N], ``azimuth`` [rad].
+    (:data:`PIN_REACH` of its radius ``pin_radius`` [m]) is out of its reach; ``load`` [N],
+    ``azimuth`` [rad].
     """
-    if not np.any(lower >= 0.999 * pin_radius):
+    if not np.any(lower >= PIN_REACH * pin_radius):
         return
-    out_of_reach = (lower >= 0.999 * pin_radius) & (load > 0)
+    out_of_reach = (lower >= PIN_REACH * pin_radius) & (load > 0)
     if np.any(out_of_reach):
         i = int(np.flatnonzero(out_of_reach)[0])
         raise ContactError(
@@ -288,7 +282,20 @@ def check_reach(lower: FloatArray, load: FloatArray, azimuth: FloatArray, pin_ra
         )
 
 
-def _check(converged, offset, upper, load, azimuth, residual) -> None:
+def check_converged(
+    converged: NDArray[np.bool_],
+    offset: FloatArray,
+    upper: FloatArray,
+    load: FloatArray,
+    azimuth: FloatArray,
+    residual: FloatArray,
+) -> None:
+    """Raise where a load's balance did not converge.
+
+    :class:`ContactError` where the offset [m] stopped at the bracket's ``upper`` end [m]
+    (the load [N] at azimuth [rad] would push the pin through the wall), else
+    :class:`ConvergenceError` naming the residual [N] and the settings to raise.
+    """
     if np.all(converged):
         return
     bad = np.flatnonzero(~converged)

@@ -1,4 +1,10 @@
-"""Node windows about the load lines: geometry, bracket, contact extent."""
+"""Node windows about the load lines: geometry, bracket, contact extent.
+
+A load line at azimuth ``psi`` lies between nodes: :func:`nearest_nodes` gives the node
+nearest to it and the angle from that node to the line, the one place the windowed
+balance, the compiled kernel's set-up (:mod:`jointwear.contact.kernel`) and Hertz's
+profile (:mod:`jointwear.contact.hertz`) take them from.
+"""
 
 from __future__ import annotations
 
@@ -10,17 +16,34 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear.contact.laws import SpringLaw
-from jointwear.geometry.contour import BushingContour, RadiusStencil
+from jointwear.geometry.angles import angle_in_turn
+from jointwear.geometry.contour import BushingContour, Pin, RadiusStencil
+
+__all__ = [
+    "PIN_REACH",
+    "Window",
+    "WindowGeometry",
+    "angle_addition",
+    "bracket",
+    "half_angles",
+    "nearest_nodes",
+    "reach_width",
+    "resultant",
+    "springs_in_contact",
+    "upper_bound",
+    "widest_half_angle",
+    "window_geometry",
+]
 
 FloatArray = NDArray[np.float64]
 
-
-_EPS = np.finfo(float).eps
-
+#: the ray geometry needs the pin centre within this fraction of the pin radius of the
+#: bushing centre (``|e| < R_p``): the top of every bracket of the offset [-]
+PIN_REACH = 0.999
 
 #: window geometry per (nodes, width, azimuths): a simulation solves the same loads on a new
 #: contour every revolution, so the trigonometry and index arithmetic are done once
-_GEOMETRY_CACHE: dict[tuple[int, int, bytes], _Geometry] = {}
+_GEOMETRY_CACHE: dict[tuple[int, int, bytes], WindowGeometry] = {}
 
 
 _GEOMETRY_CACHE_SIZE = 4
@@ -36,29 +59,88 @@ def _einsum_rowdot(a: FloatArray, b: FloatArray) -> FloatArray:
 
 #: ``sum_j a_ij b_ij`` per row: ``np.vecdot`` (NumPy >= 2, a dot kernel per row, about
 #: 1.6 times faster than the einsum on a 360 x 105 window), else the einsum
-_rowdot: Callable[[FloatArray, FloatArray], FloatArray] = getattr(np, "vecdot", _einsum_rowdot)
+rowdot: Callable[[FloatArray, FloatArray], FloatArray] = getattr(np, "vecdot", _einsum_rowdot)
 
 
-class _Geometry:
-    """Contour-independent part of a window: node indices and angles about each load line."""
+def nearest_nodes(
+    nodes: int, azimuth: FloatArray
+) -> tuple[FloatArray, NDArray[np.int64], FloatArray]:
+    """The node nearest each load line, and the line's angle from it.
+
+    Parameters
+    ----------
+    nodes : int
+        Nodes ``N`` of the contour, at ``theta_j = j dtheta``, ``dtheta = 2 pi / N`` [-].
+    azimuth : ndarray, shape (M,)
+        Load directions [rad], any number of turns.
+
+    Returns
+    -------
+    position : ndarray, shape (M,)
+        The azimuths in ``[0, 2 pi)`` [rad] (:func:`~jointwear.geometry.angles.angle_in_turn`).
+    centre : ndarray of int, shape (M,)
+        ``rint(position / dtheta)``, the nearest node (``N`` for a line just below
+        ``2 pi``: index arrays take it modulo ``N``).
+    shift : ndarray, shape (M,)
+        ``centre dtheta - position``, ``|shift| <= dtheta / 2`` [rad]: node ``centre + o``
+        lies ``o dtheta + shift`` from the load line.
+    """
+    dtheta = 2 * np.pi / nodes
+    position = angle_in_turn(azimuth)
+    centre = np.rint(position / dtheta).astype(np.int64)
+    return position, centre, centre * dtheta - position
+
+
+def angle_addition(
+    offsets: NDArray[np.int64], dtheta: float, shift: FloatArray
+) -> tuple[FloatArray, FloatArray]:
+    """``cos`` and ``sin`` of ``o dtheta + shift`` for window offsets ``o`` and load shifts.
+
+    By angle addition: trigonometry on the (2W+1,) offsets and the (M,) shifts instead of
+    the (M, 2W+1) block.
+
+    Parameters
+    ----------
+    offsets : ndarray of int, shape (K,)
+        Window offsets ``o`` [nodes].
+    dtheta : float
+        Node spacing [rad].
+    shift : ndarray, shape (M,)
+        Angle of each load's centre node from its load line [rad] (:func:`nearest_nodes`).
+
+    Returns
+    -------
+    cos, sin : ndarray, shape (M, K)
+        Of the node angles from the load lines [-].
+    """
+    cos_o, sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
+    cos_s, sin_s = np.cos(shift)[:, None], np.sin(shift)[:, None]
+    return cos_o * cos_s - sin_o * sin_s, sin_o * cos_s + cos_o * sin_s
+
+
+class WindowGeometry:
+    """Contour-independent part of a window: node indices and angles about each load line.
+
+    Parameters
+    ----------
+    nodes : int
+        Nodes ``N`` of the contour [-].
+    azimuth : ndarray, shape (M,)
+        Load directions [rad].
+    width : int
+        Window half-width ``W`` [nodes]: offsets ``-W .. W`` about each centre node.
+    """
 
     def __init__(self, nodes: int, azimuth: FloatArray, width: int) -> None:
         dtheta = 2 * np.pi / nodes
         m = azimuth.size
-        wrapped = np.mod(azimuth, 2 * np.pi)
-        centre = np.rint(wrapped / dtheta).astype(np.int64)
+        position, centre, shift = nearest_nodes(nodes, azimuth)
         offsets = np.arange(-width, width + 1)
-        shift = centre * dtheta - wrapped
-        self.wrapped = wrapped
         self.index = (centre[:, None] + offsets) % nodes
         #: flat positions of the window in an (M, N) array
         self.flat = (np.arange(m)[:, None] * nodes + self.index).ravel()
         self.phi = offsets * dtheta + shift[:, None]
-        # angle addition: trig on (M,) and (2W+1,) vectors instead of the (M, 2W+1) block
-        cos_o, sin_o = np.cos(offsets * dtheta), np.sin(offsets * dtheta)
-        cos_s, sin_s = np.cos(shift)[:, None], np.sin(shift)[:, None]
-        self.cos = cos_o * cos_s - sin_o * sin_s
-        self.sin = sin_o * cos_s + cos_o * sin_s
+        self.cos, self.sin = angle_addition(offsets, dtheta, shift)
         self.sin2 = self.sin**2
         self.left = self.phi > 0
         self.right = self.phi < 0
@@ -67,11 +149,14 @@ class _Geometry:
         for array in vars(self).values():
             array.setflags(write=False)
         #: the contour's radius on each load line, from its node radii
-        self.radius_at_loads = RadiusStencil.at(nodes, wrapped)
+        self.radius_at_loads = RadiusStencil.at(nodes, position)
         self._scaled: dict[tuple[float, int], FloatArray] = {}
 
     def scaled_cos(self, factor: Any, power: int = 1) -> FloatArray | None:
-        """``factor * cos**power`` for a scalar factor (cached), else None."""
+        """``factor * cos**power`` for a scalar ``factor`` (cached), else None.
+
+        ``factor`` is a spring area times a law's coefficient [N/m^n]; ``power`` 1 or 2.
+        """
         if isinstance(factor, np.ndarray):
             return None
         key = (float(factor), power)
@@ -85,26 +170,43 @@ class _Geometry:
         return scaled
 
 
-def _geometry(nodes: int, azimuth: FloatArray, width: int) -> _Geometry:
+def window_geometry(nodes: int, azimuth: FloatArray, width: int) -> WindowGeometry:
+    """The :class:`WindowGeometry` of these nodes [-], azimuths [rad] and half-width [nodes],
+    cached (a run solves the same loads on a new contour every revolution)."""
     if azimuth.size * (2 * width + 1) > _GEOMETRY_CACHE_ELEMENTS:
-        return _Geometry(nodes, azimuth, width)  # too big to keep around
+        return WindowGeometry(nodes, azimuth, width)  # too big to keep around
     key = (nodes, width, azimuth.tobytes())
     geometry = _GEOMETRY_CACHE.get(key)
     if geometry is None:
-        geometry = _Geometry(nodes, azimuth, width)
+        geometry = WindowGeometry(nodes, azimuth, width)
         while len(_GEOMETRY_CACHE) >= _GEOMETRY_CACHE_SIZE:
             _GEOMETRY_CACHE.pop(next(iter(_GEOMETRY_CACHE)), None)
         _GEOMETRY_CACHE[key] = geometry
     return geometry
 
 
-class _Window:
+class Window:
     """Nodes within +-W of each load line, gathered into (M, 2W+1) arrays.
 
-    ``gap`` (``r_j - R_p``) is an (M, 1) column where every spring of a row has the same
-    gap: the symmetric law (springs on the circle through the compression centre) and an
-    unworn, circular bushing; the residual then reads one number per row instead of an
-    (M, 2W+1) gather. ``area`` is a scalar where every spring has the same one.
+    ``gap`` (``r_j - R_p``) [m] is an (M, 1) column where every spring of a row has the
+    same gap: the symmetric law (springs on the circle through the compression centre) and
+    an unworn, circular bushing; the residual then reads one number per row instead of an
+    (M, 2W+1) gather. ``area`` [m^2] is a scalar where every spring has the same one.
+
+    Parameters
+    ----------
+    contour : BushingContour
+        The bushing contour.
+    azimuth : ndarray, shape (M,)
+        Load directions [rad].
+    width : int
+        Half-width ``W`` [nodes].
+    law : SpringLaw
+        The spring law (its symmetry and spring area).
+    pin_radius : float
+        ``R_p`` [m].
+    centre_radius : ndarray, shape (M,), optional
+        The contour's radius on each load line [m], if known.
     """
 
     def __init__(
@@ -116,7 +218,7 @@ class _Window:
         pin_radius: float,
         centre_radius: FloatArray | None = None,
     ) -> None:
-        geometry = _geometry(contour.nodes, azimuth, width)
+        geometry = window_geometry(contour.nodes, azimuth, width)
         self.geometry = geometry
         self.width = width
         self.symmetric = bool(law.symmetric)
@@ -155,36 +257,99 @@ def _lower_bound(win, contour, pin_radius, load):
     """
     if win.symmetric:
         return win.centre_radius - pin_radius  # the gap of every spring of the row
-    if np.any(load == 0) or contour.radius.max() - pin_radius >= 0.999 * pin_radius:
+    if np.any(load == 0) or contour.radius.max() - pin_radius >= PIN_REACH * pin_radius:
         return win.gap.min(axis=1)
     return np.full(load.shape, float(contour.radius.min()) - pin_radius)
 
 
-def _bracket(win, contour, pin_radius, load, max_penetration):
+def upper_bound(
+    centre_gap: FloatArray, pin_radius: float, max_penetration: float | None, lower: FloatArray
+) -> FloatArray:
+    """Upper end of the bracket of the pin offset along each load line [m].
+
+    :data:`PIN_REACH` of the pin radius (the ray geometry needs ``|e| < R_p``), or the
+    wall thickness beyond the compression centre, never below ``lower``.
+
+    Parameters
+    ----------
+    centre_gap : ndarray, shape (M,)
+        Radial gap on each load line, ``r(psi) - R_p`` [m].
+    pin_radius : float
+        ``R_p`` [m].
+    max_penetration : float or None
+        Largest penetration at the compression centre, the wall thickness [m].
+    lower : ndarray, shape (M,)
+        Lower end of the bracket [m].
+    """
+    upper = np.full(lower.shape, PIN_REACH * pin_radius)
+    if max_penetration is not None:
+        upper = np.minimum(upper, centre_gap + max_penetration)
+    return np.maximum(upper, lower)
+
+
+def bracket(
+    win: Window,
+    contour: BushingContour,
+    pin_radius: float,
+    load: FloatArray,
+    max_penetration: float | None,
+) -> tuple[FloatArray, FloatArray]:
     """Bracket ``[lower, upper]`` of the pin offset along each load line [m].
 
-    ``upper``: 0.999 of the pin radius (the ray geometry needs ``|e| < R_p``), or the
-    wall thickness beyond the compression centre, never below ``lower``.
+    ``lower``: no node of the window touches; ``upper``: :func:`upper_bound`.
+
+    Parameters
+    ----------
+    win : Window
+        The loads' windows.
+    contour : BushingContour
+        The contour of the windows.
+    pin_radius : float
+        ``R_p`` [m].
+    load : ndarray, shape (M,)
+        Joint loads [N].
+    max_penetration : float or None
+        Largest penetration at the compression centre [m].
     """
     lower = _lower_bound(win, contour, pin_radius, load)
-    upper = np.full(lower.shape, 0.999 * pin_radius)
-    if max_penetration is not None:
-        upper = np.minimum(upper, win.centre_radius - pin_radius + max_penetration)
-    return lower, np.maximum(upper, lower)
+    return lower, upper_bound(win.centre_radius - pin_radius, pin_radius, max_penetration, lower)
 
 
-def _resultant(pressure: FloatArray, area: Any, direction: FloatArray) -> FloatArray:
-    """``sum_j p_j A_j direction_j`` per load (one pass)."""
+def resultant(pressure: FloatArray, area: Any, direction: FloatArray) -> FloatArray:
+    """``sum_j p_j A_j direction_j`` per load (one pass) [N].
+
+    Parameters
+    ----------
+    pressure : ndarray, shape (M, K)
+        Window pressures [Pa].
+    area : ndarray, shape (M, K), or float
+        Spring areas [m^2].
+    direction : ndarray, shape (M, K)
+        ``cos`` or ``sin`` of the node angles from the load lines [-].
+    """
     if isinstance(area, np.ndarray):
         return np.einsum("ij,ij,ij->i", pressure, area, direction)
-    return area * _rowdot(pressure, direction)
+    return area * rowdot(pressure, direction)
 
 
-def _half_angles(phi: FloatArray, depth: FloatArray, contact: NDArray[np.bool_]):
+def half_angles(
+    phi: FloatArray, depth: FloatArray, contact: NDArray[np.bool_]
+) -> tuple[FloatArray, FloatArray]:
     """Contact extent each side of the load line, edges interpolated between nodes [rad].
 
-    ``phi``, ``depth`` and ``contact`` are window arrays (M, 2W+1): node angles from the
-    load line, depths, and ``depth > 0``.
+    Parameters
+    ----------
+    phi : ndarray, shape (M, K)
+        Node angles from the load lines [rad], growing along a row.
+    depth : ndarray, shape (M, K)
+        Node depths [m].
+    contact : ndarray of bool, shape (M, K)
+        ``depth > 0``.
+
+    Returns
+    -------
+    left, right : ndarray, shape (M,)
+        Counter-clockwise and clockwise of the load line [rad].
     """
     m, k = depth.shape
     first = np.argmax(contact, axis=1)
@@ -208,11 +373,14 @@ def _half_angles(phi: FloatArray, depth: FloatArray, contact: NDArray[np.bool_])
     return angle[:m], angle[m:]
 
 
-def _springs(win: _Window, contact: NDArray[np.bool_]):
+def springs_in_contact(
+    win: Window, contact: NDArray[np.bool_]
+) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
     """Springs in contact counter-clockwise (phi > 0) and clockwise (phi < 0) of the load line.
 
-    Only the centre column can have either sign (``|shift| <= dtheta / 2``); the others
-    are counted as bytes (a sum of ``uint8``, exact while a half-window has < 256 nodes).
+    ``contact`` (bool, (M, 2W+1)) marks the window's nodes in contact. Only the centre
+    column can have either sign (``|shift| <= dtheta / 2``); the others are counted as
+    bytes (a sum of ``uint8``, exact while a half-window has < 256 nodes).
     """
     w = win.width
     centre = contact[:, w]
@@ -228,8 +396,10 @@ def _springs(win: _Window, contact: NDArray[np.bool_]):
     return left + left_centre, right + right_centre
 
 
-def _widest(phi: FloatArray, depth: FloatArray, contact: NDArray[np.bool_]) -> float:
+def widest_half_angle(phi: FloatArray, depth: FloatArray, contact: NDArray[np.bool_]) -> float:
     """Largest contact half-angle of all rows [rad], from the few rows that can hold it.
+
+    The arguments are those of :func:`half_angles` (angles [rad], depths [m]).
 
     A row's half-angle lies within a node beyond its outermost node in contact, and the
     rows' node grids are shifted by at most half a node against each other: only rows in
@@ -247,14 +417,22 @@ def _widest(phi: FloatArray, depth: FloatArray, contact: NDArray[np.bool_]) -> f
         | contact[:, last]
         | contact[:, max(last - 1, 0)]
     )
-    left, right = _half_angles(phi[rows], depth[rows], contact[rows])
+    left, right = half_angles(phi[rows], depth[rows], contact[rows])
     return float(max(left.max(), right.max()))
 
 
-def _reach_width(contour, pin, law, centre_radius, along, across) -> int:
+def reach_width(
+    contour: BushingContour,
+    pin: Pin,
+    law: SpringLaw,
+    centre_radius: FloatArray,
+    along: FloatArray,
+    across: FloatArray | None,
+) -> int:
     """Window half-width [nodes] holding every node that can touch the pin.
 
-    The pin centre is ``along`` the load line and ``across`` it (None: on the line). The
+    The pin centre is ``along`` the load line and ``across`` it [m] (None: on the line);
+    ``centre_radius`` is the contour's radius on each load line [m]. The
     penetration of node ``j`` is at most ``u_j . e - (r_j - R_p)``, so only nodes within
     ``arccos(g_min / |e|)`` of the pin's direction can touch, ``g_min`` the smallest
     radial gap. A window of half-width ``W`` holds every node within ``(W - 1/2) dtheta``

@@ -1,4 +1,5 @@
-"""Load balance (paper mode and 2-D equilibrium): residuals, symmetries, batching, errors."""
+"""The windowed load balance (:func:`jointwear.contact.balance.solve_contact`): the
+balance met, symmetries, batching, warm starts, windows, errors and custom laws."""
 
 from __future__ import annotations
 
@@ -7,49 +8,22 @@ import dataclasses
 import numpy as np
 import pytest
 
-from jointwear.contact import CONTACT_MODELS, CallableSpringLaw, contact_law, solve, solve_contact
-from jointwear.contact import balance as load_balance
+from jointwear.contact import CONTACT_MODELS, contact_law, solve, solve_contact
 from jointwear.errors import ContactError, GeometryError
 from jointwear.geometry import BushingContour, Pin
 
-EPS = np.finfo(float).eps
-SPRING_MODELS = ["winkler", "asymmetric-winkler", "nlcp"]
-PAPER_MODELS = ["hertz", *SPRING_MODELS]  # the registry may hold reference models too
-RNG = np.random.default_rng(2024)
-LOADS = np.concatenate([[0.0, 1e-3, 0.1], RNG.uniform(1, 400, 12), [1000.0, 3000.0]])
-AZIMUTHS = RNG.uniform(-np.pi, np.pi, LOADS.size)
-
-
-def force_area(model, contour, params, azimuth):
-    """Area turning node pressure into node force, shape (M, N) [m^2]."""
-    shape = (np.size(azimuth), contour.nodes)
-    if model == "nlcp" and params.nlcp_variant == "paper":
-        return np.full(shape, params.spring_area)
-    if model == "winkler":  # springs on the circle through the compression centre
-        radius = contour.radius_at(np.mod(azimuth, 2 * np.pi))
-        return np.broadcast_to((radius * contour.dtheta * contour.axial_length)[:, None], shape)
-    return np.broadcast_to(contour.spring_area, shape)
-
-
-def resultants(sol, contour, area, azimuth):
-    """Independent resultant along and across the load, and sum |f_j|."""
-    force = sol.pressure * area
-    phi = contour.theta[None, :] - np.asarray(azimuth)[:, None]
-    return (force * np.cos(phi)).sum(1), (force * np.sin(phi)).sum(1), np.abs(force).sum(1)
-
-
-def bound(total):
-    return np.maximum(1e-12, 8 * EPS * total)
-
-
-def pin_frame(sol, azimuth):
-    """Pin displacement along / across the load [m]."""
-    c, s = np.cos(azimuth), np.sin(azimuth)
-    e = sol.eccentricity
-    return e[:, 0] * c + e[:, 1] * s, -e[:, 0] * s + e[:, 1] * c
-
-
-# ---------------------------------------------------------------- the balance itself
+from .common import (
+    AZIMUTHS,
+    EPS,
+    LOADS,
+    PAPER_MODELS,
+    SPRING_MODELS,
+    bound,
+    force_area,
+    pin_frame,
+    resultants,
+    revolution_loads,
+)
 
 
 @pytest.mark.parametrize("balance", ["paper", "equilibrium"])
@@ -91,9 +65,7 @@ def test_pressure_is_the_law_of_the_exact_penetration_at_every_node(
     # the compression-centre penetration is measured along the load line (exact ray distance)
     rp = pin.radius
     a, b = pin_frame(sol, AZIMUTHS)
-    expected = np.maximum(
-        a + np.sqrt(rp**2 - b**2) - worn.radius_at(np.mod(AZIMUTHS, 2 * np.pi)), 0.0
-    )
+    expected = np.maximum(a + np.sqrt(rp**2 - b**2) - worn.radius_at(AZIMUTHS), 0.0)
     np.testing.assert_allclose(sol.penetration, expected, rtol=1e-9, atol=1e-16)
 
 
@@ -102,9 +74,6 @@ def test_zero_load_gives_no_pressure(params, pin, circle):
         sol = solve(circle, pin, [0.0], [0.3], model, params)
         assert sol.normal_force[0] == 0.0
         assert sol.pressure.max() == 0.0
-
-
-# ---------------------------------------------------------------- symmetries
 
 
 @pytest.mark.parametrize("balance", ["paper", "equilibrium"])
@@ -160,47 +129,6 @@ def test_mirror_symmetry(params, pin, worn, model, balance, node):
     np.testing.assert_allclose(across_b, -across_a, rtol=1e-8, atol=1e-17)
 
 
-@pytest.mark.parametrize("model", SPRING_MODELS)
-def test_circle_paper_and_equilibrium_agree(params, pin, circle, model):
-    # a node on the load line: the discrete contact is symmetric, sideways force is round-off
-    loads = np.array([1.0, 50.0, 200.0, 400.0])
-    azimuth = np.array([0.0, 90.0, -33.0, 181.0]) * circle.dtheta
-    paper = solve(circle, pin, loads, azimuth, model, params, balance="paper")
-    eq = solve(circle, pin, loads, azimuth, model, params, balance="equilibrium")
-    _, _, total = resultants(paper, circle, force_area(model, circle, params, azimuth), azimuth)
-    assert np.all(np.abs(paper.tangential_force) <= bound(total))
-    np.testing.assert_allclose(
-        eq.pressure, paper.pressure, rtol=1e-9, atol=1e-12 * paper.pressure.max()
-    )
-    np.testing.assert_allclose(eq.eccentricity, paper.eccentricity, rtol=1e-10, atol=1e-17)
-    # between nodes the discrete contact is lopsided: equilibrium moves the pin a little
-    off = np.array([0.3, 0.5, 0.77]) * circle.dtheta
-    paper = solve(circle, pin, np.full(3, 200.0), off, model, params, balance="paper")
-    eq = solve(circle, pin, np.full(3, 200.0), off, model, params, balance="equilibrium")
-    assert np.all(np.abs(paper.tangential_force) < 1e-3 * 200.0)
-    np.testing.assert_allclose(eq.penetration, paper.penetration, rtol=1e-3)
-
-
-@pytest.mark.parametrize("model", ["asymmetric-winkler", "nlcp"])
-def test_equilibrium_on_worn_contour_leaves_no_sideways_force(params, pin, worn, model):
-    """The scar at +20 deg removes support on the left: paper mode pushes the resultant to the
-    right (negative); full equilibrium moves the pin into the scar (+y) until it vanishes."""
-    loads = np.array([50.0, 200.0, 400.0])
-    paper = solve(worn, pin, loads, np.zeros(3), model, params, balance="paper")
-    eq = solve(worn, pin, loads, np.zeros(3), model, params, balance="equilibrium")
-    assert np.all(paper.tangential_force < -0.1 * loads)  # ~ -18 % of the load at 200 N
-    _, _, total = resultants(eq, worn, force_area(model, worn, params, np.zeros(3)), np.zeros(3))
-    assert np.all(np.abs(eq.tangential_force) <= bound(total))
-    assert np.all(np.abs(eq.normal_force - loads) <= bound(total))
-    assert np.all(eq.eccentricity[:, 1] > 5e-6)  # ~10 um sideways
-    assert np.all(paper.eccentricity[:, 1] == 0.0)
-    # moving sideways brings the left flank back into contact
-    assert np.all(eq.springs_left > paper.springs_left)
-
-
-# ---------------------------------------------------------------- batching, warm start, window
-
-
 @pytest.mark.parametrize("balance", ["paper", "equilibrium"])
 @pytest.mark.parametrize("model", ["asymmetric-winkler", "nlcp", "winkler"])
 def test_batch_equals_one_by_one(params, pin, worn, model, balance):
@@ -217,29 +145,6 @@ def test_batch_equals_one_by_one(params, pin, worn, model, balance):
         np.testing.assert_allclose(
             batch.eccentricity[i], one.eccentricity[0], rtol=1e-10, atol=1e-17
         )
-
-
-@pytest.mark.parametrize("model", ["asymmetric-winkler", "nlcp"])
-def test_batch_window_finds_contact_beyond_a_wide_scar(params, pin, model):
-    """A flat 30 um scar from 5 to 60 deg: paper mode touches only on the right (the coarse
-    window is sized from that), but in 2-D equilibrium the pin slides into the scar and
-    touches again beyond it, at ~70 deg. The narrow window must grow to see that contact
-    (it is not connected to the contact at the window's edge)."""
-    angle = np.degrees(np.angle(np.exp(1j * np.arange(360) * np.pi / 180)))
-    wear = np.where((angle > 5) & (angle < 60), 30e-6, 0.0)
-    contour = BushingContour.from_wear_profile(params.bushing_radius, wear, params.axial_length)
-    loads = np.full(80, 200.0)
-    batch = solve(contour, pin, loads, np.zeros(80), model, params, balance="equilibrium")
-    one = solve(contour, pin, loads[:1], np.zeros(1), model, params, balance="equilibrium")
-    np.testing.assert_allclose(
-        batch.eccentricity, np.repeat(one.eccentricity, 80, axis=0), rtol=1e-10
-    )
-    assert np.degrees(one.half_angle_left[0]) > 65
-    law = contact_law(model, params)
-    delta = contour.penetration(pin, batch.eccentricity)
-    np.testing.assert_allclose(
-        batch.pressure, law.pressure(delta), rtol=1e-10, atol=1e-12 * batch.pressure.max()
-    )
 
 
 @pytest.mark.parametrize("balance", ["paper", "equilibrium"])
@@ -271,9 +176,6 @@ def test_window_widening_matches_full_window(params, pin, worn, balance, window)
     )
     np.testing.assert_array_equal(narrow.springs_left, full.springs_left)
     np.testing.assert_array_equal(narrow.springs_right, full.springs_right)
-
-
-# ---------------------------------------------------------------- errors and custom laws
 
 
 @pytest.mark.parametrize("model", [*SPRING_MODELS, "hertz"])
@@ -366,9 +268,6 @@ def test_symmetric_and_asymmetric_winkler(params, pin, circle, worn):
     assert abs(at_zero.tangential_force[0]) < 1e-9
 
 
-# ---------------------------------------------------------------- hard cases
-
-
 def joint_stiffness(law, contour, pin, sol, area):
     """dF/ds along the load, from the springs' slopes [N/m]."""
     delta = contour.penetration(pin, sol.eccentricity)
@@ -407,33 +306,6 @@ def test_stiff_bushing_converges_to_round_off(params, pin, circle, worn, model, 
             )
 
 
-@pytest.mark.parametrize("model", ["winkler", "asymmetric-winkler", "nlcp"])
-@pytest.mark.parametrize("fraction", [0.1, 0.2, 0.35, 0.5, 0.8])
-def test_equilibrium_with_a_single_spring_in_contact(params, pin, circle, model, fraction):
-    """At 1 mN on the 1 deg grid one Winkler spring carries the load in paper mode. A single
-    radial spring cannot balance a load between two nodes: in equilibrium the pin slides
-    until the two nodes bracketing the load share it, their sideways forces cancelling."""
-    azimuth = np.array([fraction * circle.dtheta])
-    load = np.array([1e-3])
-    paper = solve(circle, pin, load, azimuth, model, params, balance="paper")
-    eq = solve(circle, pin, load, azimuth, model, params, balance="equilibrium")
-    area = force_area(model, circle, params, azimuth)
-    _, _, total = resultants(eq, circle, area, azimuth)
-    assert np.all(np.abs(eq.normal_force - load) <= bound(total))
-    assert np.all(np.abs(eq.tangential_force) <= bound(total))
-    touching = np.flatnonzero(eq.pressure[0])
-    assert {0, 1} <= set(touching.tolist())
-    if model == "asymmetric-winkler" and fraction != 0.5:
-        assert np.count_nonzero(paper.pressure[0]) == 1  # the singular case
-    f = eq.pressure[0] * area[0]
-    phi = circle.theta - azimuth[0]
-    assert abs(f @ np.sin(phi)) <= bound(total)[0] + 8 * EPS * total[0]
-    if model != "nlcp":  # only the two bracketing nodes touch: lever rule
-        assert touching.tolist() == [0, 1]
-        expected = np.sin((1 - fraction) * circle.dtheta) / np.sin(fraction * circle.dtheta)
-        assert f[0] / f[1] == pytest.approx(expected, rel=1e-6)
-
-
 def test_wear_pocket_beyond_the_pins_reach(params):
     """The ray geometry needs the pin centre inside the pin (|e| < R_p). A 2 mm pin in a
     bushing worn 2 mm deep cannot be balanced: a clear ContactError, never a silent answer."""
@@ -453,53 +325,6 @@ def test_wear_pocket_beyond_the_pins_reach(params):
     # a load line straight into the pocket (gap 3 mm > R_p): out of reach at once
     with pytest.raises(ContactError, match="out of the pin's reach"):
         solve(pocket, Pin(rp), [1.0], [0.5], "winkler", small)
-
-
-# ---------------------------------------------------------------- cold starts
-
-
-def revolution_loads(count: int = 360) -> tuple[np.ndarray, np.ndarray]:
-    """A smooth load history like a revolution's: 130-420 N, the direction sweeping 60 deg."""
-    t = np.linspace(0, 2 * np.pi, count, endpoint=False)
-    return 275 + 125 * np.sin(t) + 20 * np.sin(3 * t), np.radians(180 + 30 * np.sin(t))
-
-
-@pytest.mark.parametrize(("model", "accuracy"), [("nlcp", 2e-5), ("asymmetric-winkler", 5e-4)])
-def test_circle_guess_is_within_the_node_ripple(params, pin, circle, model, accuracy):
-    """The node-free contact of a pin in a circle starts every load within the ripple of
-    where the contact edges fall between nodes (~1e-5 of the penetration for NLCP, more for
-    linear springs), and estimates the widest contact to a fraction of a node."""
-    law = contact_law(model, params)
-    load, azimuth = revolution_loads()
-    guess, widest = load_balance._circle_guess(circle, pin, law, load, azimuth)
-    sol = solve_contact(circle, pin, load, azimuth, law)
-    along, _ = pin_frame(sol, azimuth)
-    clearance = circle.radius[0] - pin.radius
-    assert np.max(np.abs(guess - along) / (along - clearance)) < accuracy
-    half = np.maximum(sol.half_angle_left, sol.half_angle_right)
-    assert abs(widest - half.max()) < 0.1 * circle.dtheta
-    # a long batch is solved at Chebyshev points of ln F and interpolated; a short one
-    # load by load: the same offsets
-    few, _ = load_balance._circle_guess(circle, pin, law, load[:5], azimuth[:5])
-    np.testing.assert_allclose(few, guess[:5], rtol=1e-9)
-
-
-def test_circle_guess_only_where_the_springs_lie_on_a_circle(params, pin, circle, worn):
-    load, azimuth = revolution_loads(8)
-    nlcp = contact_law("nlcp", params)
-    assert load_balance._circle_guess(worn, pin, nlcp, load, azimuth) is None
-    custom = CallableSpringLaw(lambda delta: 1e12 * delta)
-    assert load_balance._circle_guess(circle, pin, custom, load, azimuth) is None
-    # the symmetric law's springs lie on the circle through each compression centre
-    winkler = contact_law("winkler", params)
-    guess, _ = load_balance._circle_guess(worn, pin, winkler, load, azimuth)
-    sol = solve_contact(worn, pin, load, azimuth, winkler)
-    along, _ = pin_frame(sol, azimuth)
-    np.testing.assert_allclose(guess, along, rtol=1e-4)
-    # no load: the pin touches
-    zero, widest = load_balance._circle_guess(circle, pin, nlcp, np.zeros(3), azimuth[:3])
-    np.testing.assert_array_equal(zero, circle.radius[0] - pin.radius)
-    assert widest == 0.0
 
 
 @pytest.mark.parametrize("model", SPRING_MODELS)
@@ -546,32 +371,3 @@ def test_unworn_window_equals_the_general_window(params, pin, circle, model):
     scale = np.maximum(general.pressure.max(axis=1, keepdims=True), 1e-300)
     assert np.max(np.abs(plain.pressure - general.pressure) / scale) <= 1e-9
     np.testing.assert_allclose(plain.eccentricity, general.eccentricity, rtol=1e-11, atol=1e-20)
-
-
-def test_widest_is_the_largest_half_angle():
-    """The coarse pass sizes the window from the rows in the outermost contact columns only."""
-    rng = np.random.default_rng(5)
-    dtheta = np.radians(1.0)
-    for _ in range(300):
-        rows, half = rng.integers(1, 30), rng.integers(2, 20)
-        offsets = np.arange(-half, half + 1) * dtheta
-        phi = offsets + rng.uniform(-0.5, 0.5, (rows, 1)) * dtheta
-        depth = rng.normal(size=phi.shape) - rng.uniform(0, 3) * np.abs(phi) / (half * dtheta)
-        contact = depth > 0
-        left, right = load_balance._half_angles(phi, depth, contact)
-        widest = max(left.max(), right.max())
-        assert load_balance._widest(phi, depth, contact) == widest
-
-
-@pytest.mark.parametrize("model", ["winkler", "asymmetric-winkler"])
-def test_reach_on_the_load_line_equals_the_general_bound(params, pin, worn, model):
-    """Paper mode's reach bound (pin on the load line): the general one, nothing sideways."""
-    law = contact_law(model, params)
-    azimuth = RNG.uniform(-np.pi, np.pi, 50)
-    centre = worn.radius_at(np.mod(azimuth, 2 * np.pi))
-    gap = worn.radius.min() - pin.radius
-    for scale in (0.5, 1.0, 1.01, 1.3, 3.0):
-        along = scale * gap * RNG.uniform(0.9, 1.1, azimuth.size)
-        on_line = load_balance._reach_width(worn, pin, law, centre, along, None)
-        general = load_balance._reach_width(worn, pin, law, centre, along, np.zeros_like(along))
-        assert on_line == general
