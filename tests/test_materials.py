@@ -21,7 +21,7 @@ from jointwear.materials import (
     markdown,
     merge_material,
 )
-from jointwear.parameter_sets import get_parameter_set
+from jointwear.config.parameter_sets import get_parameter_set
 from jointwear.sweep import expand_sweep
 
 REQUIRED = {
