@@ -43,9 +43,10 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "jointwear.io",
             "jointwear.solvers",
             "jointwear.state",
-            "jointwear.parameter_sets",
             # the materials library: named materials that configs refer to
             "jointwear.materials",
+            # the configuration (imports no physics: the stages' names and checks are
+            # lazy "module:attr" registry entries, jointwear.config.choices)
             "jointwear.config",
             # memory and time budgets checked before a run or sweep starts
             "jointwear.resources",
@@ -82,13 +83,6 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
 
 #: (importing module, imported module) -> why the upward import stays for now
 KNOWN_LAYER_EXCEPTIONS: dict[tuple[str, str], str] = {
-    # config validates names against the stages' registries and derives defaults from
-    # their closed forms; all lazy, inside validators
-    ("jointwear.config", "jointwear.mechanism.four_bar"): "lazy: checks a four-bar's geometry",
-    ("jointwear.config", "jointwear.contact"): "lazy: validates the contact model's name",
-    ("jointwear.config", "jointwear.mechanism"): "lazy: validates the dynamics model's name",
-    ("jointwear.config", "jointwear.tribology.wear_laws"): "lazy: validates the wear law's name",
-    ("jointwear.config", "jointwear.contact.nlcp"): "lazy: NLCP's default K (eq. 2)",
     # the contact-impact dynamics integrate the pin's motion against the bushing's
     # contact law: the force laws are the contact stage's, evaluated by the mechanism
     ("jointwear.mechanism.force_laws", "jointwear.contact"): "lazy: impact force law",

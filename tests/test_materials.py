@@ -11,6 +11,7 @@ from pydantic.fields import FieldInfo
 
 from jointwear import load_config
 from jointwear.config import config_from_dict, is_section, key_field
+from jointwear.config.parameter_sets import get_parameter_set
 from jointwear.errors import ConfigError
 from jointwear.materials import (
     KINDS,
@@ -21,7 +22,6 @@ from jointwear.materials import (
     markdown,
     merge_material,
 )
-from jointwear.parameter_sets import get_parameter_set
 from jointwear.sweep import expand_sweep
 
 REQUIRED = {

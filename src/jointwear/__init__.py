@@ -64,7 +64,6 @@ _SUBMODULES = (
     "materials",
     "measurement",
     "mechanism",
-    "parameter_sets",
     "plots",
     "references",
     "results",

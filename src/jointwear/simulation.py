@@ -315,11 +315,13 @@ class Simulation:
         wear_law: str | WearLaw | None = None,
     ) -> None:
         self.config = config
-        self.wear_law = wear_law_of(config, wear_law)
+        self.wear_law = wear_law_of(config.wear, config.materials.bushing, wear_law)
         # the fused kernel accumulates Archard's wear inside the contact solve
         self._fused = wear_law in (None, "archard") and config.wear.law == "archard"
         self._compiled = compiled_kernel(config)
-        self.parameters = ContactParameters.from_config(config)
+        self.parameters = ContactParameters.from_sections(
+            config.joint, config.materials, config.contact
+        )
         self.contact_model = config.contact.model if contact_model is None else contact_model
         self.law = contact_law(self.contact_model, self.parameters)
         # (a model given here, not by the config, is refused as the config would be)
@@ -1032,7 +1034,7 @@ class Simulation:
             depth,
             self.life.joint,
             float(solution.iterations.sum()),
-            None if pin_depth is None else pin_metrics(pin_depth, self.config),
+            None if pin_depth is None else pin_metrics(pin_depth, self.config.joint),
         )
         last = profiles.last
         last_saved = 0 if last is None else last[0]

@@ -59,3 +59,14 @@ def test_mass_and_volume() -> None:
     area, b, rho = 2e-10, 0.02, 2200.0
     assert metrics.wear_volume(area, b) == pytest.approx(4e-12)
     assert metrics.wear_mass(area, b, rho) == pytest.approx(8.8e-9)
+
+
+def test_pin_wear_of_uniform_depth_is_the_exact_annulus(paper_config) -> None:
+    """A pin worn inwards by ``h`` everywhere loses ``pi (R_p^2 - (R_p - h)^2) b``."""
+    joint = paper_config.joint
+    depth = 4e-5
+    found = metrics.pin_metrics(np.full(180, depth), joint)
+    radius = joint.pin_radius
+    annulus = np.pi * (radius**2 - (radius - depth) ** 2) * joint.axial_length
+    assert found["pin_wear_volume"] == pytest.approx(annulus, rel=1e-13)
+    assert found["pin_peak_wear_depth"] == depth

@@ -8,7 +8,7 @@ import pytest
 from jointwear import Simulation
 from jointwear.config import Config
 from jointwear.errors import ConfigError
-from jointwear.tribology.wear_laws import energy_wear_depth
+from jointwear.tribology.wear_laws import energy_wear_depth, wear_law
 
 
 @pytest.fixture(scope="module")
@@ -58,3 +58,24 @@ def test_bad_wear_law_settings(small: Config) -> None:
         small.replace({"wear.law": "enrgy"})
     with pytest.raises(ConfigError, match=r"wear.energy_coefficient: missing"):
         small.replace({"wear.law": "energy", "wear.friction_coefficient": 0.2})
+
+
+def test_the_laws_read_their_sections(small: Config) -> None:
+    """Archard's law takes K_d from the bushing's material, the energy law k_E mu from
+    [wear]: h_j = K sum_k p_jk ds_k on a two-step, two-node cycle."""
+    pressure = np.array([[1e6, 4e6], [2e6, 0.0]])
+    sliding = np.array([1e-3, 2e-3])
+    work = sliding @ pressure  # [Pa m]
+    bushing = small.materials.bushing
+    archard = wear_law(small.wear, bushing)
+    np.testing.assert_allclose(
+        archard(pressure, sliding), bushing.wear_coefficient * work, rtol=1e-15
+    )
+    energy = small.replace(
+        {"wear.law": "energy", "wear.energy_coefficient": 3e-12, "wear.friction_coefficient": 0.25}
+    )
+    law = wear_law(energy.wear, energy.materials.bushing)
+    np.testing.assert_allclose(law(pressure, sliding), 3e-12 * 0.25 * work, rtol=1e-15)
+    # a name given to the call wins over the section's
+    named = wear_law(energy.wear, bushing, "archard")
+    np.testing.assert_allclose(named(pressure, sliding), bushing.wear_coefficient * work)

@@ -93,21 +93,29 @@ class ContactParameters:
 
     @classmethod
     def from_config(cls, config) -> ContactParameters:
-        """Build from a :class:`jointwear.config.Config`."""
+        """Build from a :class:`jointwear.config.Config` (:meth:`from_sections`)."""
+        return cls.from_sections(config.joint, config.materials, config.contact)
+
+    @classmethod
+    def from_sections(cls, joint, materials, contact) -> ContactParameters:
+        """Build from the ``[joint]``, ``[materials]`` and ``[contact]`` config sections.
+
+        An unset ``contact.spring_area`` takes the 1 degree default, as the config does.
+        """
         return cls(
-            pin_radius=config.joint.pin_radius,
-            bushing_radius=config.joint.bushing_radius,
-            axial_length=config.joint.axial_length,
-            bushing_thickness=config.joint.bushing_thickness,
-            pin_youngs_modulus=config.materials.pin.youngs_modulus,
-            pin_poisson_ratio=config.materials.pin.poisson_ratio,
-            bushing_youngs_modulus=config.materials.bushing.youngs_modulus,
-            bushing_poisson_ratio=config.materials.bushing.poisson_ratio,
-            exponent=config.contact.exponent,
-            foundation_modulus=config.contact.foundation_modulus,
-            spring_area=config.spring_area,
-            nlcp_variant=config.contact.nlcp_variant,
-            stiffness=config.contact.stiffness,
+            pin_radius=joint.pin_radius,
+            bushing_radius=joint.bushing_radius,
+            axial_length=joint.axial_length,
+            bushing_thickness=joint.bushing_thickness,
+            pin_youngs_modulus=materials.pin.youngs_modulus,
+            pin_poisson_ratio=materials.pin.poisson_ratio,
+            bushing_youngs_modulus=materials.bushing.youngs_modulus,
+            bushing_poisson_ratio=materials.bushing.poisson_ratio,
+            exponent=contact.exponent,
+            foundation_modulus=contact.foundation_modulus,
+            spring_area=math.nan if contact.spring_area is None else contact.spring_area,
+            nlcp_variant=contact.nlcp_variant,
+            stiffness=contact.stiffness,
         )
 
     @property

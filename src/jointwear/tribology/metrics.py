@@ -21,12 +21,15 @@ import math
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from jointwear.materials import LIMIT_KEYS
+
+if TYPE_CHECKING:
+    from jointwear.config import JointConfig
 
 __all__ = [
     "CHECKS",
@@ -113,7 +116,7 @@ PIN_METRICS: tuple[Metric, ...] = (
 )
 
 
-def pin_metrics(pin_wear_depth: ArrayLike, config: Any) -> dict[str, float]:
+def pin_metrics(pin_wear_depth: ArrayLike, joint: JointConfig) -> dict[str, float]:
     """The :data:`PIN_METRICS` of a pin wear profile (pin frame) [SI].
 
     The removed area of a pin of radius ``R_p`` worn inwards by ``h`` is
@@ -123,14 +126,14 @@ def pin_metrics(pin_wear_depth: ArrayLike, config: Any) -> dict[str, float]:
     ----------
     pin_wear_depth : array_like, shape (N,)
         Wear depth of the pin [m].
-    config : jointwear.config.Config
-        Uses ``joint.pin_radius`` and ``joint.axial_length``.
+    joint : jointwear.config.JointConfig
+        The ``[joint]`` section: ``pin_radius`` ``R_p`` [m] and ``axial_length`` ``b`` [m].
     """
     depth = np.asarray(pin_wear_depth, dtype=float)
-    area = float(np.sum(depth * (config.joint.pin_radius - 0.5 * depth)) * 2 * np.pi / depth.size)
+    area = float(np.sum(depth * (joint.pin_radius - 0.5 * depth)) * 2 * np.pi / depth.size)
     return {
         "pin_peak_wear_depth": float(depth.max()),
-        "pin_wear_volume": area * config.joint.axial_length,
+        "pin_wear_volume": area * joint.axial_length,
     }
 
 

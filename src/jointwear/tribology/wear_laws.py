@@ -42,7 +42,7 @@ from jointwear.registry import Registry
 from jointwear.tribology import archard
 
 if TYPE_CHECKING:
-    from jointwear.config import Config
+    from jointwear.config import MaterialConfig, WearConfig
 
 __all__ = ["WEAR_LAWS", "WearLaw", "energy_wear_depth", "wear_law"]
 
@@ -82,8 +82,8 @@ def energy_wear_depth(
     return energy_coefficient * (np.asarray(sliding_distance, float) @ (mu * p))
 
 
-def _archard(config: Config) -> WearLaw:
-    coefficient = config.materials.bushing.wear_coefficient
+def _archard(wear: WearConfig, bushing: MaterialConfig) -> WearLaw:
+    coefficient = bushing.wear_coefficient
 
     def law(pressure: FloatArray, sliding: FloatArray) -> FloatArray:
         return archard.wear_depth(pressure, sliding, coefficient)
@@ -91,9 +91,7 @@ def _archard(config: Config) -> WearLaw:
     return law
 
 
-def _energy(config: Config) -> WearLaw:
-    wear = config.wear
-
+def _energy(wear: WearConfig, bushing: MaterialConfig) -> WearLaw:
     def law(pressure: FloatArray, sliding: FloatArray) -> FloatArray:
         return energy_wear_depth(
             pressure, sliding, wear.energy_coefficient, wear.friction_coefficient
@@ -102,25 +100,32 @@ def _energy(config: Config) -> WearLaw:
     return law
 
 
-#: ``wear.law`` -> builder ``(Config) -> WearLaw``
-WEAR_LAWS: Registry[Callable[[Config], WearLaw]] = Registry("wear law", "wear.law")
+#: ``wear.law`` -> builder ``(wear section, bushing material) -> WearLaw``
+WEAR_LAWS: Registry[Callable[[WearConfig, MaterialConfig], WearLaw]] = Registry(
+    "wear law", "wear.law"
+)
 WEAR_LAWS.add("archard", _archard)
 WEAR_LAWS.add("energy", _energy)
 
 
-def wear_law(config: Config, law: str | WearLaw | None = None) -> WearLaw:
+def wear_law(
+    wear: WearConfig, bushing: MaterialConfig, law: str | WearLaw | None = None
+) -> WearLaw:
     """The wear law of a run: a registered name (default ``wear.law``) or a callable.
 
     Parameters
     ----------
-    config : jointwear.config.Config
-        Validated configuration (the laws' coefficients).
+    wear : jointwear.config.WearConfig
+        The ``[wear]`` section: the law's name, the energy law's ``k_E`` [m^3/J] and
+        ``mu`` [-].
+    bushing : jointwear.config.MaterialConfig
+        The bushing's material: Archard's ``wear_coefficient`` ``K_d`` [1/Pa].
     law : str or callable, optional
         Name of a law in :data:`WEAR_LAWS`, or ``law(pressure, sliding_distance)``
         [Pa, m -> m].
     """
     if law is None:
-        law = config.wear.law
+        law = wear.law
     if callable(law):
         return law
-    return WEAR_LAWS.get(law)(config)
+    return WEAR_LAWS.get(law)(wear, bushing)

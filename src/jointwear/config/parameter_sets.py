@@ -25,6 +25,9 @@ from __future__ import annotations
 from types import MappingProxyType
 from typing import Any
 
+from jointwear.errors import ConfigError
+from jointwear.registry import suggest
+
 __all__ = ["PARAMETER_SETS", "get_parameter_set"]
 
 NLCP_PAPER: dict[str, Any] = {
@@ -68,9 +71,6 @@ def get_parameter_set(name: str, mechanism: str = "slider-crank") -> dict[str, A
         Mechanism type whose ``mechanism[type].*`` defaults are taken; those of other
         types are left out.
     """
-    from jointwear.errors import ConfigError
-    from jointwear.registry import suggest
-
     if name not in PARAMETER_SETS:
         raise ConfigError(
             f"parameter_set: unknown parameter set {name!r}{suggest(name, PARAMETER_SETS)}"

@@ -1,0 +1,145 @@
+"""Overrides: dotted keys (``joint.clearance``) and ``--set section.key=VALUE``.
+
+:func:`apply_overrides` writes them into the nested data of a config before it is
+validated (:meth:`jointwear.config.Config.replace`, :func:`jointwear.config.load_config`);
+a material given by name or key is merged with the library's table
+(:func:`jointwear.materials.merge_material`).
+"""
+
+from __future__ import annotations
+
+import copy
+import tomllib
+from collections.abc import Iterable, Mapping
+from typing import Any
+
+from jointwear.errors import ConfigError
+from jointwear.materials import merge_material
+from jointwear.units import shown
+
+__all__ = [
+    "apply_overrides",
+    "deep_merge",
+    "material_defaults",
+    "normalized_overrides",
+    "parse_override",
+    "without_none",
+]
+
+
+def without_none(data: Mapping[str, Any]) -> dict[str, Any]:
+    """``data`` (nested) without its ``None`` values: the keys a config left unset."""
+    return {
+        key: without_none(value) if isinstance(value, Mapping) else value
+        for key, value in data.items()
+        if value is not None
+    }
+
+
+def deep_merge(base: dict[str, Any], update: Mapping[str, Any]) -> dict[str, Any]:
+    """A copy of ``base`` with ``update`` merged in, table by table (``update`` wins)."""
+    out = copy.deepcopy(base)
+    for key, value in update.items():
+        if isinstance(value, Mapping) and isinstance(out.get(key), dict):
+            out[key] = deep_merge(out[key], value)
+        else:
+            out[key] = copy.deepcopy(value)
+    return out
+
+
+def parse_override(text: str) -> tuple[str, Any]:
+    """Split ``section.key=VALUE``; VALUE is read as a TOML literal, else kept as text."""
+    key, sep, raw = text.partition("=")
+    key = key.strip()
+    if not sep or not key:
+        raise ConfigError(f"--set {text!r}: expected section.key=VALUE")
+    raw = raw.strip()
+    try:
+        value = tomllib.loads(f"v = {raw}")["v"]
+    except tomllib.TOMLDecodeError:
+        value = raw
+    except ValueError:  # an integer of thousands of digits (Python's conversion limit)
+        raise ConfigError(f"{key}: {shown(raw)} is beyond any physical value") from None
+    return key, value
+
+
+def normalized_overrides(
+    overrides: Mapping[str, Any] | Iterable[str] | str,
+) -> list[tuple[str, Any]]:
+    """The ``(dotted key, value)`` pairs of overrides given in any of their forms.
+
+    Parameters
+    ----------
+    overrides : mapping, iterable of str, or str
+        A dotted-key mapping, ``"section.key=VALUE"`` strings (``--set``), or one such string.
+
+    Raises
+    ------
+    ConfigError
+        For anything else, or a string that is not ``section.key=VALUE``.
+    """
+    if isinstance(overrides, Mapping):
+        return list(overrides.items())
+    if isinstance(overrides, str):
+        return [parse_override(overrides)]
+    if isinstance(overrides, Iterable) and not isinstance(overrides, bytes | bytearray):
+        items = list(overrides)
+        for item in items:
+            if not isinstance(item, str):
+                raise ConfigError(
+                    f"overrides: expected 'section.key=VALUE' strings, got {shown(item)}"
+                )
+        return [parse_override(item) for item in items]
+    raise ConfigError(
+        "overrides: expected a mapping of dotted keys or 'section.key=VALUE' strings, "
+        f"got {type(overrides).__name__}"
+    )
+
+
+def apply_overrides(
+    data: dict[str, Any], overrides: Mapping[str, Any] | Iterable[str] | str
+) -> None:
+    """Apply dotted-key overrides in place (a mapping, ``key=value`` strings or one such
+    string, :func:`normalized_overrides`)."""
+    for dotted, value in normalized_overrides(overrides):
+        if not isinstance(dotted, str) or not dotted:
+            raise ConfigError(f"{dotted!r}: a config key is a dotted name, e.g. 'joint.clearance'")
+        parts = dotted.split(".")
+        if _material_override(data, parts, value):
+            continue
+        node = data
+        for part in parts[:-1]:
+            child = node.setdefault(part, {})
+            if not isinstance(child, dict):
+                raise ConfigError(f"{dotted}: {part!r} is a value, not a section")
+            node = child
+        node[parts[-1]] = value
+
+
+def _material_override(data: dict[str, Any], parts: list[str], value: Any) -> bool:
+    """Apply an override of ``materials.pin|bushing[.key]`` (True if it was one).
+
+    A name replaces the material's table; a key updates it (a named material becomes a
+    table naming it), and a wear form drops the others (:func:`materials.merge_material`).
+    """
+    if not (2 <= len(parts) <= 3 and parts[0] == "materials" and parts[1] in ("pin", "bushing")):
+        return False
+    materials = data.setdefault("materials", {})
+    if not isinstance(materials, dict):
+        raise ConfigError(f"{'.'.join(parts)}: 'materials' is a value, not a section")
+    update = value if len(parts) == 2 else {parts[2]: value}
+    materials[parts[1]] = merge_material(materials.get(parts[1], {}), update)
+    return True
+
+
+def material_defaults(defaults: dict[str, Any], data: Mapping[str, Any]) -> dict[str, Any]:
+    """The parameter set's defaults under a config's materials: a named material drops
+    them, a wear form drops the defaults' other forms."""
+    given = data.get("materials")
+    if not isinstance(given, Mapping) or not isinstance(defaults.get("materials"), dict):
+        return defaults
+    out = copy.deepcopy(defaults)
+    for part in ("pin", "bushing"):
+        if part in given and part in out["materials"]:
+            out["materials"][part] = merge_material(out["materials"][part], given[part])
+    return out

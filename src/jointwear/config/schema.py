@@ -1,0 +1,155 @@
+"""The schema of a whole configuration: its sections, cross-checks and derived values.
+
+The checks between sections (life limits against the joint, the contact model
+against contour updating, the dynamics model against the mechanism type) and the
+derived defaults (NLCP's spring area and stiffness) live here; the stages' own
+checks and closed forms are reached through :mod:`jointwear.config.choices`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from pydantic import field_validator, model_validator
+
+from jointwear.config.choices import MODEL_CHOICE, NLCP_STIFFNESS, PAPER_SPRING_AREA
+from jointwear.config.fields import MAX_INTEGRATOR_STEPS, Section, one_of
+from jointwear.config.mechanisms import DYNAMIC_TYPES, MechanismConfig
+from jointwear.config.parameter_sets import PARAMETER_SETS
+from jointwear.config.sections import (
+    ContactConfig,
+    DynamicsConfig,
+    JointConfig,
+    LifeConfig,
+    MaterialsConfig,
+    SimulationConfig,
+    WearConfig,
+)
+
+__all__ = ["ConfigSchema"]
+
+
+class ConfigSchema(Section):
+    """The sections of a whole configuration, their cross-checks and derived values.
+
+    :class:`~jointwear.config.Config` adds writing and overriding; the key look-up and
+    the messages walk this schema.
+    """
+
+    parameter_set: str = "nlcp-paper"
+    mechanism: MechanismConfig
+    joint: JointConfig
+    materials: MaterialsConfig
+    contact: ContactConfig = ContactConfig()
+    dynamics: DynamicsConfig = DynamicsConfig()
+    simulation: SimulationConfig = SimulationConfig()
+    wear: WearConfig = WearConfig()
+    life: LifeConfig = LifeConfig()
+
+    @field_validator("parameter_set")
+    @classmethod
+    def _known_parameter_set(cls, value: str) -> str:
+        # also where the defaults are not merged (Config.replace, a sweep's cases): the
+        # name is recorded with the results and must be one that exists
+        return one_of(value, PARAMETER_SETS, "parameter set")
+
+    @model_validator(mode="after")
+    def _life_limits_fit(self) -> ConfigSchema:
+        life, joint = self.life, self.joint
+        if life.clearance is not None and life.clearance <= joint.clearance:
+            raise ValueError(
+                f"life.clearance: the limit ({life.clearance:g} m) must exceed the initial "
+                f"clearance joint.clearance ({joint.clearance:g} m)"
+            )
+        if life.wall_thickness >= joint.bushing_thickness:
+            raise ValueError(
+                f"life.wall_thickness: the limit ({life.wall_thickness:g} m) must be below "
+                f"joint.bushing_thickness ({joint.bushing_thickness:g} m)"
+            )
+        return self
+
+    @model_validator(mode="after")
+    def _contact_model_fits(self) -> ConfigSchema:
+        # a model that cannot follow a worn contour, or NLCP's paper form off its mesh,
+        # would wear the wrong volume: refused before anything runs
+        contact = self.contact
+        MODEL_CHOICE(contact.model, self.simulation.update_contour)
+        if contact.model == "nlcp" and contact.nlcp_variant == "paper":
+            node = self.joint.bushing_radius * 2.0 * math.pi / contact.nodes
+            PAPER_SPRING_AREA(self.spring_area, node * self.joint.axial_length, contact.nodes)
+        return self
+
+    @model_validator(mode="after")
+    def _dynamics_fits_mechanism(self) -> ConfigSchema:
+        if self.dynamics.model == "contact-impact" and self.mechanism.type not in DYNAMIC_TYPES:
+            raise ValueError(
+                f"dynamics.model: 'contact-impact' needs a mechanism with inertia "
+                f"({', '.join(repr(t) for t in DYNAMIC_TYPES)}); mechanism.type "
+                f"{self.mechanism.type!r} prescribes its load"
+            )
+        return self
+
+    @model_validator(mode="after")
+    def _integration_bounded(self) -> ConfigSchema:
+        # the contact-impact integrator takes at least span / max_step steps: refused up
+        # front where that would run for hours instead of failing after them
+        dynamics = self.dynamics
+        if dynamics.model != "contact-impact" or dynamics.max_step is None:
+            return self
+        revolutions = dynamics.revolutions_settle + 1
+        span = revolutions * self.mechanism.period
+        steps = span / dynamics.max_step
+        if steps > MAX_INTEGRATOR_STEPS:
+            raise ValueError(
+                f"dynamics.max_step: {dynamics.max_step:g} s makes at least {steps:.3g} "
+                f"integrator steps over {revolutions} revolution(s) of {self.mechanism.period:g} s "
+                f"(at most {MAX_INTEGRATOR_STEPS:.0e}); give a larger step"
+            )
+        return self
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Names of the mechanism's clearance joints."""
+        return self.mechanism.joints
+
+    @property
+    def bushing_radius(self) -> float:
+        """Unworn bushing inner radius [m]."""
+        return self.joint.bushing_radius
+
+    @property
+    def default_spring_area(self) -> float:
+        """Area of a 1 degree spring at the unworn bushing radius [m^2]."""
+        return self.joint.bushing_radius * math.radians(1.0) * self.joint.axial_length
+
+    @property
+    def spring_area(self) -> float:
+        """NLCP spring area [m^2]: ``contact.spring_area`` or the 1 degree default."""
+        if self.contact.spring_area is not None:
+            return self.contact.spring_area
+        return self.default_spring_area
+
+    @property
+    def nlcp_stiffness(self) -> float:
+        """NLCP spring stiffness ``K`` [N/m^n]: ``contact.stiffness`` or eq. (2)."""
+        if self.contact.stiffness is not None:
+            return self.contact.stiffness
+        pin, bushing = self.materials.pin, self.materials.bushing
+        return float(
+            NLCP_STIFFNESS(
+                self.joint.pin_radius,
+                pin.youngs_modulus,
+                pin.poisson_ratio,
+                bushing.youngs_modulus,
+                bushing.poisson_ratio,
+            )
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        """Fully resolved config as plain data (SI numbers, every default written)."""
+        data = self.model_dump(mode="json")
+        data["mechanism"].update(self.mechanism.resolved())
+        data["contact"]["spring_area"] = self.spring_area
+        data["contact"]["stiffness"] = self.nlcp_stiffness
+        return data
