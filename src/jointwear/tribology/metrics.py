@@ -27,6 +27,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from jointwear.materials import LIMIT_KEYS
+from jointwear.tribology.sliding import sliding_speed
 
 if TYPE_CHECKING:
     from jointwear.config import JointConfig
@@ -91,27 +92,38 @@ class Metric:
 WEAR_METRICS: tuple[Metric, ...] = (
     Metric("peak_wear_depth", "m", "largest wear depth of the bushing", "peak_wear_depth_m", "m"),
     Metric(
-        "wear_width", "rad", "angular width of the worn zone", "wear_width_deg", "deg",
+        "wear_width",
+        "rad",
+        "angular width of the worn zone",
+        "wear_width_deg",
+        "deg",
         180.0 / math.pi,
     ),
     Metric("wear_area", "m2", "cross-section area removed by wear", None, "m^2"),
     Metric("wear_volume", "m3", "worn volume", "wear_volume_m3", "m^3"),
     Metric("wear_mass", "kg", "worn mass", "wear_mass_kg", "kg"),
     Metric(
-        "min_wall_thickness", "m", "smallest remaining bushing wall thickness",
-        "min_wall_thickness_m", "m",
+        "min_wall_thickness",
+        "m",
+        "smallest remaining bushing wall thickness",
+        "min_wall_thickness_m",
+        "m",
     ),
     Metric(
-        "max_clearance", "m", "largest radial play of the pin (clearance plus wear)",
-        "max_clearance_m", "m",
+        "max_clearance",
+        "m",
+        "largest radial play of the pin (clearance plus wear)",
+        "max_clearance_m",
+        "m",
     ),
 )
 
 
 #: the pin's metrics, when the pin wears (``materials.pin.wear_coefficient``)
 PIN_METRICS: tuple[Metric, ...] = (
-    Metric("pin_peak_wear_depth", "m", "largest wear depth of the pin", "pin_peak_wear_depth_m",
-           "m"),
+    Metric(
+        "pin_peak_wear_depth", "m", "largest wear depth of the pin", "pin_peak_wear_depth_m", "m"
+    ),
     Metric("pin_wear_volume", "m3", "worn volume of the pin", "pin_wear_volume_m3", "m^3"),
 )
 
@@ -399,29 +411,47 @@ class Check:
 #: nominal pressure and the nominal PV are compared, the local values only reported
 CHECKS: dict[str, Check] = {
     "nominal_pressure": Check(
-        "nominal pressure", "max_dynamic_pressure", "Pa", "MPa",
+        "nominal pressure",
+        "max_dynamic_pressure",
+        "Pa",
+        "MPa",
         "largest nominal pressure F / (2 R_p b) over the cycle",
     ),
     "peak_pressure": Check(
-        "peak pressure", "max_static_pressure", "Pa", "MPa",
+        "peak pressure",
+        "max_static_pressure",
+        "Pa",
+        "MPa",
         "largest local contact pressure (stored pressure snapshots of the unworn and the "
         "final contour)",
     ),
     "sliding_speed": Check(
-        "sliding speed", "max_sliding_speed", "m/s", "m/s",
+        "sliding speed",
+        "max_sliding_speed",
+        "m/s",
+        "m/s",
         "largest sliding speed R_p |d(phi_pin - phi_bushing)/dt| over the cycle",
     ),
     "pv": Check(
-        "nominal PV (cycle mean)", "max_pv", "Pa*m/s", "MPa*m/s",
+        "nominal PV (cycle mean)",
+        "max_pv",
+        "Pa*m/s",
+        "MPa*m/s",
         "cycle mean of nominal pressure F / (2 R_p b) times sliding speed (the datasheet "
         "PV, compared with the limit)",
     ),
     "pv_max": Check(
-        "PV (largest)", None, "Pa*m/s", "MPa*m/s",
+        "PV (largest)",
+        None,
+        "Pa*m/s",
+        "MPa*m/s",
         "largest nominal pressure times sliding speed over the cycle (not compared)",
     ),
     "pv_peak_local": Check(
-        "PV (local peak)", None, "Pa*m/s", "MPa*m/s",
+        "PV (local peak)",
+        None,
+        "Pa*m/s",
+        "MPa*m/s",
         "largest local contact pressure times sliding speed at a node (stored pressure "
         "snapshots; not compared)",
     ),
@@ -472,7 +502,7 @@ def operating_values(
     load = np.asarray(load, dtype=float)
     duration = np.asarray(step_duration, dtype=float)
     nominal = load / (2.0 * pin_radius * axial_length)
-    speed = pin_radius * np.abs(np.asarray(relative_rotation, dtype=float)) / duration
+    speed = sliding_speed(relative_rotation, duration, pin_radius)
     out = {
         "nominal_pressure": float(nominal.max()),
         "peak_pressure": math.nan,

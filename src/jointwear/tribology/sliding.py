@@ -28,10 +28,11 @@ the contact is exactly
   0.67 % for the paper's joint (``c = 0.05 mm``, ``R_b = 7.5 mm``), 0.1-1 % for
   ordinary plain bearings.
 
-The package takes ``R_b``: exact for the paper's joint, within ``c / R_b`` of the slip
-otherwise. The wear and the material checks' sliding speed (:func:`sliding_speed`) are
-meant to share it; a datasheet's sliding speed is the pin's surface speed
-``R_p |dphi/dt|``, ``c / R_b`` below it, far inside a datasheet limit's own uncertainty.
+The wear takes ``R_b``: exact for the paper's joint, within ``c / R_b`` of the slip
+otherwise. The material checks (:func:`sliding_speed`) take ``R_p``, because the limits
+they are compared with are stated that way: a datasheet's sliding speed and PV use the
+shaft's surface speed ``R_p |dphi/dt|``. Each caller states its radius; the formula is
+this module's one.
 
 Two readings of the angle are offered (``simulation.sliding``):
 
@@ -106,12 +107,13 @@ def contact_azimuth(azimuth: ArrayLike, radius: float) -> FloatArray:
 
 
 def sliding_speed(
-    rotation_increment: ArrayLike, step_duration: ArrayLike, bushing_radius: float
+    rotation_increment: ArrayLike, step_duration: ArrayLike, radius: float
 ) -> FloatArray:
-    """Sliding speed ``R_b |d(phi_pin - phi_bushing)| / dt`` of each step [m/s].
+    """Sliding speed ``R |d(phi_pin - phi_bushing)| / dt`` of each step [m/s].
 
-    The speed of the material checks: the sliding distance of :func:`relative_rotation`
-    over the step's duration.
+    The sliding distance of :func:`sliding_distance` over the step's duration. The
+    material checks call it with the pin radius ``R_p``, the radius of a datasheet's
+    sliding speed and PV limits.
 
     Parameters
     ----------
@@ -119,11 +121,11 @@ def sliding_speed(
         Relative rotation of pin and bushing over each step [rad].
     step_duration : array_like, shape (M,)
         Duration of each step [s].
-    bushing_radius : float
-        Bushing radius ``R_b`` [m].
+    radius : float
+        Radius of the surface whose speed is meant [m]: ``R_p`` for a datasheet's limits.
     """
     duration = np.asarray(step_duration, dtype=float)
-    return sliding_distance(rotation_increment, bushing_radius) / duration
+    return sliding_distance(rotation_increment, radius) / duration
 
 
 SLIDING_MODELS: Registry = Registry("sliding model", "simulation.sliding")
