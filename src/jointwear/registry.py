@@ -1,9 +1,16 @@
-"""Registries of named models (pvlib's pattern: a model is a name or a callable)."""
+"""Registries of named models (pvlib's pattern: a model is a name or a callable).
+
+An entry may be named by a ``"module:attribute"`` string (:meth:`Registry.add_lazy`),
+imported when it is first asked for: a package can register models of a package that
+imports it without importing that package (no import cycle).
+"""
 
 from __future__ import annotations
 
 import difflib
 from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from importlib import import_module
 from typing import Generic, TypeVar
 
 from jointwear.errors import ConfigError
@@ -20,6 +27,17 @@ def suggest(name: str, options: Iterable[str]) -> str:
     if close:
         return f"; did you mean {close[0]!r}?"
     return f"; choose from {', '.join(repr(o) for o in options)}"
+
+
+@dataclass(frozen=True)
+class _Lazy:
+    """An entry named by ``"module:attribute"``, imported on first use."""
+
+    target: str
+
+    def load(self) -> object:
+        module, _, attribute = self.target.partition(":")
+        return getattr(import_module(module), attribute)
 
 
 class Registry(Generic[T]):
@@ -48,6 +66,14 @@ class Registry(Generic[T]):
     def add(self, name: str, obj: T) -> None:
         self._entries[name] = obj
 
+    def add_lazy(self, name: str, target: str) -> None:
+        """Register the object ``target`` names (``"package.module:attribute"``).
+
+        The module is imported when the entry is first asked for (:meth:`get`,
+        :meth:`items`); names, membership and suggestions do not import it.
+        """
+        self._entries[name] = _Lazy(target)  # type: ignore[assignment]
+
     def __contains__(self, name: object) -> bool:
         return name in self._entries
 
@@ -55,6 +81,8 @@ class Registry(Generic[T]):
         return iter(self._entries)
 
     def items(self):
+        for name in self._entries:
+            self.get(name)  # imports the lazy entries
         return self._entries.items()
 
     def names(self) -> list[str]:
@@ -62,8 +90,11 @@ class Registry(Generic[T]):
 
     def get(self, name: str) -> T:
         try:
-            return self._entries[name]
+            entry = self._entries[name]
         except KeyError:
             raise ConfigError(
                 f"{self.key}: unknown {self.kind} {name!r}{suggest(name, self._entries)}"
             ) from None
+        if isinstance(entry, _Lazy):
+            entry = self._entries[name] = entry.load()
+        return entry

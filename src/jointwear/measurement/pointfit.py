@@ -25,7 +25,7 @@ whole scar look shallower by as much (about 2 % for a 20 µm scar measured with
 2 µm noise). With the simulated profile in the model every point is used for
 what it is and the centre carries no such bias; under independent radial
 noise the residuals are independent, which is what the uncertainty of
-:mod:`jointwear.measurement.calibrate` relies on.
+:mod:`jointwear.measurement.parameter_fit` relies on.
 
 All lengths are metres, angles radians.
 """
