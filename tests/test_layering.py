@@ -70,7 +70,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "jointwear.calibration",
             "jointwear.measurement",
             "jointwear.references.compare",
-            "jointwear.references.calibrate",
+            "jointwear.references.spring_fit",
             # runs the simulation against the exact references (the Validation page)
             "jointwear.references.validation",
             "jointwear.sweep",

@@ -20,6 +20,9 @@ from numpy.typing import NDArray
 __all__ = ["RootResult", "bracketed_newton"]
 
 FloatArray = NDArray[np.float64]
+BoolArray = NDArray[np.bool_]
+
+_EPS = float(np.finfo(float).eps)
 
 #: ``func(x, index) -> (residual, derivative, scale[, second[, third derivative]])`` for
 #: the problems ``index``. ``scale`` is the size of the terms summed into the residual;
@@ -115,101 +118,223 @@ def bracketed_newton(
     -------
     RootResult
     """
-    lo = np.array(lower, dtype=float, copy=True)
-    hi = np.array(upper, dtype=float, copy=True)
-    x = np.clip(np.asarray(x0, dtype=float), lo, hi)
-    size = x.size
-    residual = np.full(size, np.nan)
-    slope = np.full(size, np.nan)  # last derivative func computed, per problem
-    iterations = np.zeros(size, dtype=np.int64)
-    converged = np.zeros(size, dtype=bool)
-    explained_before = np.zeros(size, dtype=bool)
-    active = np.arange(size)
-    eps = float(np.finfo(float).eps)
+    batch = _Batch.start(x0, lower, upper)
     half_curvature = 0.5 * curvature
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         for _ in range(max_iterations):
-            if active.size == 0:
+            if batch.active.size == 0:
                 break
             # while every problem is active (the costly first iterations) no gathers
-            whole = active.size == size
-            xa = x.copy() if whole else x[active]
-            f, df, scale, *second = func(xa, active)
-            if whole:
-                iterations += 1
-                residual[:] = f
-                lo_old, hi_old, slope_old = lo, hi, slope
-            else:
-                iterations[active] += 1
-                residual[active] = f
-                lo_old, hi_old, slope_old = lo[active], hi[active], slope[active]
-            df = np.where(np.isnan(df), slope_old, df)
+            whole = batch.active.size == batch.x.size
+            xa = batch.x.copy() if whole else batch.x[batch.active]
+            f, df, scale, *derivatives = func(xa, batch.active)
+            lo, hi, slope = batch.record(f, whole)
+            df = np.where(np.isnan(df), slope, df)
             size_f = np.abs(f)
             done = size_f <= np.maximum(rtol * scale, atol)
-            # round-off: a residual that ``ulps`` units in the last place of x explain is
-            # accepted where Newton's step is below one ulp (it would round to x, and a
-            # step the bracket rejects would bisect it), or for the second time in a row
-            ulp_x = eps * np.abs(xa)
-            explained = ~done & (size_f <= ulps * ulp_x * np.abs(df))
-            if explained.any():
-                before = explained_before if whole else explained_before[active]
-                done = done | (explained & ((size_f <= ulp_x * np.abs(df)) | before))
-            if whole:
-                explained_before = explained
-            else:
-                explained_before[active] = explained
+            done = batch.accept_round_off(done, size_f, df, xa, ulps, whole)
             # shrink the bracket with the sign of the residual
             below = f < 0
-            lo_a = np.where(below, xa, lo_old)
-            hi_a = np.where(below, hi_old, xa)
-            if second:
-                # f'' / (2 f'^2) where func gave f'', else kappa / (2 scale)
-                half = 0.5 * second[0] / (df * df)
-                if half_curvature:
-                    half = np.where(np.isnan(half), half_curvature / scale, half)
-                else:
-                    half = np.where(np.isnan(half), 0.0, half)
-                change = -f / df * (1.0 + half * f)
-                if len(second) > 1:
-                    # one Newton step on the cubic Taylor polynomial from the Chebyshev step;
-                    # a refinement only: where it would move the step by half of itself or
-                    # more, the expansion is not to be trusted (keep the Chebyshev step)
-                    d2, d3 = second
-                    have = ~np.isnan(d3)
-                    if have.any():
-                        h = change[have]
-                        a, b, c = df[have], d2[have], d3[have]
-                        value = f[have] + h * (a + h * (0.5 * b + h * c / 6.0))
-                        correction = value / (a + h * (b + 0.5 * h * c))
-                        change[have] = np.where(
-                            np.abs(correction) <= 0.5 * np.abs(h), h - correction, h
-                        )
-                step = xa + change
-            elif half_curvature:
-                step = xa - f / df * (1.0 + half_curvature * f / scale)
-            else:
-                step = xa - f / df
+            lo = np.where(below, xa, lo)
+            hi = np.where(below, hi, xa)
+            step = xa + _newton_change(f, df, scale, derivatives, half_curvature)
             # (a NaN or infinite step compares False: bisection)
-            inside = (step > lo_a) & (step < hi_a)
-            new_x = np.where(inside, step, 0.5 * (lo_a + hi_a))
-            # a bracket that has collapsed to round-off cannot improve any further
-            bracket = hi_a - lo_a
-            ulp = eps * np.abs(xa)
-            stalled = bracket <= 4 * np.maximum(ulp, eps * 1e-300)
+            inside = (step > lo) & (step < hi)
+            new_x = np.where(inside, step, 0.5 * (lo + hi))
+            stalled, resolved = _collapsed(lo, hi, xa, size_f, df, done)
             keep = ~(done | stalled)
-            if stalled.any():
-                # ... and if the residual is what a step of that size explains, x is the root
-                # to machine precision though |f| > tolerance (stiff f: f' * ulp(x) > atol)
-                resolved = stalled & ~done & (size_f <= 2 * np.abs(df) * np.maximum(bracket, ulp))
-                done = done | resolved
-            converged[active[done]] = True
+            done = done | resolved
             move = keep | (done & inside) if polish else keep
-            if whole:
-                lo, hi, slope = lo_a, hi_a, df
-                x[move] = new_x[move]
-                active = active[keep]
-            else:
-                lo[active], hi[active], slope[active] = lo_a, hi_a, df
-                x[active[move]] = new_x[move]
-                active = active[keep]
-    return RootResult(x=x, residual=residual, iterations=iterations, converged=converged)
+            batch.advance(lo, hi, df, new_x, done, keep, move, whole)
+    return RootResult(
+        x=batch.x, residual=batch.residual, iterations=batch.iterations, converged=batch.converged
+    )
+
+
+@dataclass
+class _Batch:
+    """Iteration state of every problem; the ``active`` ones are still being solved.
+
+    Attributes
+    ----------
+    x : ndarray
+        Current iterates (same unit as the unknown).
+    lo, hi : ndarray
+        Current brackets (same unit as the unknown).
+    residual : ndarray
+        Last residual of each problem (unit of ``f``).
+    slope : ndarray
+        Last first derivative ``func`` computed for each problem (NaN: none yet).
+    iterations : ndarray of int
+        Evaluations per problem.
+    converged : ndarray of bool
+        Problems that met the tolerance or were located to round-off.
+    explained_before : ndarray of bool
+        The last residual was one that ``ulps`` units in the last place of ``x`` explain.
+    active : ndarray of int
+        Indices of the problems still iterating.
+    """
+
+    x: FloatArray
+    lo: FloatArray
+    hi: FloatArray
+    residual: FloatArray
+    slope: FloatArray
+    iterations: NDArray[np.int64]
+    converged: BoolArray
+    explained_before: BoolArray
+    active: NDArray[np.intp]
+
+    @classmethod
+    def start(cls, x0: FloatArray, lower: FloatArray, upper: FloatArray) -> _Batch:
+        """Every problem active, at its guess clipped into its bracket."""
+        lo = np.array(lower, dtype=float, copy=True)
+        hi = np.array(upper, dtype=float, copy=True)
+        x = np.clip(np.asarray(x0, dtype=float), lo, hi)
+        size = x.size
+        return cls(
+            x=x,
+            lo=lo,
+            hi=hi,
+            residual=np.full(size, np.nan),
+            slope=np.full(size, np.nan),
+            iterations=np.zeros(size, dtype=np.int64),
+            converged=np.zeros(size, dtype=bool),
+            explained_before=np.zeros(size, dtype=bool),
+            active=np.arange(size),
+        )
+
+    def record(self, f: FloatArray, whole: bool) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """Count an evaluation of the active problems; return their bracket and last slope.
+
+        ``whole``: every problem is active, so nothing is gathered.
+        """
+        if whole:
+            self.iterations += 1
+            self.residual[:] = f
+            return self.lo, self.hi, self.slope
+        active = self.active
+        self.iterations[active] += 1
+        self.residual[active] = f
+        return self.lo[active], self.hi[active], self.slope[active]
+
+    def accept_round_off(
+        self,
+        done: BoolArray,
+        size_f: FloatArray,
+        df: FloatArray,
+        xa: FloatArray,
+        ulps: float,
+        whole: bool,
+    ) -> BoolArray:
+        """``done``, plus residuals that ``ulps`` units in the last place of ``x`` explain.
+
+        Such a residual is accepted where Newton's step is below one ulp (it would round
+        to ``x``, and a step the bracket rejects would bisect it), or for the second
+        evaluation in a row (remembered here).
+        """
+        ulp_x = _EPS * np.abs(xa)
+        explained = ~done & (size_f <= ulps * ulp_x * np.abs(df))
+        if explained.any():
+            before = self.explained_before if whole else self.explained_before[self.active]
+            done = done | (explained & ((size_f <= ulp_x * np.abs(df)) | before))
+        if whole:
+            self.explained_before = explained
+        else:
+            self.explained_before[self.active] = explained
+        return done
+
+    def advance(
+        self,
+        lo: FloatArray,
+        hi: FloatArray,
+        df: FloatArray,
+        new_x: FloatArray,
+        done: BoolArray,
+        keep: BoolArray,
+        move: BoolArray,
+        whole: bool,
+    ) -> None:
+        """Store the active problems' brackets, slopes and iterates; retire the finished.
+
+        ``done``: converged; ``keep``: still active; ``move``: take ``new_x``.
+        """
+        active = self.active
+        self.converged[active[done]] = True
+        if whole:
+            self.lo, self.hi, self.slope = lo, hi, df
+            self.x[move] = new_x[move]
+        else:
+            self.lo[active], self.hi[active], self.slope[active] = lo, hi, df
+            self.x[active[move]] = new_x[move]
+        self.active = active[keep]
+
+
+def _newton_change(
+    f: FloatArray,
+    df: FloatArray,
+    scale: FloatArray,
+    derivatives: list[FloatArray],
+    half_curvature: float,
+) -> FloatArray:
+    """The step of :func:`bracketed_newton`, before the bracket judges it.
+
+    Newton's ``-f/f'``; Chebyshev's ``-f/f' (1 + f f'' / (2 f'^2))`` where ``func`` gave
+    ``f''`` or ``curvature`` stands in for it (``f'' / (2 f'^2) = kappa / (2 scale)``);
+    refined on the cubic Taylor polynomial where ``func`` gave the third derivative.
+    """
+    if derivatives:
+        half = 0.5 * derivatives[0] / (df * df)
+        if half_curvature:
+            half = np.where(np.isnan(half), half_curvature / scale, half)
+        else:
+            half = np.where(np.isnan(half), 0.0, half)
+        change = -f / df * (1.0 + half * f)
+        if len(derivatives) > 1:
+            d2, d3 = derivatives
+            _refine_on_cubic(change, f, df, d2, d3)
+        return change
+    if half_curvature:
+        return -f / df * (1.0 + half_curvature * f / scale)
+    return -f / df
+
+
+def _refine_on_cubic(
+    change: FloatArray, f: FloatArray, df: FloatArray, d2: FloatArray, d3: FloatArray
+) -> None:
+    """One Newton step on ``f + f' h + f'' h^2 / 2 + f''' h^3 / 6`` from ``h = change``.
+
+    In place, where the third derivative is known. A refinement only: where it would
+    move the step by half of itself or more the expansion is not to be trusted, and the
+    step stays.
+    """
+    have = ~np.isnan(d3)
+    if have.any():
+        h = change[have]
+        a, b, c = df[have], d2[have], d3[have]
+        value = f[have] + h * (a + h * (0.5 * b + h * c / 6.0))
+        correction = value / (a + h * (b + 0.5 * h * c))
+        change[have] = np.where(np.abs(correction) <= 0.5 * np.abs(h), h - correction, h)
+
+
+def _collapsed(
+    lo: FloatArray,
+    hi: FloatArray,
+    xa: FloatArray,
+    size_f: FloatArray,
+    df: FloatArray,
+    done: BoolArray,
+) -> tuple[BoolArray, BoolArray]:
+    """Brackets collapsed to round-off (no further improvement), and which hold a root.
+
+    A collapsed bracket whose residual is what a step of its size explains has its root
+    to machine precision though ``|f|`` exceeds the tolerance (a stiff ``f``:
+    ``f' ulp(x) > atol``).
+    """
+    bracket = hi - lo
+    ulp = _EPS * np.abs(xa)
+    stalled = bracket <= 4 * np.maximum(ulp, _EPS * 1e-300)
+    if not stalled.any():
+        return stalled, stalled
+    resolved = stalled & ~done & (size_f <= 2 * np.abs(df) * np.maximum(bracket, ulp))
+    return stalled, resolved

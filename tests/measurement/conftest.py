@@ -31,7 +31,12 @@ class Scenario:
 
     def measure(self) -> tuple[np.ndarray, np.ndarray]:
         return synthesize_measurement(
-            self.depth, self.radius, self.points, self.noise, self.seed, self.center,
+            self.depth,
+            self.radius,
+            self.points,
+            self.noise,
+            self.seed,
+            self.center,
             self.rotation,
         )
 

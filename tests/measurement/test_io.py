@@ -54,8 +54,10 @@ def test_csv_extra_columns_semicolons_comments_and_bom(tmp_path: Path) -> None:
     x_mm, y_mm = ring_mm()
     rows = "\n".join(f"{i};{a};{b};0.0" for i, (a, b) in enumerate(zip(x_mm, y_mm, strict=True)))
     file = tmp_path / "cmm.csv"
-    file.write_text("\ufeff# exported by the instrument\nid;y [mm];x [mm];z [mm]\n" + rows + "\n",
-                    encoding="utf-8")
+    file.write_text(
+        "\ufeff# exported by the instrument\nid;y [mm];x [mm];z [mm]\n" + rows + "\n",
+        encoding="utf-8",
+    )
     x, y = read_points(file)
     np.testing.assert_allclose(x, y_mm * 1e-3)  # columns are found by name, not position
     np.testing.assert_allclose(y, x_mm * 1e-3)

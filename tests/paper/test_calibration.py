@@ -6,7 +6,7 @@ import pytest
 
 from jointwear.config import Config
 from jointwear.errors import ConfigError
-from jointwear.measurement.calibrate import resolve_parameter
+from jointwear.measurement.parameter_fit import resolve_parameter
 from jointwear.paper.calibration import (
     CALIBRATION_CASE,
     CALIBRATION_PARAMETERS,

@@ -143,15 +143,15 @@ def calibrate(
         return
 
     from jointwear.cli.compare_cmd import parse_align
-    from jointwear.measurement.calibrate import (
+    from jointwear.measurement.compare import CIRCLE_FITS, PROFILE_CHOICES
+    from jointwear.measurement.io import length_unit_factor
+    from jointwear.measurement.parameter_fit import (
         PARAMETER_ALIASES,
         MeasuredCase,
         calibrate_profiles,
         parse_case,
         parse_fit,
     )
-    from jointwear.measurement.compare import CIRCLE_FITS, PROFILE_CHOICES
-    from jointwear.measurement.io import length_unit_factor
     from jointwear.registry import suggest
     from jointwear.resources import check_run
     from jointwear.units import to_si
@@ -260,7 +260,7 @@ def _paper(
     """``calibrate --paper-row``: fit the paper's metrics of one table row."""
     from jointwear.calibration import config_value
     from jointwear.config import parse_override
-    from jointwear.measurement.calibrate import key_unit, parse_fit
+    from jointwear.measurement.parameter_fit import key_unit, parse_fit
     from jointwear.paper.calibration import (
         CALIBRATION_PARAMETERS,
         calibrate_paper_row,
@@ -332,7 +332,7 @@ def _finite(value: float) -> float | None:
 
 
 def _parameter_table(parameters: dict[str, dict[str, Any]], title: str) -> Table:
-    from jointwear.measurement.calibrate import PARAMETER_ALIASES
+    from jointwear.measurement.parameter_fit import PARAMETER_ALIASES
 
     short = {key: name for name, key in PARAMETER_ALIASES.items()}
     table = Table(title=title)
@@ -364,7 +364,7 @@ def _reference(reference, loads, config, measured, set_, json_) -> None:
     from jointwear.cli.compare_models_cmd import parse_loads
     from jointwear.config import load_config
     from jointwear.contact import ContactParameters
-    from jointwear.references.calibrate import calibrate_to_reference
+    from jointwear.references.spring_fit import calibrate_to_reference
 
     if reference not in ("fem", "persson"):
         from jointwear.registry import suggest

@@ -133,7 +133,7 @@ def compare_models_command(
 
     fits = {}
     if calibrate:
-        from jointwear.references.calibrate import calibrate_to_reference
+        from jointwear.references.spring_fit import calibrate_to_reference
 
         fits = calibrate_to_reference(
             params, force, reference=reference, target=target, nodes=cfg.contact.nodes

@@ -37,7 +37,6 @@ from jointwear.contact.laws import (
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ConfigError
 from jointwear.geometry.contour import BushingContour, Pin
-from jointwear.references import fem_model, persson_model
 from jointwear.registry import Registry
 
 __all__ = [
@@ -67,9 +66,10 @@ CONTACT_MODELS.add("hertz", hertz.HertzLaw)
 CONTACT_MODELS.add("winkler", winkler.spring_law)
 CONTACT_MODELS.add("asymmetric-winkler", asymmetric_winkler.spring_law)
 CONTACT_MODELS.add("nlcp", nlcp.spring_law)
-# reference solutions: exact elasticity and finite elements
-CONTACT_MODELS.add("persson", persson_model)
-CONTACT_MODELS.add("fem", fem_model)
+# reference solutions: exact elasticity and finite elements (imported when first used:
+# the references import this package)
+CONTACT_MODELS.add_lazy("persson", "jointwear.references.persson:model")
+CONTACT_MODELS.add_lazy("fem", "jointwear.references.fem:model")
 
 MODEL_DESCRIPTIONS = {
     "hertz": "Hertz force law F = K delta^n with the line-contact pressure profile (eqs. 1-3), "

@@ -45,7 +45,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -53,6 +53,7 @@ from scipy.optimize import minimize_scalar
 
 from jointwear.errors import ConfigError, DataError
 from jointwear.geometry import node_angles
+from jointwear.geometry.angles import angle_in_turn, wrap_angle
 from jointwear.measurement.fit import CircleFit, fit_circle_least_squares, fit_circle_robust
 from jointwear.measurement.profile import (
     PROFILE_METHODS,
@@ -62,6 +63,9 @@ from jointwear.measurement.profile import (
     wear_metrics,
 )
 from jointwear.registry import suggest
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 __all__ = [
     "ALIGN_BEST",
@@ -285,8 +289,8 @@ class Comparison:
 
 
 def _wrapped(angle: float) -> float:
-    """An angle wrapped to (-pi, pi] [rad]."""
-    return float(np.pi - np.mod(np.pi - angle, 2 * np.pi))
+    """An angle difference wrapped to (-pi, pi] [rad], as a float."""
+    return float(wrap_angle(angle))
 
 
 def _relative(error: float, reference: float) -> float:
@@ -438,6 +442,23 @@ def _metrics(
     )
 
 
+def _alignment_offset(simulated: FloatArray, measured: FloatArray, given: float | None) -> float:
+    """The given offset, else the best-fit one [rad] of ``measured`` onto ``simulated``.
+
+    Best fit: :func:`align_profiles` to the nearest node, then :func:`best_offset`
+    within a node, the measured profile interpolated periodically between nodes.
+    """
+    if given is not None:
+        return given
+    theta = node_angles(simulated.size)
+
+    def seen_from(offset: float) -> FloatArray:
+        return np.interp(theta + offset, theta, measured, period=2 * np.pi)
+
+    coarse, _ = align_profiles(simulated, measured)
+    return best_offset(simulated, seen_from, coarse, simulated.size)
+
+
 def compare_profiles(
     simulated_depth: ArrayLike,
     measured_depth: ArrayLike,
@@ -488,19 +509,10 @@ def compare_profiles(
     """
     simulated = _check_profile("simulated", simulated_depth)
     measured = _check_profile("measured", measured_depth, simulated.size)
-    nodes = simulated.size
-    theta = node_angles(nodes)
+    theta = node_angles(simulated.size)
     given = _check_align(align)
-
-    def seen_from(offset: float) -> FloatArray:
-        return np.interp(theta + offset, theta, measured, period=2 * np.pi)
-
-    if given is None:
-        coarse, _ = align_profiles(simulated, measured)
-        offset = best_offset(simulated, seen_from, coarse, nodes)
-    else:
-        offset = given
-    aligned = seen_from(offset)
+    offset = _alignment_offset(simulated, measured, given)
+    aligned = np.interp(theta + offset, theta, measured, period=2 * np.pi)
     sim_metrics, meas_metrics = _metrics(
         simulated, aligned, original_radius, axial_length, density, threshold, floor
     )
@@ -585,16 +597,7 @@ def compare_measurement(
     circle = fit if isinstance(fit, CircleFit) else fit_circle(x, y, original_radius, fit)
     # the profile as measured (offset 0): the measured frame
     first = measured_wear_profile(x, y, circle, original_radius, nodes, 0.0, method)
-    if given is None:
-        theta = node_angles(nodes)
-        coarse, _ = align_profiles(simulated, first)
-
-        def seen_from(offset: float) -> FloatArray:
-            return np.interp(theta + offset, theta, first, period=2 * np.pi)
-
-        offset = best_offset(simulated, seen_from, coarse, nodes)
-    else:
-        offset = given
+    offset = _alignment_offset(simulated, first, given)
     measured = measured_wear_profile(x, y, circle, original_radius, nodes, offset, method)
     comparison = compare_profiles(
         simulated, measured, original_radius, axial_length, density, threshold, 0.0, floor
@@ -665,26 +668,52 @@ def plot_comparison(
     list of Path
         The files written.
     """
-    from jointwear.plots import new_figure, polar_magnification, save_figure
+    from jointwear.plots import polar_magnification, save_figure
 
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     r0 = comparison.original_radius
-    theta = comparison.theta
     peak = max(float(comparison.simulated.max()), float(comparison.measured.max()))
     mag = polar_magnification(peak, r0) if magnification is None else float(magnification)
-    points_angle = points_depth = None
-    if x is not None and y is not None and comparison.fit is not None:
-        px = np.asarray(x, dtype=float) - comparison.fit.center_x
-        py = np.asarray(y, dtype=float) - comparison.fit.center_y
-        step = max(1, px.size // 3000)
-        points_angle = np.mod(np.arctan2(py, px)[::step] - comparison.alignment_offset, 2 * np.pi)
-        points_depth = np.hypot(px, py)[::step] - r0
+    points = _points_in_bushing_frame(comparison, x, y)
     title = f"{label}: " if label else ""
+    written = save_figure(_polar_figure(comparison, points, mag, title), directory, "compare_polar")
+    written += save_figure(_profile_figure(comparison, points, title), directory, "compare_profile")
+    return written
+
+
+def _points_in_bushing_frame(
+    comparison: Comparison, x: ArrayLike | None, y: ArrayLike | None
+) -> tuple[FloatArray, FloatArray] | None:
+    """Bushing-frame angle [rad] and depth [m] of (at most about 3000 of) the points.
+
+    None without points or without a circle fit to see them from.
+    """
+    if x is None or y is None or comparison.fit is None:
+        return None
+    px = np.asarray(x, dtype=float) - comparison.fit.center_x
+    py = np.asarray(y, dtype=float) - comparison.fit.center_y
+    step = max(1, px.size // 3000)
+    angle = angle_in_turn(np.arctan2(py, px)[::step] - comparison.alignment_offset)
+    return angle, np.hypot(px, py)[::step] - comparison.original_radius
+
+
+def _polar_figure(
+    comparison: Comparison,
+    points: tuple[FloatArray, FloatArray] | None,
+    mag: float,
+    title: str,
+) -> Figure:
+    """The roundness chart: original circle, simulated and measured contours, points.
+
+    The wear is magnified ``mag`` times [-]; the radial axis starts at ``0.8 R0``.
+    """
+    from jointwear.plots import new_figure
+
+    r0 = comparison.original_radius
+    theta = comparison.theta
     shift = math.degrees(comparison.alignment_offset)
     frames, rotation = _frame_titles(comparison)
-    written: list[Path] = []
-
     closed = np.append(theta, theta[0])
 
     def ring(depth: FloatArray) -> FloatArray:
@@ -693,10 +722,10 @@ def plot_comparison(
     fig = new_figure((5.5, 5.5))
     ax = fig.add_subplot(projection="polar")
     ax.plot(closed, np.full_like(closed, r0 * 1e3), "k--", lw=1, label="original bushing")
-    if points_angle is not None and points_depth is not None:
+    if points is not None:
         ax.plot(
-            points_angle,
-            (r0 + mag * points_depth) * 1e3,
+            points[0],
+            (r0 + mag * points[1]) * 1e3,
             ".",
             ms=1.5,
             color="0.6",
@@ -720,15 +749,24 @@ def plot_comparison(
         fontsize=8,
     )
     ax.legend(loc="lower left", fontsize=7, bbox_to_anchor=(-0.1, -0.12), ncol=2)
-    written += save_figure(fig, directory, "compare_polar")
+    return fig
 
+
+def _profile_figure(
+    comparison: Comparison, points: tuple[FloatArray, FloatArray] | None, title: str
+) -> Figure:
+    """Wear depth [µm] against the bushing angle [deg], and measured minus simulated."""
+    from jointwear.plots import new_figure
+
+    shift = math.degrees(comparison.alignment_offset)
+    frames, rotation = _frame_titles(comparison)
     fig = new_figure((7, 5.5))
     ax1, ax2 = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": [3, 1]})
-    degrees = np.degrees(theta)
-    if points_angle is not None and points_depth is not None:
+    degrees = np.degrees(comparison.theta)
+    if points is not None:
         ax1.plot(
-            np.degrees(points_angle),
-            points_depth * 1e6,
+            np.degrees(points[0]),
+            points[1] * 1e6,
             ".",
             ms=1.5,
             color="0.6",
@@ -767,5 +805,4 @@ def plot_comparison(
     ax2.set_xlabel("bushing angle θ [deg]")
     ax2.set_xlim(0, 360)
     ax2.grid(alpha=0.3)
-    written += save_figure(fig, directory, "compare_profile")
-    return written
+    return fig

@@ -65,6 +65,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import DataError
+from jointwear.geometry.angles import angle_in_turn
 
 __all__ = [
     "CircleFit",
@@ -285,8 +286,16 @@ def _geometric_fit(
     from scipy.optimize import least_squares  # lazy: keeps the CLI quick to start
 
     solution = least_squares(
-        residual, initial, jac=jacobian, method="trf", loss=loss, f_scale=f_scale / scale,
-        xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=200,
+        residual,
+        initial,
+        jac=jacobian,
+        method="trf",
+        loss=loss,
+        f_scale=f_scale / scale,
+        xtol=1e-15,
+        ftol=1e-15,
+        gtol=1e-15,
+        max_nfev=200,
     )
     a, b, rho = split(solution.x)
     return float(cx0 + scale * a), float(cy0 + scale * b), float(scale * rho)
@@ -324,7 +333,14 @@ def fit_circle_least_squares(x: ArrayLike, y: ArrayLike) -> CircleFit:
     cx, cy, r = _geometric_fit(x, y, start, radius=None)
     residual = circle_residuals(x, y, cx, cy, r)
     return CircleFit(
-        cx, cy, r, _rms(residual), "least_squares", x.size, False, None,
+        cx,
+        cy,
+        r,
+        _rms(residual),
+        "least_squares",
+        x.size,
+        False,
+        None,
         coordinate_resolution(x, y),
     )
 
@@ -438,8 +454,57 @@ def fit_circle_robust(
     sets", Data Mining and Knowledge Discovery 12 (2006) 29-45.
     """
     x, y = _as_points(x, y)
+    _check_robust_options(original_radius, band, cutoff, coverage, search_nodes, max_iterations)
     fixed = original_radius is not None
-    if fixed and not (np.isfinite(original_radius) and original_radius > 0):
+    # the parameters fitted: centre (2) and, unless fixed, radius (1); a fit needs one more point
+    trimmed_count = min(x.size, max(4 if fixed else 5, int(np.ceil(coverage * x.size))))
+    plain = _geometric_fit(x, y, _kasa(x, y), radius=None)
+    circle = _search_trimmed(x, y, plain, original_radius, coverage, trimmed_count, search_nodes)
+    circle = _concentrate(x, y, circle, trimmed_count, original_radius, max_iterations)
+    # The noise is estimated once, at the trimmed solution: re-estimating it as the circle
+    # moves lets a free radius creep outwards into the scar, widening the band as it goes.
+    if band is None:
+        band = cutoff * _noise_from_inside(circle_residuals(x, y, *circle))
+    half_width = max(band, 1e-9 * circle[2])
+    circle = _reweight(x, y, circle, half_width, original_radius, max_iterations)
+    # 4. polish with a smooth redescending loss (weight 1 / (1 + (r / f)^4), f = 2/3 band).
+    # Hard 0/1 weights can settle on slightly different kept sets from slightly different
+    # starts; the smooth loss makes the result all but independent of where it started.
+    cx, cy, fitted = _geometric_fit(
+        x, y, circle, radius=original_radius, loss="arctan", f_scale=2 * half_width / 3
+    )
+    radius = circle[2] if fixed else fitted
+    kept = np.abs(circle_residuals(x, y, cx, cy, radius)) <= half_width
+    arc = np.degrees(angular_extent(x[kept] - cx, y[kept] - cy))
+    if arc < min_arc_deg:
+        raise DataError(
+            f"robust circle fit: the unworn arc spans only {arc:.0f}° "
+            f"(< {min_arc_deg:g}°), too short to fix the centre"
+        )
+    residual = circle_residuals(x[kept], y[kept], cx, cy, radius)
+    return CircleFit(
+        float(cx),
+        float(cy),
+        float(radius),
+        _rms(residual),
+        "robust",
+        int(np.count_nonzero(kept)),
+        fixed,
+        kept,
+        coordinate_resolution(x, y),
+    )
+
+
+def _check_robust_options(
+    original_radius: float | None,
+    band: float | None,
+    cutoff: float,
+    coverage: float,
+    search_nodes: int,
+    max_iterations: int,
+) -> None:
+    """Refuse options of :func:`fit_circle_robust` outside their ranges (one line each)."""
+    if original_radius is not None and not (np.isfinite(original_radius) and original_radius > 0):
         raise DataError(f"robust circle fit: original radius must be > 0, got {original_radius!r}")
     if band is not None and not (np.isfinite(band) and band > 0):
         raise DataError(f"robust circle fit: band must be > 0, got {band!r}")
@@ -450,63 +515,100 @@ def fit_circle_robust(
     if search_nodes < 3 or max_iterations < 1:
         raise DataError("robust circle fit: search_nodes must be >= 3 and max_iterations >= 1")
 
-    # the parameters fitted: centre (2) and, unless fixed, radius (1); a fit needs one more point
-    trimmed_count = min(x.size, max(4 if fixed else 5, int(np.ceil(coverage * x.size))))
-    cx, cy, r_plain = _geometric_fit(x, y, _kasa(x, y), radius=None)
-    radius = float(original_radius) if fixed else r_plain
 
-    # 1. global search of the trimmed objective around the least-squares centre
+def _search_trimmed(
+    x: FloatArray,
+    y: FloatArray,
+    plain: tuple[float, float, float],
+    original_radius: float | None,
+    coverage: float,
+    trimmed_count: int,
+    search_nodes: int,
+) -> tuple[float, float, float]:
+    """Step 1: the circle of least trimmed squares on a grid of centres around ``plain``.
+
+    The grid reaches 1.5 times the peak-to-valley of the plain fit's residuals; its axes
+    follow their first harmonic (towards the wear, the direction of the least-squares
+    bias), so that the search, and the result, turn with the points instead of depending
+    on the instrument's axes. ``plain``: the least-squares circle ``(cx, cy, R)`` [m].
+    """
+    cx, cy, r_plain = plain
+    radius = float(original_radius) if original_radius is not None else r_plain
     plain_residual = circle_residuals(x, y, cx, cy, r_plain)
     reach = 1.5 * float(np.ptp(plain_residual))
-    if reach > 1e-9 * radius:
-        # The grid's axes follow the first harmonic of the residuals (towards the wear, the
-        # direction of the least-squares bias), so that the search, and the result, turn
-        # with the points instead of depending on the instrument's axes.
-        angle = np.arctan2(y - cy, x - cx)
-        axis = np.array([np.sum(plain_residual * np.cos(angle)),
-                         np.sum(plain_residual * np.sin(angle))])
-        norm = float(np.hypot(*axis))
-        along = axis / norm if norm > 0 else np.array([1.0, 0.0])
-        across = np.array([-along[1], along[0]])
-        # the objective only needs a fair sample of the ring to locate the basin
-        step = max(1, x.size // _SEARCH_SAMPLE)
-        xs, ys = x[::step], y[::step]
-        m = min(xs.size, max(3, int(np.ceil(coverage * xs.size))))
+    if not reach > 1e-9 * radius:
+        return cx, cy, radius
+    angle = np.arctan2(y - cy, x - cx)
+    axis = np.array(
+        [np.sum(plain_residual * np.cos(angle)), np.sum(plain_residual * np.sin(angle))]
+    )
+    norm = float(np.hypot(*axis))
+    along = axis / norm if norm > 0 else np.array([1.0, 0.0])
+    across = np.array([-along[1], along[0]])
+    # the objective only needs a fair sample of the ring to locate the basin
+    step = max(1, x.size // _SEARCH_SAMPLE)
+    xs, ys = x[::step], y[::step]
+    m = min(xs.size, max(3, int(np.ceil(coverage * xs.size))))
 
-        def trimmed(offset: FloatArray) -> float:
-            center = (cx + offset[0] * along[0] + offset[1] * across[0],
-                      cy + offset[0] * along[1] + offset[1] * across[1])
-            return _trimmed_objective(xs, ys, center[0], center[1], original_radius, m)[0]
+    def trimmed(offset: FloatArray) -> float:
+        center = (
+            cx + offset[0] * along[0] + offset[1] * across[0],
+            cy + offset[0] * along[1] + offset[1] * across[1],
+        )
+        return _trimmed_objective(xs, ys, center[0], center[1], original_radius, m)[0]
 
-        from scipy.optimize import brute
+    from scipy.optimize import brute
 
-        best = brute(trimmed, ((-reach, reach), (-reach, reach)), Ns=search_nodes, finish=None)
-        cx, cy = (float(cx + best[0] * along[0] + best[1] * across[0]),
-                  float(cy + best[0] * along[1] + best[1] * across[1]))
-        if not fixed:
-            radius = _trimmed_objective(x, y, cx, cy, None, trimmed_count)[1]
+    best = brute(trimmed, ((-reach, reach), (-reach, reach)), Ns=search_nodes, finish=None)
+    cx, cy = (
+        float(cx + best[0] * along[0] + best[1] * across[0]),
+        float(cy + best[0] * along[1] + best[1] * across[1]),
+    )
+    if original_radius is None:
+        radius = _trimmed_objective(x, y, cx, cy, None, trimmed_count)[1]
+    return cx, cy, radius
 
-    # 2. concentration steps of least trimmed squares
+
+def _concentrate(
+    x: FloatArray,
+    y: FloatArray,
+    circle: tuple[float, float, float],
+    trimmed_count: int,
+    original_radius: float | None,
+    max_iterations: int,
+) -> tuple[float, float, float]:
+    """Step 2: concentration steps of least trimmed squares, until the kept set is stable.
+
+    Keep the ``trimmed_count`` points nearest the circle and refit on them; each step
+    lowers the trimmed objective.
+    """
     kept: NDArray[np.bool_] | None = None
     for _ in range(max_iterations):
-        residual = circle_residuals(x, y, cx, cy, radius)
+        residual = circle_residuals(x, y, *circle)
         new_kept = np.zeros(x.size, dtype=bool)
         new_kept[np.argpartition(np.abs(residual), trimmed_count - 1)[:trimmed_count]] = True
         if kept is not None and np.array_equal(new_kept, kept):
             break
         kept = new_kept
-        cx, cy, radius = _refit(x, y, kept, cx, cy, radius, original_radius)
+        circle = _refit(x, y, kept, *circle, original_radius)
+    return circle
 
-    # 3. reweighting: every point within the band of the circle is unworn. The noise is
-    # estimated once, at the trimmed solution: re-estimating it as the circle moves lets a
-    # free radius creep outwards into the scar, widening the band as it goes.
-    if band is None:
-        noise = _noise_from_inside(circle_residuals(x, y, cx, cy, radius))
-        band = cutoff * noise
-    half_width = max(band, 1e-9 * radius)
-    kept = None
+
+def _reweight(
+    x: FloatArray,
+    y: FloatArray,
+    circle: tuple[float, float, float],
+    half_width: float,
+    original_radius: float | None,
+    max_iterations: int,
+) -> tuple[float, float, float]:
+    """Step 3: refit on every point within ``half_width`` [m] of the circle, until stable.
+
+    Every point within the band of the circle is taken as unworn.
+    """
+    kept: NDArray[np.bool_] | None = None
     for _ in range(max_iterations):
-        residual = circle_residuals(x, y, cx, cy, radius)
+        residual = circle_residuals(x, y, *circle)
         new_kept = np.abs(residual) <= half_width
         if np.count_nonzero(new_kept) < 3:
             raise DataError(
@@ -516,28 +618,8 @@ def fit_circle_robust(
         if kept is not None and np.array_equal(new_kept, kept):
             break
         kept = new_kept
-        cx, cy, radius = _refit(x, y, kept, cx, cy, radius, original_radius)
-
-    # 4. polish with a smooth redescending loss (weight 1 / (1 + (r / f)^4), f = 2/3 band).
-    # Hard 0/1 weights can settle on slightly different kept sets from slightly different
-    # starts; the smooth loss makes the result all but independent of where it started.
-    cx, cy, fitted = _geometric_fit(
-        x, y, (cx, cy, radius), radius=original_radius, loss="arctan", f_scale=2 * half_width / 3
-    )
-    radius = radius if fixed else fitted
-    kept = np.abs(circle_residuals(x, y, cx, cy, radius)) <= half_width
-
-    arc = np.degrees(angular_extent(x[kept] - cx, y[kept] - cy))
-    if arc < min_arc_deg:
-        raise DataError(
-            f"robust circle fit: the unworn arc spans only {arc:.0f}° "
-            f"(< {min_arc_deg:g}°), too short to fix the centre"
-        )
-    residual = circle_residuals(x[kept], y[kept], cx, cy, radius)
-    return CircleFit(
-        float(cx), float(cy), float(radius), _rms(residual), "robust",
-        int(np.count_nonzero(kept)), fixed, kept, coordinate_resolution(x, y),
-    )
+        circle = _refit(x, y, kept, *circle, original_radius)
+    return circle
 
 
 #: Largest number of points the global search of the robust fit evaluates.
@@ -605,6 +687,6 @@ def angular_extent(dx: FloatArray, dy: FloatArray) -> float:
     """
     if dx.size < 2:
         return 0.0
-    angle = np.sort(np.mod(np.arctan2(dy, dx), 2 * np.pi))
+    angle = np.sort(angle_in_turn(np.arctan2(dy, dx)))
     gaps = np.diff(np.concatenate([angle, angle[:1] + 2 * np.pi]))
     return float(2 * np.pi - gaps.max())

@@ -58,6 +58,7 @@ MIN_COVERAGE_DEG = 180.0
 #: far more than any wear, far less than a cloud of points that is no ring.
 _MAX_RELATIVE_SCATTER = 0.1
 
+
 def read_points(
     path: str | Path,
     units: str | None = None,
@@ -115,7 +116,7 @@ def read_points(
         x_col, x_factor = _column(path, columns, "x", units, default_factor)
         y_col, y_factor = _column(path, columns, "y", units, default_factor)
         data = load_numbers(
-            path, lines[first_index + 1:], delimiter, (x_col, y_col), first_index + 2
+            path, lines[first_index + 1 :], delimiter, (x_col, y_col), first_index + 2
         )
         x, y = data[:, 0] * x_factor, data[:, 1] * y_factor
 

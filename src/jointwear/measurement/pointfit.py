@@ -25,7 +25,7 @@ whole scar look shallower by as much (about 2 % for a 20 µm scar measured with
 2 µm noise). With the simulated profile in the model every point is used for
 what it is and the centre carries no such bias; under independent radial
 noise the residuals are independent, which is what the uncertainty of
-:mod:`jointwear.measurement.calibrate` relies on.
+:mod:`jointwear.measurement.parameter_fit` relies on.
 
 All lengths are metres, angles radians.
 """
@@ -39,6 +39,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import least_squares
 
 from jointwear.errors import DataError
+from jointwear.geometry.angles import angle_in_turn, wrap_angle
 
 __all__ = ["PointFit", "fit_points", "interpolation_weights"]
 
@@ -104,7 +105,7 @@ def interpolation_weights(angles: ArrayLike, nodes: int) -> tuple[NDArray[np.int
     w : ndarray
         Weight of the next node [-], in ``[0, 1)``.
     """
-    position = np.mod(np.asarray(angles, dtype=float), 2 * np.pi) * (nodes / (2 * np.pi))
+    position = angle_in_turn(angles) * (nodes / (2 * np.pi))
     k = np.floor(position).astype(np.intp)
     w = position - k
     return k % nodes, w
@@ -159,70 +160,19 @@ def fit_points(
     DataError
         Mismatched points, a profile that is not finite, or a non-positive radius.
     """
-    x = np.asarray(x, dtype=float).ravel()
-    y = np.asarray(y, dtype=float).ravel()
-    h = np.asarray(depth, dtype=float).ravel()
-    if x.shape != y.shape or x.size < 3:
-        raise DataError("point fit: need at least 3 points with x and y of equal length")
-    if h.size < 3 or not np.all(np.isfinite(h)):
-        raise DataError("point fit: the profile must be finite with at least 3 nodes")
-    if not (np.isfinite(original_radius) and original_radius > 0):
-        raise DataError(f"point fit: original radius must be > 0, got {original_radius!r}")
-    nodes = h.size
-    spacing = 2 * np.pi / nodes
-    slope_of_segment = (np.roll(h, -1) - h) / spacing
-    # coordinates about the starting centre: a ring far from the origin keeps its digits
-    x0, y0 = float(center[0]), float(center[1])
-    dx0, dy0 = x - x0, y - y0
+    x, y, h = _check_points_and_profile(x, y, depth, original_radius)
     free = tuple(
         name
         for name, on in (("center_x", fit_center), ("center_y", fit_center), ("offset", fit_offset))
         if on
     )
-
-    def unpack(q: FloatArray) -> tuple[float, float, float]:
-        values = dict(zip(free, q, strict=True))
-        return (
-            values.get("center_x", 0.0),
-            values.get("center_y", 0.0),
-            values.get("offset", float(offset)),
-        )
-
-    last: dict[bytes, tuple] = {}
-
-    def geometry(q: FloatArray) -> tuple:
-        # least_squares asks for the residual and the Jacobian at the same point: share it
-        key = np.asarray(q, dtype=float).tobytes()
-        if key not in last:
-            sx, sy, alpha = unpack(q)
-            dx, dy = dx0 - sx, dy0 - sy
-            distance = np.hypot(dx, dy)
-            angles = np.mod(np.arctan2(dy, dx) - alpha, 2 * np.pi)
-            k, w = interpolation_weights(angles, nodes)
-            last.clear()
-            last[key] = (dx, dy, distance, angles, k, w)
-        return last[key]
-
-    def residual(q: FloatArray) -> FloatArray:
-        _, _, distance, _, k, w = geometry(q)
-        return distance - original_radius - _interpolate(h, k, w)
-
-    def jacobian(q: FloatArray) -> FloatArray:
-        dx, dy, distance, _, k, _ = geometry(q)
-        slope = slope_of_segment[k]
-        columns = {
-            "center_x": -dx / distance - slope * dy / distance**2,
-            "center_y": -dy / distance + slope * dx / distance**2,
-            "offset": slope,
-        }
-        return np.column_stack([columns[name] for name in free]) if free else np.zeros((x.size, 0))
-
+    residuals = _PointResiduals(x, y, h, original_radius, center, float(offset), free)
     start = np.array([float(offset) if name == "offset" else 0.0 for name in free])
     if free:
         solution = least_squares(
-            residual,
+            residuals.residual,
             start,
-            jac=jacobian,
+            jac=residuals.jacobian,
             method="trf",
             x_scale="jac",
             xtol=1e-10,
@@ -236,15 +186,99 @@ def fit_points(
         q = solution.x
     else:
         q = start
-    sx, sy, alpha = unpack(q)
-    _, _, _, angles, _, _ = geometry(q)
-    wrapped = float(np.angle(np.exp(1j * alpha)))
+    sx, sy, alpha = residuals.unpack(q)
+    _, _, _, angles, _, _ = residuals.geometry(q)
     return PointFit(
-        center_x=x0 + sx,
-        center_y=y0 + sy,
-        offset=wrapped if wrapped != -np.pi else np.pi,
-        residuals=residual(q),
-        jacobian=jacobian(q),
+        center_x=residuals.x0 + sx,
+        center_y=residuals.y0 + sy,
+        offset=float(wrap_angle(alpha)),
+        residuals=residuals.residual(q),
+        jacobian=residuals.jacobian(q),
         angles=angles,
         free=free,
     )
+
+
+def _check_points_and_profile(
+    x: ArrayLike, y: ArrayLike, depth: ArrayLike, original_radius: float
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Points ``x, y`` [m] and profile [m] as flat arrays, or a DataError saying what is wrong."""
+    x = np.asarray(x, dtype=float).ravel()
+    y = np.asarray(y, dtype=float).ravel()
+    h = np.asarray(depth, dtype=float).ravel()
+    if x.shape != y.shape or x.size < 3:
+        raise DataError("point fit: need at least 3 points with x and y of equal length")
+    if h.size < 3 or not np.all(np.isfinite(h)):
+        raise DataError("point fit: the profile must be finite with at least 3 nodes")
+    if not (np.isfinite(original_radius) and original_radius > 0):
+        raise DataError(f"point fit: original radius must be > 0, got {original_radius!r}")
+    return x, y, h
+
+
+class _PointResiduals:
+    """``r_i(q)`` of the points against the profile and its Jacobian, ``q`` the free quantities.
+
+    Coordinates are taken about the starting centre: a ring far from the origin keeps its
+    digits. ``q`` holds the centre's shift from there [m] and the offset [rad], those of
+    ``free``; the others keep their starting values.
+    """
+
+    def __init__(
+        self,
+        x: FloatArray,
+        y: FloatArray,
+        depth: FloatArray,
+        original_radius: float,
+        center: tuple[float, float],
+        offset: float,
+        free: tuple[str, ...],
+    ) -> None:
+        self.x0, self.y0 = float(center[0]), float(center[1])
+        self.dx0, self.dy0 = x - self.x0, y - self.y0
+        self.depth = depth
+        self.original_radius = original_radius
+        self.offset = offset
+        self.free = free
+        self.slope_of_segment = (np.roll(depth, -1) - depth) / (2 * np.pi / depth.size)
+        self._last: dict[bytes, tuple] = {}
+
+    def unpack(self, q: FloatArray) -> tuple[float, float, float]:
+        """Centre shift ``(sx, sy)`` [m] and offset [rad] at ``q``."""
+        values = dict(zip(self.free, q, strict=True))
+        return (
+            values.get("center_x", 0.0),
+            values.get("center_y", 0.0),
+            values.get("offset", self.offset),
+        )
+
+    def geometry(self, q: FloatArray) -> tuple:
+        """``dx, dy, distance, angles`` of the points about the centre, and their segments."""
+        # least_squares asks for the residual and the Jacobian at the same point: share it
+        key = np.asarray(q, dtype=float).tobytes()
+        if key not in self._last:
+            sx, sy, alpha = self.unpack(q)
+            dx, dy = self.dx0 - sx, self.dy0 - sy
+            distance = np.hypot(dx, dy)
+            angles = angle_in_turn(np.arctan2(dy, dx) - alpha)
+            k, w = interpolation_weights(angles, self.depth.size)
+            self._last.clear()
+            self._last[key] = (dx, dy, distance, angles, k, w)
+        return self._last[key]
+
+    def residual(self, q: FloatArray) -> FloatArray:
+        """``|p_i - c| - R0 - h(phi_i - alpha)`` [m]."""
+        _, _, distance, _, k, w = self.geometry(q)
+        return distance - self.original_radius - _interpolate(self.depth, k, w)
+
+    def jacobian(self, q: FloatArray) -> FloatArray:
+        """``d r_i / d q`` [m/m], [m/rad]; ``dh/dtheta`` is the slope of a point's segment."""
+        dx, dy, distance, _, k, _ = self.geometry(q)
+        slope = self.slope_of_segment[k]
+        columns = {
+            "center_x": -dx / distance - slope * dy / distance**2,
+            "center_y": -dy / distance + slope * dx / distance**2,
+            "offset": slope,
+        }
+        if not self.free:
+            return np.zeros((distance.size, 0))
+        return np.column_stack([columns[name] for name in self.free])

@@ -24,6 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import DataError
 from jointwear.geometry import BushingContour, node_angles
+from jointwear.geometry.angles import angle_in_turn
 from jointwear.measurement.fit import CircleFit
 from jointwear.tribology.metrics import (
     wear_mass,
@@ -99,6 +100,25 @@ def measured_wear_profile(
         Mismatched or too few points, non-positive radius, fewer than 3 nodes,
         unknown method.
     """
+    x, y = _check_profile_inputs(x, y, original_radius, nodes, method)
+    nodes = int(nodes)
+    dx, dy = x - fit.center_x, y - fit.center_y
+    # angle in the bushing frame
+    angle = angle_in_turn(np.arctan2(dy, dx) - angle_offset)
+    depth = np.hypot(dx, dy) - original_radius
+    # depths within the coordinates' round-off are no wear (a ring far from the origin)
+    depth = np.where(np.abs(depth) <= fit.resolution, 0.0, depth)
+    theta = node_angles(nodes)
+    if method == "bin":
+        return _binned(angle, depth, theta)
+    # np.interp with a period sorts the angles itself and wraps around 2 pi
+    return np.interp(theta, angle, depth, period=2 * np.pi)
+
+
+def _check_profile_inputs(
+    x: ArrayLike, y: ArrayLike, original_radius: float, nodes: int, method: str
+) -> tuple[FloatArray, FloatArray]:
+    """Points ``x, y`` [m] as flat arrays, or a DataError naming the bad input."""
     x = np.asarray(x, dtype=float).ravel()
     y = np.asarray(y, dtype=float).ravel()
     if x.shape != y.shape or x.size < 2:
@@ -111,25 +131,23 @@ def measured_wear_profile(
         raise DataError(
             f"wear profile: method must be one of {', '.join(PROFILE_METHODS)}, got {method!r}"
         )
-    nodes = int(nodes)
-    dx, dy = x - fit.center_x, y - fit.center_y
-    # angle in the bushing frame
-    angle = np.mod(np.arctan2(dy, dx) - angle_offset, 2 * np.pi)
-    depth = np.hypot(dx, dy) - original_radius
-    # depths within the coordinates' round-off are no wear (a ring far from the origin)
-    depth = np.where(np.abs(depth) <= fit.resolution, 0.0, depth)
-    theta = node_angles(nodes)
-    if method == "bin":
-        nearest = np.rint(angle / (2 * np.pi / nodes)).astype(int) % nodes
-        count = np.bincount(nearest, minlength=nodes)
-        total = np.bincount(nearest, weights=depth, minlength=nodes)
-        filled = count > 0
-        mean = total[filled] / count[filled]
-        if filled.all():
-            return mean
-        return np.interp(theta, theta[filled], mean, period=2 * np.pi)
-    # np.interp with a period sorts the angles itself and wraps around 2 pi
-    return np.interp(theta, angle, depth, period=2 * np.pi)
+    return x, y
+
+
+def _binned(angle: FloatArray, depth: FloatArray, theta: FloatArray) -> FloatArray:
+    """Mean depth [m] of the points nearest each node; empty nodes from their neighbours.
+
+    ``angle`` [rad] in [0, 2 pi) and ``depth`` [m] per point; ``theta`` the node angles.
+    """
+    nodes = theta.size
+    nearest = np.rint(angle / (2 * np.pi / nodes)).astype(int) % nodes
+    count = np.bincount(nearest, minlength=nodes)
+    total = np.bincount(nearest, weights=depth, minlength=nodes)
+    filled = count > 0
+    mean = total[filled] / count[filled]
+    if filled.all():
+        return mean
+    return np.interp(theta, theta[filled], mean, period=2 * np.pi)
 
 
 #: Ways of bringing measured points onto the node grid.

@@ -15,6 +15,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import DataError
 from jointwear.geometry import node_angles
+from jointwear.geometry.angles import wrap_angle
 
 __all__ = ["cosine_squared_scar", "synthesize_measurement"]
 
@@ -46,8 +47,8 @@ def cosine_squared_scar(
     """
     if not 0 < width <= 2 * np.pi:
         raise DataError(f"scar width must be in (0, 2 pi] rad, got {width!r}")
-    # angle from the scar centre, wrapped to [-pi, pi)
-    phi = np.mod(node_angles(nodes) - center_angle + np.pi, 2 * np.pi) - np.pi
+    # angle from the scar centre
+    phi = wrap_angle(node_angles(nodes) - center_angle)
     depth = peak_depth * np.cos(np.pi * phi / width) ** 2
     return np.where(np.abs(phi) < width / 2, depth, 0.0)
 

@@ -17,7 +17,7 @@ from typing import Any
 from jointwear.calibration import CalibrationResult, Parameter, calibrate_metrics
 from jointwear.config import Config
 from jointwear.errors import ConfigError
-from jointwear.measurement.calibrate import DEFAULT_BOUNDS
+from jointwear.measurement.parameter_fit import DEFAULT_BOUNDS
 from jointwear.paper.cases import PAPER_ROWS, case_config, case_names
 from jointwear.registry import suggest
 

@@ -19,39 +19,14 @@ wear simulation against it and against closed forms (the documentation's Validat
 page).
 
 :mod:`jointwear.references.compare` tabulates every contact model against them
-and :mod:`jointwear.references.calibrate` fits Winkler's and NLCP's constants to
-a reference. Submodules are imported lazily: this package is imported by
-:mod:`jointwear.contact` to register the models.
+and :mod:`jointwear.references.spring_fit` fits Winkler's and NLCP's spring constants
+to a reference.
+
+The contact package registers ``persson`` and ``fem`` by name
+(``"jointwear.references.persson:model"``) and imports them when first used: the
+references import the contact package, never the other way round.
 """
 
 from __future__ import annotations
 
-from typing import Any
-
-__all__ = ["fem_model", "persson_model"]
-
-
-def persson_model(parameters: Any) -> Any:
-    """Factory of the ``persson`` contact model.
-
-    Parameters
-    ----------
-    parameters : ContactParameters
-        Geometry and materials (SI).
-    """
-    from jointwear.references.persson import PerssonModel
-
-    return PerssonModel(parameters)
-
-
-def fem_model(parameters: Any) -> Any:
-    """Factory of the ``fem`` contact model.
-
-    Parameters
-    ----------
-    parameters : ContactParameters
-        Geometry and materials (SI).
-    """
-    from jointwear.references.fem import FemModel
-
-    return FemModel(parameters)
+__all__: list[str] = []

@@ -21,6 +21,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from jointwear.contact import ContactParameters, ContactSolution, solve
 from jointwear.errors import ConfigError, JointwearError
+from jointwear.geometry.angles import wrap_angle
 from jointwear.geometry.contour import BushingContour, Pin
 
 if TYPE_CHECKING:
@@ -223,7 +224,7 @@ def pressure_figure(comparison: ModelComparison) -> Figure:
     fig = new_figure((3.6 * columns, 3.0 * rows))
     axes = fig.subplots(rows, columns, squeeze=False, sharey=False)
     theta = comparison.contour.theta
-    phi = np.degrees(np.angle(np.exp(1j * theta)))
+    phi = np.degrees(wrap_angle(theta))
     order = np.argsort(phi)
     for i, load in enumerate(loads):
         ax = axes[i // columns][i % columns]

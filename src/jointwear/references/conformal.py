@@ -280,6 +280,35 @@ def conformal_wear(
         If an input is not positive and finite, or the pin would wear through its own
         diameter of bore.
     """
+    _check_conformal_inputs(
+        sliding_distance_m, load, pin_radius, clearance, axial_length, wear_coefficient
+    )
+    sinking = _sinking_after(
+        sliding_distance_m, load, pin_radius, clearance, axial_length, wear_coefficient
+    )
+    beta = float(contact_half_angle(sinking, pin_radius, clearance))
+    peak = sinking - clearance
+    arc = beta + math.sin(beta) * math.cos(beta)
+    return ConformalWear(
+        sliding_distance=float(sliding_distance_m),
+        sinking=float(sinking),
+        half_angle=beta,
+        peak_wear_depth=float(peak),
+        wear_width=2.0 * _groove_half_width(sinking, pin_radius, clearance, width_threshold),
+        wear_volume=axial_length * _removed_area(sinking, pin_radius, clearance),
+        peak_pressure=load / (pin_radius * axial_length * arc) if arc > 0 else math.inf,
+    )
+
+
+def _check_conformal_inputs(
+    sliding_distance_m: float,
+    load: float,
+    pin_radius: float,
+    clearance: float,
+    axial_length: float,
+    wear_coefficient: float,
+) -> None:
+    """Refuse inputs that are not positive and finite (the sliding distance may be 0)."""
     values = {
         "load": load,
         "pin_radius": pin_radius,
@@ -293,48 +322,57 @@ def conformal_wear(
     if not (math.isfinite(sliding_distance_m) and sliding_distance_m >= 0):
         raise ConfigError(f"sliding_distance: must be >= 0, got {sliding_distance_m!r}")
 
+
+def _sinking_after(
+    sliding_distance_m: float,
+    load: float,
+    pin_radius: float,
+    clearance: float,
+    axial_length: float,
+    wear_coefficient: float,
+) -> float:
+    """Displacement ``d`` of the pin's centre after sliding ``s`` [m]: ``s(d) = s`` by brentq.
+
+    The sinking grows with ``s``; the bracket ends where the arc spans the whole pin.
+    """
+    if sliding_distance_m == 0.0:
+        return clearance
+
     def distance(d: float) -> float:
         return sliding_distance(d, load, pin_radius, clearance, axial_length, wear_coefficient)
 
-    if sliding_distance_m == 0.0:
-        sinking = clearance
-    else:
-        # the sinking grows with s; the bracket ends where the arc spans the whole pin
-        upper = clearance + pin_radius
-        if distance(upper) < sliding_distance_m:
-            raise ConfigError(
-                "sliding_distance: the pin would sink deeper than its radius into the bore"
-            )
-        sinking = optimize.brentq(
-            lambda d: distance(d) - sliding_distance_m,
-            clearance,
-            upper,
-            xtol=1e-15 * pin_radius,
-            rtol=1e-13,
+    upper = clearance + pin_radius
+    if distance(upper) < sliding_distance_m:
+        raise ConfigError(
+            "sliding_distance: the pin would sink deeper than its radius into the bore"
         )
-    beta = float(contact_half_angle(sinking, pin_radius, clearance))
+    return optimize.brentq(
+        lambda d: distance(d) - sliding_distance_m,
+        clearance,
+        upper,
+        xtol=1e-15 * pin_radius,
+        rtol=1e-13,
+    )
+
+
+def _groove_half_width(
+    sinking: float, pin_radius: float, clearance: float, width_threshold: float
+) -> float:
+    """Angle from the load line where the depth falls to ``width_threshold`` of the peak [rad].
+
+    The depth falls monotonically away from the load line, so brentq between the load
+    line and the groove's edge; 0 before wear.
+    """
     peak = sinking - clearance
-    if peak > 0:
-        # the depth falls monotonically away from the load line
-        edge = _groove_edge(sinking, pin_radius, clearance)
-        half_width = optimize.brentq(
-            lambda t: (
-                float(_depth_along_rays(np.array(t), sinking, pin_radius, clearance))
-                - width_threshold * peak
-            ),
-            0.0,
-            edge,
-            xtol=1e-14,
-        )
-    else:
-        half_width = 0.0
-    arc = beta + math.sin(beta) * math.cos(beta)
-    return ConformalWear(
-        sliding_distance=float(sliding_distance_m),
-        sinking=float(sinking),
-        half_angle=beta,
-        peak_wear_depth=float(peak),
-        wear_width=2.0 * half_width,
-        wear_volume=axial_length * _removed_area(sinking, pin_radius, clearance),
-        peak_pressure=load / (pin_radius * axial_length * arc) if arc > 0 else math.inf,
+    if not peak > 0:
+        return 0.0
+    edge = _groove_edge(sinking, pin_radius, clearance)
+    return optimize.brentq(
+        lambda t: (
+            float(_depth_along_rays(np.array(t), sinking, pin_radius, clearance))
+            - width_threshold * peak
+        ),
+        0.0,
+        edge,
+        xtol=1e-14,
     )

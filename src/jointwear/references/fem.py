@@ -62,13 +62,13 @@ from scipy.sparse.linalg import splu
 from jointwear.contact.laws import ContactParameters
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ConfigError, ContactError, ConvergenceError, GeometryError
+from jointwear.geometry.angles import angle_in_turn, wrap_angle
 from jointwear.geometry.contour import BushingContour, Pin, pin_penetration
-from jointwear.references._common import (
+from jointwear.references.solution import (
     ReferenceState,
     assemble_solution,
     check_loads,
     edge_from_pressure,
-    wrap,
 )
 
 __all__ = [
@@ -244,35 +244,118 @@ def build_mesh(
         Ratio of the outermost to the innermost radial element size [-].
     """
     skfem = _skfem()
-    from skfem.assembly import Dofs
+    _check_mesh_inputs(circumferential, radial, youngs_modulus, poisson_ratio, thickness)
+    wall = _WallGrid(
+        contour,
+        contour.original_radius + thickness,
+        int(circumferential),
+        _radial_levels(int(radial), grading),
+    )
+    if np.any(contour.radius_at(wall.theta) >= wall.outer):
+        raise GeometryError("bushing contour: the wear has reached the housing (wall consumed)")
+    mesh = _quadratic_mesh(skfem, wall)
+    basis = skfem.Basis(mesh, skfem.ElementVector(skfem.ElementQuad2()))
+    stiffness = _plane_strain_stiffness(skfem, basis, youngs_modulus, poisson_ratio)
+    inner = _inner_boundary(skfem, mesh, basis, wall)
+    free = np.setdiff1d(np.arange(basis.N), inner.fixed)
+    factor = splu(stiffness[free][:, free].tocsc())
+    circular = bool(np.ptp(contour.radius) <= 1e-12 * contour.radius.mean())
+    return BushingMesh(
+        theta=inner.theta,
+        radius=inner.radius,
+        weight=inner.weight,
+        circular=circular,
+        circumferential=wall.circumferential,
+        radial=wall.radial,
+        dofs=basis.N,
+        _factor=factor,
+        _free=free,
+        _node_dofs=inner.node_dofs,
+        _basis=basis,
+        _stiffness=stiffness,
+    )
 
+
+def _check_mesh_inputs(
+    circumferential: int,
+    radial: int,
+    youngs_modulus: float,
+    poisson_ratio: float,
+    thickness: float,
+) -> None:
+    """Refuse too coarse a mesh, materials without plane strain, a wall without thickness."""
     if circumferential < 8 or radial < 1:
         raise ConfigError("fem: need at least 8 circumferential and 1 radial element")
     if not (youngs_modulus > 0 and -1.0 < poisson_ratio < 0.5):
         raise ConfigError("materials.bushing: the FE reference needs E > 0 and nu < 0.5")
     if not thickness > 0:
         raise GeometryError("joint.bushing_thickness: must be > 0")
-    outer = contour.original_radius + thickness
-    n_t, n_r = int(circumferential), int(radial)
-    # geometric grading of the radial element sizes (first = smallest)
-    if n_r == 1 or grading == 1.0:
-        rho = np.linspace(0.0, 1.0, n_r + 1)
-    else:
-        q = grading ** (1.0 / (n_r - 1))
-        sizes = q ** np.arange(n_r)
-        rho = np.concatenate([[0.0], np.cumsum(sizes) / sizes.sum()])
-    theta_v = 2.0 * np.pi * np.arange(n_t) / n_t
-    inner_v = contour.radius_at(theta_v)
-    if np.any(inner_v >= outer):
-        raise GeometryError("bushing contour: the wear has reached the housing (wall consumed)")
 
-    def place(theta: FloatArray, rho_: FloatArray) -> FloatArray:
-        r_in = contour.radius_at(theta)
-        r = r_in + rho_ * (outer - r_in)
+
+def _radial_levels(radial: int, grading: float) -> FloatArray:
+    """Element boundaries through the wall, 0 (bore) to 1 (housing), graded geometrically [-].
+
+    The sizes grow by ``grading ** (1 / (radial - 1))`` from one element to the next, so
+    that the outermost is ``grading`` times the innermost (the smallest, at the contact).
+    """
+    if radial == 1 or grading == 1.0:
+        return np.linspace(0.0, 1.0, radial + 1)
+    q = grading ** (1.0 / (radial - 1))
+    sizes = q ** np.arange(radial)
+    return np.concatenate([[0.0], np.cumsum(sizes) / sizes.sum()])
+
+
+@dataclass(frozen=True)
+class _WallGrid:
+    """The structured ``(rho, theta)`` grid of the wall between the contour and the housing.
+
+    Attributes
+    ----------
+    contour : BushingContour
+        The bore.
+    outer : float
+        Housing radius ``R_b + L`` [m].
+    circumferential : int
+        Elements around [-].
+    levels : ndarray, shape (radial + 1,)
+        Element boundaries through the wall, 0 at the bore, 1 at the housing [-].
+    """
+
+    contour: BushingContour
+    outer: float
+    circumferential: int
+    levels: FloatArray
+
+    @property
+    def radial(self) -> int:
+        """Elements through the wall [-]."""
+        return self.levels.size - 1
+
+    @property
+    def theta(self) -> FloatArray:
+        """Angles of the element corners around the wall [rad]."""
+        return 2.0 * np.pi * np.arange(self.circumferential) / self.circumferential
+
+    def place(self, theta: FloatArray, rho: FloatArray) -> FloatArray:
+        """Points ``(x, y)`` at angles ``theta`` and wall fractions ``rho``, shape (2, n) [m]."""
+        r_in = self.contour.radius_at(theta)
+        r = r_in + rho * (self.outer - r_in)
         return np.stack([r * np.cos(theta), r * np.sin(theta)])
 
+
+def _quadratic_mesh(skfem: Any, wall: _WallGrid) -> Any:
+    """The 9-node quadrilateral mesh of the wall, every node (mid-side too) on the grid.
+
+    A linear quadrilateral mesh numbers the elements and their dofs; each of the 9
+    nodes of an element is then placed at its reference ``(xi, eta)`` mapped onto
+    ``(rho, theta)``, so that the boundary nodes lie on the contour ``r_in(theta)``.
+    """
+    from skfem.assembly import Dofs
+
+    n_t, n_r, rho = wall.circumferential, wall.radial, wall.levels
+    theta_v = wall.theta
     ii, kk = np.meshgrid(np.arange(n_t), np.arange(n_r + 1), indexing="ij")
-    points = place(theta_v[ii].ravel(), rho[kk].ravel())
+    points = wall.place(theta_v[ii].ravel(), rho[kk].ravel())
     i0 = np.arange(n_t)[:, None]
     k0 = np.arange(n_r)[None, :]
     i1 = (i0 + 1) % n_t
@@ -284,21 +367,28 @@ def build_mesh(
             (i1 * (n_r + 1) + k0).ravel(),
         ]
     )
-    linear_mesh = skfem.MeshQuad(points, t)
-    dofs = Dofs(linear_mesh, skfem.ElementQuad2())
+    dofs = Dofs(skfem.MeshQuad(points, t), skfem.ElementQuad2())
     element_dofs = dofs.element_dofs  # (9, n_elements)
     ref = skfem.ElementQuad2.doflocs  # (9, 2): xi (radial), eta (circumferential)
     elem_i = np.repeat(np.arange(n_t), n_r)
     elem_k = np.tile(np.arange(n_r), n_t)
     rho_e = rho[elem_k][None, :] + ref[:, 0:1] * (rho[elem_k + 1] - rho[elem_k])[None, :]
-    theta_e = (theta_v[elem_i][None, :] + ref[:, 1:2] * (2.0 * np.pi / n_t)) % (2.0 * np.pi)
+    theta_e = angle_in_turn(theta_v[elem_i][None, :] + ref[:, 1:2] * (2.0 * np.pi / n_t))
     doflocs = np.zeros((2, dofs.N))
-    xy = place(theta_e.ravel(), rho_e.ravel()).reshape(2, 9, -1)
+    xy = wall.place(theta_e.ravel(), rho_e.ravel()).reshape(2, 9, -1)
     for j in range(9):
         doflocs[:, element_dofs[j]] = xy[:, j, :]
-    mesh = skfem.MeshQuad2(doflocs, t)
-    element = skfem.ElementVector(skfem.ElementQuad2())
-    basis = skfem.Basis(mesh, element)
+    return skfem.MeshQuad2(doflocs, t)
+
+
+def _plane_strain_stiffness(
+    skfem: Any, basis: Any, youngs_modulus: float, poisson_ratio: float
+) -> Any:
+    """Stiffness matrix (CSC) of plane-strain linear elasticity on ``basis``.
+
+    ``sigma = lambda tr(eps) I + 2 mu eps`` with Lame's ``lambda = E nu / ((1 + nu)(1 - 2 nu))``
+    and ``mu = E / (2 (1 + nu))``.
+    """
     lam = youngs_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio))
     mu = youngs_modulus / (2 * (1 + poisson_ratio))
 
@@ -311,8 +401,35 @@ def build_mesh(
             2.0 * (du[0][0] * dv[0][0] + du[1][1] * dv[1][1]) + shear_u * shear_v
         )
 
-    stiffness = skfem.asm(plane_strain, basis).tocsc()
+    return skfem.asm(plane_strain, basis).tocsc()
 
+
+@dataclass(frozen=True)
+class _InnerBoundary:
+    """The bore's nodes, sorted by angle, and the housing's fixed dofs.
+
+    Attributes
+    ----------
+    theta, radius : ndarray, shape (n,)
+        Angles [rad] and radii [m] of the bore's nodes.
+    weight : ndarray, shape (n,)
+        Boundary weights ``int N_j ds`` [m].
+    node_dofs : ndarray of int, shape (n, 2)
+        The x and y displacement dofs of each node.
+    fixed : ndarray of int
+        Dofs on the housing (zero displacement).
+    """
+
+    theta: FloatArray
+    radius: FloatArray
+    weight: FloatArray
+    node_dofs: NDArray[np.intp]
+    fixed: NDArray[np.intp]
+
+
+def _inner_boundary(skfem: Any, mesh: Any, basis: Any, wall: _WallGrid) -> _InnerBoundary:
+    """The bore's nodes (corner and mid-side), their weights, and the housing's dofs."""
+    n_t, n_r = wall.circumferential, wall.radial
     facets = mesh.facets
     ring = np.arange(n_t * (n_r + 1)) % (n_r + 1)  # radial level of each vertex
     inner_facets = np.flatnonzero((ring[facets[0]] == 0) & (ring[facets[1]] == 0))
@@ -322,7 +439,7 @@ def build_mesh(
     dx = np.concatenate([inner.nodal["u^1"], inner.facet["u^1"]])
     dy = np.concatenate([inner.nodal["u^2"], inner.facet["u^2"]])
     loc = basis.doflocs[:, dx]
-    angle = np.mod(np.arctan2(loc[1], loc[0]), 2.0 * np.pi)
+    angle = angle_in_turn(np.arctan2(loc[1], loc[0]))
     order = np.argsort(angle)
     dx, dy, angle = dx[order], dy[order], angle[order]
     node_radius = np.hypot(basis.doflocs[0, dx], basis.doflocs[1, dx])
@@ -337,24 +454,12 @@ def build_mesh(
     trace = skfem.asm(unit, scalar)
     scalar_dofs = skfem.Basis(mesh, skfem.ElementQuad2()).get_dofs(facets=inner_facets)
     s_nodes = np.concatenate([scalar_dofs.nodal["u"], scalar_dofs.facet["u"]])[order]
-    weight = trace[s_nodes]
-
-    free = np.setdiff1d(np.arange(basis.N), fixed)
-    factor = splu(stiffness[free][:, free].tocsc())
-    circular = bool(np.ptp(contour.radius) <= 1e-12 * contour.radius.mean())
-    return BushingMesh(
+    return _InnerBoundary(
         theta=angle,
         radius=node_radius,
-        weight=np.asarray(weight, dtype=float),
-        circular=circular,
-        circumferential=n_t,
-        radial=n_r,
-        dofs=basis.N,
-        _factor=factor,
-        _free=free,
-        _node_dofs=np.stack([dx, dy], axis=1),
-        _basis=basis,
-        _stiffness=stiffness,
+        weight=np.asarray(trace[s_nodes], dtype=float),
+        node_dofs=np.stack([dx, dy], axis=1),
+        fixed=fixed,
     )
 
 
@@ -438,7 +543,7 @@ class FemState:
         angle : array_like
             Angles in the bushing frame [rad].
         """
-        a = np.mod(np.asarray(angle, dtype=float), 2.0 * np.pi)
+        a = angle_in_turn(angle)
         th = np.concatenate([self.theta, [self.theta[0] + 2.0 * np.pi]])
         p = np.concatenate([self.pressure, [self.pressure[0]]])
         return np.interp(a, th, p)
@@ -479,98 +584,175 @@ def solve_contact_fe(
         raise ContactError(
             f"contact.balance: unknown mode {balance!r}; choose 'paper' or 'equilibrium'"
         )
-    phi_all = wrap(mesh.theta - azimuth)
-    rows = np.flatnonzero(np.abs(phi_all) <= math.radians(window_deg))
-    theta = mesh.theta[rows]
-    radius = mesh.radius[rows]
-    phi = phi_all[rows]
-    g_matrix = mesh.flexibility(rows)
-    cos_t, sin_t = np.cos(theta), np.sin(theta)
-    w = np.array([math.cos(azimuth), math.sin(azimuth)])
-    w_perp = np.array([-w[1], w[0]])
-    state: dict[str, Any] = {"active": None, "iterations": 0}
-
-    def forces(ecc: FloatArray):
-        along = cos_t * ecc[0] + sin_t * ecc[1]
-        across = cos_t * ecc[1] - sin_t * ecc[0]
-        gap = pin_penetration(along, across, radius - pin_radius, pin_radius)
-        if not np.any(gap > 0):
-            state["active"] = None
-            return np.zeros_like(gap)
-        lam, active, its = _lcp(g_matrix, gap, state["active"])
-        state["active"] = active
-        state["iterations"] += its
-        return lam
-
-    def resultant(lam: FloatArray) -> FloatArray:
-        return np.array([np.sum(lam * cos_t), np.sum(lam * sin_t)])
-
+    contact = _RigidPinContact.near_load(mesh, pin_radius, azimuth, window_deg)
     if load_per_length == 0:
-        lam = np.zeros(rows.size)
-        ecc = w * clearance_at_load
+        lam = np.zeros(contact.rows.size)
+        ecc = contact.along * clearance_at_load
     else:
-
-        def along_residual(s: float) -> float:
-            return float(resultant(forces(s * w)) @ w) - load_per_length
-
-        # the pin centred in the bore does not touch: the force is zero at s = 0
-        lower = 0.0
-        base = max(clearance_at_load, 0.0)
-        step = 1e-3 * max(base, 1e-6 * pin_radius)
-        upper = base + step
-        while along_residual(upper) <= 0:
-            step *= 2.0
-            upper = base + step
-            if upper > 0.999 * pin_radius:
-                raise ContactError(
-                    f"load: {load_per_length:.6g} N/m finds no balance: the pin would leave "
-                    "the bushing wall"
-                )
-        s = optimize.brentq(
-            along_residual,
-            lower,
-            upper,
-            xtol=1e-15 * pin_radius,
-            rtol=4 * np.finfo(float).eps,
-            maxiter=200,
-        )
-        ecc = s * w
+        s = _balance_along_load(contact, load_per_length, clearance_at_load)
+        ecc = s * contact.along
         if balance == "equilibrium":
-            scale = load_per_length
-
-            def residual2(x: FloatArray) -> FloatArray:
-                e = x[0] * w + x[1] * w_perp
-                f = resultant(forces(e))
-                return np.array([f @ w - load_per_length, f @ w_perp]) / scale
-
-            sol = optimize.root(residual2, np.array([s, 0.0]), method="hybr", tol=1e-13)
-            if not sol.success and np.max(np.abs(residual2(sol.x))) > 1e-8:
-                raise ConvergenceError(f"fem: 2-D equilibrium did not converge ({sol.message})")
-            ecc = sol.x[0] * w + sol.x[1] * w_perp
-        lam = forces(ecc)
-        total = resultant(lam) @ w
+            ecc = _balance_in_plane(contact, load_per_length, s)
+        lam = contact.forces(ecc)
+        total = contact.resultant(lam) @ contact.along
         if abs(total - load_per_length) > max(tolerance, 1e-6) * load_per_length:
             raise ConvergenceError(f"fem: load balance off by {total - load_per_length:.3g} N/m")
+    return _fem_state(mesh, contact, lam, ecc, clearance_at_load)
 
+
+@dataclass
+class _RigidPinContact:
+    """The rigid pin against the bore's nodes near the load line (one load direction).
+
+    Attributes
+    ----------
+    rows : ndarray of int
+        Bore nodes within the window about the load line (the only ones that may touch).
+    theta, radius : ndarray
+        Their angles [rad] and radii [m].
+    phi : ndarray
+        Their angles from the load line, in (-pi, pi] [rad].
+    flexibility : ndarray, shape (len(rows), len(rows))
+        Radial flexibility among them [m per N/m].
+    along, across : ndarray, shape (2,)
+        Unit vectors along the load and counter-clockwise across it.
+    pin_radius : float
+        ``R_p`` [m].
+    active : ndarray of bool or None
+        The last contact set (the next solve starts from it).
+    iterations : int
+        Active-set iterations so far.
+    """
+
+    rows: NDArray[np.intp]
+    theta: FloatArray
+    radius: FloatArray
+    phi: FloatArray
+    flexibility: FloatArray
+    along: FloatArray
+    across: FloatArray
+    pin_radius: float
+    active: NDArray[np.bool_] | None = None
+    iterations: int = 0
+
+    @classmethod
+    def near_load(
+        cls, mesh: BushingMesh, pin_radius: float, azimuth: float, window_deg: float
+    ) -> _RigidPinContact:
+        """The nodes of ``mesh`` within ``window_deg`` of the load direction ``azimuth``."""
+        phi_all = wrap_angle(mesh.theta - azimuth)
+        rows = np.flatnonzero(np.abs(phi_all) <= math.radians(window_deg))
+        along = np.array([math.cos(azimuth), math.sin(azimuth)])
+        return cls(
+            rows=rows,
+            theta=mesh.theta[rows],
+            radius=mesh.radius[rows],
+            phi=phi_all[rows],
+            flexibility=mesh.flexibility(rows),
+            along=along,
+            across=np.array([-along[1], along[0]]),
+            pin_radius=pin_radius,
+        )
+
+    def forces(self, ecc: FloatArray) -> FloatArray:
+        """Radial nodal forces [N/m] with the pin's centre at ``ecc`` [m] (unilateral contact)."""
+        cos_t, sin_t = np.cos(self.theta), np.sin(self.theta)
+        along = cos_t * ecc[0] + sin_t * ecc[1]
+        across = cos_t * ecc[1] - sin_t * ecc[0]
+        gap = pin_penetration(along, across, self.radius - self.pin_radius, self.pin_radius)
+        if not np.any(gap > 0):
+            self.active = None
+            return np.zeros_like(gap)
+        lam, active, its = _lcp(self.flexibility, gap, self.active)
+        self.active = active
+        self.iterations += its
+        return lam
+
+    def resultant(self, lam: FloatArray) -> FloatArray:
+        """Resultant ``(x, y)`` of radial nodal forces [N/m]."""
+        return np.array([np.sum(lam * np.cos(self.theta)), np.sum(lam * np.sin(self.theta))])
+
+
+def _balance_along_load(
+    contact: _RigidPinContact, load_per_length: float, clearance_at_load: float
+) -> float:
+    """Pin displacement along the load [m] whose contact force along it is the load.
+
+    ``scipy.optimize.brentq`` from ``s = 0`` (the pin centred in the bore does not
+    touch) to a step beyond the clearance, doubled until the force exceeds the load.
+    """
+    pin_radius = contact.pin_radius
+
+    def along_residual(s: float) -> float:
+        return float(contact.resultant(contact.forces(s * contact.along)) @ contact.along) - (
+            load_per_length
+        )
+
+    base = max(clearance_at_load, 0.0)
+    step = 1e-3 * max(base, 1e-6 * pin_radius)
+    upper = base + step
+    while along_residual(upper) <= 0:
+        step *= 2.0
+        upper = base + step
+        if upper > 0.999 * pin_radius:
+            raise ContactError(
+                f"load: {load_per_length:.6g} N/m finds no balance: the pin would leave "
+                "the bushing wall"
+            )
+    return optimize.brentq(
+        along_residual,
+        0.0,
+        upper,
+        xtol=1e-15 * pin_radius,
+        rtol=4 * np.finfo(float).eps,
+        maxiter=200,
+    )
+
+
+def _balance_in_plane(contact: _RigidPinContact, load_per_length: float, s: float) -> FloatArray:
+    """Pin-centre position [m] whose contact force is the load vector (``scipy.optimize.root``).
+
+    Started from the balance along the load, ``s`` [m] on the load line.
+    """
+    w, w_perp = contact.along, contact.across
+
+    def residual(x: FloatArray) -> FloatArray:
+        f = contact.resultant(contact.forces(x[0] * w + x[1] * w_perp))
+        return np.array([f @ w - load_per_length, f @ w_perp]) / load_per_length
+
+    sol = optimize.root(residual, np.array([s, 0.0]), method="hybr", tol=1e-13)
+    if not sol.success and np.max(np.abs(residual(sol.x))) > 1e-8:
+        raise ConvergenceError(f"fem: 2-D equilibrium did not converge ({sol.message})")
+    return sol.x[0] * w + sol.x[1] * w_perp
+
+
+def _fem_state(
+    mesh: BushingMesh,
+    contact: _RigidPinContact,
+    lam: FloatArray,
+    ecc: FloatArray,
+    clearance_at_load: float,
+) -> FemState:
+    """The state of a balanced contact: nodal forces and pressures, resultant, extent."""
     force = np.zeros(mesh.nodes)
-    force[rows] = lam
-    pressure = force / mesh.weight
-    f = resultant(lam)
-    along = float(ecc @ w)
-    across = float(ecc @ w_perp)
-    approach = float(pin_penetration(along, across, clearance_at_load, pin_radius))
-    left, right = _half_angles(phi, lam / mesh.weight[rows])
+    force[contact.rows] = lam
+    f = contact.resultant(lam)
+    w, w_perp = contact.along, contact.across
+    approach = pin_penetration(
+        float(ecc @ w), float(ecc @ w_perp), clearance_at_load, contact.pin_radius
+    )
+    left, right = _half_angles(contact.phi, lam / mesh.weight[contact.rows])
     return FemState(
         theta=mesh.theta,
-        pressure=pressure,
+        pressure=force / mesh.weight,
         force=force,
         eccentricity=ecc,
-        approach=approach,
+        approach=float(approach),
         normal_force=float(f @ w),
         tangential_force=float(f @ w_perp),
         half_angle_left=left,
         half_angle_right=right,
-        iterations=int(state["iterations"]),
+        iterations=int(contact.iterations),
     )
 
 

@@ -100,6 +100,7 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -110,13 +111,13 @@ from scipy import integrate, linalg, optimize, special
 from jointwear.contact.laws import ContactParameters
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ConfigError, ContactError, ConvergenceError, GeometryError
+from jointwear.geometry.angles import wrap_angle
 from jointwear.geometry.contour import BushingContour, Pin
-from jointwear.references._common import (
+from jointwear.references.solution import (
     ReferenceState,
     assemble_solution,
     check_loads,
     edge_from_pressure,
-    wrap,
 )
 
 __all__ = [
@@ -328,7 +329,7 @@ class ArcSolution:
         angle : array_like
             Angles measured from the load line [rad].
         """
-        a = np.abs(wrap(angle))
+        a = np.abs(wrap_angle(angle))
         if self.pressure.size == 0:
             return np.zeros_like(a)
         return np.interp(a, self.theta, self.pressure, right=0.0)
@@ -476,7 +477,7 @@ class PerssonProblem:
         b = r_b * (kappa_b - 1) / (4 * mu_b) - r_p * (kappa_p - 1) / (4 * mu_p)
         return c_inf, b
 
-    def _kernel(self, points: int) -> FloatArray:
+    def kernel(self, points: int) -> FloatArray:
         """``g(m h) = sum_k C_k sinc^2(k h/2) cos(k m h)``, ``h = 2 pi / points``.
 
         ``cos(k m h)`` and ``cos(k h)`` depend on ``k mod points`` only, so the
@@ -484,6 +485,16 @@ class PerssonProblem:
         to ``K`` (a multiple of ``points``, past the housing's reach) are summed
         explicitly; beyond, ``C_k = (C_inf k + B)/(k^2 - 1)`` exactly and the
         folded tail is a sum of Hurwitz zeta functions.
+
+        Parameters
+        ----------
+        points : int
+            Nodes of the periodic grid over the whole circle [-].
+
+        Returns
+        -------
+        ndarray, shape (points,)
+            ``g(m h)`` for ``m = 0 .. points - 1`` [m/Pa].
         """
         key = ("kernel", points)
         if key in self._cache:
@@ -576,102 +587,178 @@ class PerssonProblem:
     def _solve_grid(
         self, load_per_length: float, extent: float, nodes: int, alpha: float | None = None
     ) -> tuple[ArcSolution, int, bool]:
+        """Solve on a grid of about ``nodes`` nodes over ``[0, extent]`` [rad].
+
+        Returns the arc, the linear solves used, and whether the contact reached the
+        grid's end (the grid is too short). ``alpha`` [rad], the half-angle of a previous
+        grid, starts the search for the contact set there.
+        """
+        grid = _CollocationGrid.build(self, extent, nodes)
+        sets = _ContactSets(self, grid, load_per_length / self.bushing_radius)
+        m = _largest_loaded_set(sets, grid, alpha)
+        p, ecc = sets.solve(m)
+        p_prev = float(p[m - 1]) if m >= 1 else None
+        edge = edge_from_pressure(grid.theta[m], grid.theta[m] + grid.h, float(p[m]), p_prev)
+        pressure = np.zeros(grid.theta.size)
+        pressure[: m + 1] = np.maximum(p, 0.0)
+        arc = ArcSolution(
+            load_per_length, edge, ecc, ecc - self.clearance, grid.theta, pressure, sets.solves
+        )
+        return arc, sets.solves, m >= grid.last
+
+
+@dataclass(frozen=True)
+class _CollocationGrid:
+    """The half arc's grid of hat functions and their collocation system.
+
+    Attributes
+    ----------
+    h : float
+        Grid spacing ``2 pi / points`` [rad].
+    theta : ndarray, shape (n + 1,)
+        Nodes ``0, h, ..., n h`` [rad].
+    eps : ndarray, shape (n + 1,)
+        1 for the centre hat, 2 for the mirrored pairs [-].
+    compliance : ndarray, shape (n + 1, n + 1)
+        Symmetric compliance ``S`` of the hat functions at the nodes [m/Pa]; the
+        collocation matrix is ``S diag(eps)``.
+    load_row : ndarray, shape (n + 1,)
+        ``P / R_b = load_row . p`` [-].
+    cholesky : ndarray or None
+        Lower Cholesky factor of ``compliance``; its leading blocks factorise every
+        contact set.
+    """
+
+    h: float
+    theta: FloatArray
+    eps: FloatArray
+    compliance: FloatArray
+    load_row: FloatArray
+    cholesky: FloatArray | None
+
+    @property
+    def last(self) -> int:
+        """Index of the last node that may carry pressure [-]."""
+        return self.theta.size - 2
+
+    @classmethod
+    def build(cls, problem: PerssonProblem, extent: float, nodes: int) -> _CollocationGrid:
+        """The grid of about ``nodes`` nodes over ``[0, extent]`` [rad] of ``problem``."""
         points = max(round(2.0 * np.pi * nodes / extent), 4 * nodes)
         h = 2.0 * np.pi / points
         n = int(min(math.floor(extent / h), points // 2 - 1))
-        g = self._kernel(points)
-        c0 = float(self.compliance([0])[0])
+        g = problem.kernel(points)
+        c0 = float(problem.compliance([0])[0])
         theta = np.arange(n + 1) * h
         i = np.arange(n + 1)
-        # collocation matrix A = S diag(eps): S symmetric (the compliance of the hat
-        # functions at the nodes), eps = 1 for the centre hat, 2 for mirrored pairs
         eps = np.where(i == 0, 1.0, 2.0)
         difference = np.abs(i[:, None] - i[None, :])
         total = (i[:, None] + i[None, :]) % points
         compliance = (c0 + g[difference] + g[total]) * (h / (2.0 * np.pi))
         sinc_h = (math.sin(h / 2) / (h / 2)) ** 2
-        load_row = eps * h * sinc_h * np.cos(theta)
-        target = load_per_length / self.bushing_radius
-        clearance = self.clearance
-        r_p = self.pin_radius
-        sin2 = np.sin(theta) ** 2
-        cos = np.cos(theta)
-        solves = 0
-        results: dict[int, tuple[FloatArray, float]] = {}
         try:
-            # leading blocks of the Cholesky factor factorise every contact set
-            chol = linalg.cholesky(compliance, lower=True, check_finite=False)
+            cholesky = linalg.cholesky(compliance, lower=True, check_finite=False)
         except linalg.LinAlgError:  # pragma: no cover - compliance is positive definite
-            chol = None
+            cholesky = None
+        return cls(h, theta, eps, compliance, eps * h * sinc_h * np.cos(theta), cholesky)
 
-        def solve_set(m: int) -> tuple[FloatArray, float]:
-            """Pressures on nodes 0..m and the pin displacement, edge node m loaded."""
-            nonlocal solves
-            if m in results:
-                return results[m]
-            size = m + 1
-            if chol is not None:
-                block = chol[:size, :size]
+    def inverse(self, size: int) -> Callable[[FloatArray], FloatArray]:
+        """``v -> compliance[:size, :size]^-1 v`` (the contact set of nodes ``0..size-1``)."""
+        if self.cholesky is None:  # pragma: no cover - compliance is positive definite
+            factor = linalg.lu_factor(self.compliance[:size, :size], check_finite=False)
+            return lambda v: linalg.lu_solve(factor, v, check_finite=False)
+        block = self.cholesky[:size, :size]
 
-                def inverse(v: FloatArray) -> FloatArray:
-                    y = linalg.solve_triangular(block, v, lower=True, check_finite=False)
-                    return linalg.solve_triangular(block.T, y, lower=False, check_finite=False)
+        def inverse(v: FloatArray) -> FloatArray:
+            y = linalg.solve_triangular(block, v, lower=True, check_finite=False)
+            return linalg.solve_triangular(block.T, y, lower=False, check_finite=False)
 
-            else:  # pragma: no cover
-                factor = linalg.lu_factor(compliance[:size, :size], check_finite=False)
+        return inverse
 
-                def inverse(v: FloatArray) -> FloatArray:
-                    return linalg.lu_solve(factor, v, check_finite=False)
 
-            per_e = inverse(cos[:size])
-            weights = load_row[:size] / eps[:size]
-            ecc = clearance
-            for _ in range(50):
-                rhs = np.full(size, -clearance)
-                if self.gap == "exact":
-                    lateral = ecc**2 * sin2[:size]
-                    rhs -= lateral / (r_p + np.sqrt(np.maximum(r_p**2 - lateral, 0.0)))
-                base = inverse(rhs)
-                new = (target - weights @ base) / (weights @ per_e)
-                if self.gap == "linear" or abs(new - ecc) <= 1e-14 * abs(new):
-                    break
-                ecc = new
-            solves += 1
-            results[m] = ((base + new * per_e) / eps[:size], float(new))
-            return results[m]
+class _ContactSets:
+    """Pressures and pin displacement with the contact on nodes ``0..m`` (cached per ``m``).
 
-        def loaded(m: int) -> bool:
-            return bool(solve_set(m)[0][-1] > 0)
+    Parameters
+    ----------
+    problem : PerssonProblem
+        Geometry, materials and gap.
+    grid : _CollocationGrid
+        The grid.
+    target : float
+        ``P / R_b`` [Pa].
+    """
 
-        # the contact set: the largest m whose edge node still carries pressure
-        if alpha is not None:
-            m = int(min(max(math.floor(alpha / h), 0), n - 1))
-            if loaded(m):
-                while m + 1 <= n - 1 and loaded(m + 1):
-                    m += 1
-            else:
-                while m > 0 and not loaded(m):
-                    m -= 1
+    def __init__(self, problem: PerssonProblem, grid: _CollocationGrid, target: float) -> None:
+        self.problem = problem
+        self.grid = grid
+        self.target = target
+        self.solves = 0
+        self._sin2 = np.sin(grid.theta) ** 2
+        self._cos = np.cos(grid.theta)
+        self._results: dict[int, tuple[FloatArray, float]] = {}
+
+    def loaded(self, m: int) -> bool:
+        """The edge node ``m`` carries pressure when nodes ``0..m`` are in contact."""
+        return bool(self.solve(m)[0][-1] > 0)
+
+    def solve(self, m: int) -> tuple[FloatArray, float]:
+        """Pressures on nodes ``0..m`` [Pa] and the pin displacement ``e`` [m].
+
+        The pressure is linear in ``e`` (``p = base + e per_e``) and ``e`` follows from
+        the load; with the exact gap, whose right-hand side depends on ``e``, by fixed
+        point iteration.
+        """
+        if m in self._results:
+            return self._results[m]
+        size = m + 1
+        grid, problem = self.grid, self.problem
+        clearance, r_p = problem.clearance, problem.pin_radius
+        inverse = grid.inverse(size)
+        per_e = inverse(self._cos[:size])
+        weights = grid.load_row[:size] / grid.eps[:size]
+        ecc = clearance
+        for _ in range(50):
+            rhs = np.full(size, -clearance)
+            if problem.gap == "exact":
+                lateral = ecc**2 * self._sin2[:size]
+                rhs -= lateral / (r_p + np.sqrt(np.maximum(r_p**2 - lateral, 0.0)))
+            base = inverse(rhs)
+            new = (self.target - weights @ base) / (weights @ per_e)
+            if problem.gap == "linear" or abs(new - ecc) <= 1e-14 * abs(new):
+                break
+            ecc = new
+        self.solves += 1
+        self._results[m] = ((base + new * per_e) / grid.eps[:size], float(new))
+        return self._results[m]
+
+
+def _largest_loaded_set(sets: _ContactSets, grid: _CollocationGrid, alpha: float | None) -> int:
+    """The contact set: the largest ``m`` whose edge node still carries pressure.
+
+    Searched from a previous half-angle ``alpha`` [rad] node by node, or by bisection
+    over the whole grid.
+    """
+    last = grid.last
+    if alpha is not None:
+        m = int(min(max(math.floor(alpha / grid.h), 0), last))
+        if sets.loaded(m):
+            while m + 1 <= last and sets.loaded(m + 1):
+                m += 1
         else:
-            lo, hi = 0, n - 1
-            if loaded(hi):
-                m = hi
-            else:
-                while hi - lo > 1:
-                    mid = (lo + hi) // 2
-                    if loaded(mid):
-                        lo = mid
-                    else:
-                        hi = mid
-                m = lo
-        p, ecc = solve_set(m)
-        at_end = m >= n - 1
-        p_prev = float(p[m - 1]) if m >= 1 else None
-        edge = edge_from_pressure(theta[m], theta[m] + h, float(p[m]), p_prev)
-        pressure = np.zeros(n + 1)
-        pressure[: m + 1] = np.maximum(p, 0.0)
-        arc = ArcSolution(load_per_length, edge, ecc, ecc - clearance, theta, pressure, solves)
-        return arc, solves, at_end
+            while m > 0 and not sets.loaded(m):
+                m -= 1
+        return m
+    lo, hi = 0, last
+    if sets.loaded(hi):
+        return hi
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if sets.loaded(mid):
+            lo = mid
+        else:
+            hi = mid
+    return lo
 
 
 # ---------------------------------------------------------------- closed form, B = 0
@@ -733,7 +820,7 @@ def similar_solution(
     p1 = ratio * a_coef
 
     def pressure(theta: ArrayLike) -> FloatArray:
-        t = np.abs(wrap(theta))
+        t = np.abs(wrap_angle(theta))
         shape_a, shape_s = _similar_shapes(np.minimum(t, half_angle), half_angle)
         return np.where(t < half_angle, a_coef * shape_a + p1 * shape_s, 0.0)
 

@@ -284,13 +284,30 @@ def uniform_wear_comparison(
         ``depth`` and ``depth_reference`` [m], ``nonuniformity`` (range over mean of
         the final profile) [-], ``error`` (relative) [-].
     """
-    from scipy import integrate, optimize
+    load = 200.0
+    depth, config, stiffness = _turning_load_run(model, revolutions, nodes, load)
+    distance = revolutions * 2 * math.pi * config.joint.bushing_radius
+    reference = _uniform_depth(config, stiffness, load, distance)
+    mean = float(depth.mean())
+    return {
+        "depth": mean,
+        "depth_reference": reference,
+        "nonuniformity": float((depth.max() - depth.min()) / mean),
+        "error": mean / reference - 1.0,
+    }
 
+
+def _turning_load_run(
+    model: str, revolutions: int, nodes: int, load: float
+) -> tuple[FloatArray, Any, float]:
+    """Wear a bushing under a load turning with the pin.
+
+    Returns the final wear profile [m], the run's config and the stiffness ``E_w / L``
+    of its spring law [Pa/m].
+    """
     from jointwear.config import config_from_dict
-    from jointwear.contact import winkler
     from jointwear.simulation import Simulation
 
-    load = 200.0
     with tempfile.TemporaryDirectory() as folder:
         csv = Path(folder) / "turning_load.csv"
         rows = ["time [s],force_x [N],force_y [N],rotation [rad]"]
@@ -312,10 +329,22 @@ def uniform_wear_comparison(
         config = config_from_dict(data)
         simulation = Simulation(config)
         result = simulation.run(pressures=False)
-    depth = result.dataset["wear_depth"].values[-1]
-    joint, bushing = config.joint, config.materials.bushing
     # the run's own spring law: its stiffness E_w / L is the closed form's
-    stiffness = simulation.law.coefficient
+    return result.dataset["wear_depth"].values[-1], config, simulation.law.coefficient
+
+
+def _uniform_depth(config: Any, stiffness: float, load: float, distance: float) -> float:
+    """Depth [m] of uniform wear after sliding ``distance`` [m], by ``solve_ivp``.
+
+    ``dh/ds = K kappa(alpha) F / (2 pi (R_b + h) b)`` with the half-angle ``alpha`` of
+    the Winkler contact of stiffness ``stiffness`` [Pa/m] on the circle of clearance
+    ``c + h`` that carries the load ``load`` [N].
+    """
+    from scipy import integrate, optimize
+
+    from jointwear.contact import winkler
+
+    joint, bushing = config.joint, config.materials.bushing
     radius0 = joint.bushing_radius
 
     def rate(_s: float, h: FloatArray) -> list[float]:
@@ -341,16 +370,8 @@ def uniform_wear_comparison(
             bushing.wear_coefficient * kappa * load / (2 * math.pi * radius * joint.axial_length)
         ]
 
-    distance = revolutions * 2 * math.pi * radius0
     solved = integrate.solve_ivp(rate, (0.0, distance), [0.0], rtol=1e-10, atol=1e-18)
-    reference = float(solved.y[0, -1])
-    mean = float(depth.mean())
-    return {
-        "depth": mean,
-        "depth_reference": reference,
-        "nonuniformity": float((depth.max() - depth.min()) / mean),
-        "error": mean / reference - 1.0,
-    }
+    return float(solved.y[0, -1])
 
 
 def _table(rows: Iterable[Mapping[str, Any]], columns: Mapping[str, str]) -> str:
@@ -410,41 +431,55 @@ def build(folder: Path) -> dict[str, str]:
     folder.mkdir(parents=True, exist_ok=True)
     parts: dict[str, str] = {}
     for joint, (description, _) in CONFORMAL_JOINTS.items():
-        comparisons, labels, rows = [], [], []
-        for model, extra in (
-            ("asymmetric-winkler", {}),
-            ("nlcp", {"contact.nlcp_variant": "mesh-independent"}),
-            ("nlcp", {}),
-        ):
-            for motion in ("oscillating", "turning"):
-                comparison = conformal_comparison(model, motion, joint, overrides=extra)
-                comparisons.append(comparison)
-                labels.append(model + (" (mesh-independent)" if extra else "") + f", {motion}")
-                one, two = comparison.errors(1.0), comparison.errors(2.0)
-                end = comparison.errors(comparison.clearances_worn[-1])
-                rows.append(
-                    {
-                        "model": model + (" (mesh-independent)" if extra else ""),
-                        "motion": motion,
-                        "one": f"{one['depth']:.2%} / {one['volume']:.2%} / {one['width']:.1f}°",
-                        "two": f"{two['depth']:.2%} / {two['volume']:.2%} / {two['width']:.1f}°",
-                        "end": f"{end['depth']:.2%} / {end['volume']:.2%} / {end['width']:.1f}°",
-                        "time": f"{comparison.runtime:.2f} s",
-                    }
-                )
-        _conformal_figure(comparisons[::2], labels[::2], folder / f"conformal_{joint}.png")
-        columns = {
-            "model": "model",
-            "motion": "motion",
-            "one": "from 1 c",
-            "two": "from 2 c",
-            "end": "at 20 c",
-            "time": "run time",
-        }
         parts[f"conformal_{joint}"] = (
             f"**{description}** (largest deviation in depth / volume / width)\n\n"
-            + _table(rows, columns)
+            + _conformal_table(joint, folder)
         )
+    parts["uniform"] = _uniform_table()
+    return parts
+
+
+def _conformal_table(joint: str, folder: Path) -> str:
+    """Every contour model and motion of one joint against the rigid-conformal bore.
+
+    Writes the joint's figure into ``folder``; returns the Markdown table.
+    """
+    comparisons, labels, rows = [], [], []
+    for model, extra in (
+        ("asymmetric-winkler", {}),
+        ("nlcp", {"contact.nlcp_variant": "mesh-independent"}),
+        ("nlcp", {}),
+    ):
+        for motion in ("oscillating", "turning"):
+            comparison = conformal_comparison(model, motion, joint, overrides=extra)
+            comparisons.append(comparison)
+            labels.append(model + (" (mesh-independent)" if extra else "") + f", {motion}")
+            one, two = comparison.errors(1.0), comparison.errors(2.0)
+            end = comparison.errors(comparison.clearances_worn[-1])
+            rows.append(
+                {
+                    "model": model + (" (mesh-independent)" if extra else ""),
+                    "motion": motion,
+                    "one": f"{one['depth']:.2%} / {one['volume']:.2%} / {one['width']:.1f}°",
+                    "two": f"{two['depth']:.2%} / {two['volume']:.2%} / {two['width']:.1f}°",
+                    "end": f"{end['depth']:.2%} / {end['volume']:.2%} / {end['width']:.1f}°",
+                    "time": f"{comparison.runtime:.2f} s",
+                }
+            )
+    _conformal_figure(comparisons[::2], labels[::2], folder / f"conformal_{joint}.png")
+    columns = {
+        "model": "model",
+        "motion": "motion",
+        "one": "from 1 c",
+        "two": "from 2 c",
+        "end": "at 20 c",
+        "time": "run time",
+    }
+    return _table(rows, columns)
+
+
+def _uniform_table() -> str:
+    """The uniform-wear case against its closed form, as a Markdown table."""
     uniform = []
     for model in ("asymmetric-winkler",):
         values = uniform_wear_comparison(model)
@@ -457,7 +492,7 @@ def build(folder: Path) -> dict[str, str]:
                 "range": f"{values['nonuniformity']:.1e}",
             }
         )
-    parts["uniform"] = _table(
+    return _table(
         uniform,
         {
             "model": "model",
@@ -467,7 +502,6 @@ def build(folder: Path) -> dict[str, str]:
             "range": "(max − min) / mean",
         },
     )
-    return parts
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -20,7 +20,7 @@ from jointwear import Simulation
 from jointwear.calibration import Parameter
 from jointwear.config import Config, load_config
 from jointwear.errors import ConfigError, DataError, FitMisfitWarning, WearThroughError
-from jointwear.measurement.calibrate import (
+from jointwear.measurement.parameter_fit import (
     DEFAULT_BOUNDS,
     MISFIT_RATIO,
     MeasuredCase,

@@ -1,4 +1,5 @@
-"""Shared pieces of the reference models: turning a pressure profile into a ContactSolution."""
+"""What the reference models share: checked loads, one solved state per load, and the
+:class:`~jointwear.contact.ContactSolution` sampled from those states on the contour nodes."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from jointwear.contact.solution import ContactSolution
 from jointwear.errors import ContactError
+from jointwear.geometry.angles import wrap_angle
 from jointwear.geometry.contour import BushingContour
 
 __all__ = [
@@ -17,21 +19,9 @@ __all__ = [
     "assemble_solution",
     "check_loads",
     "edge_from_pressure",
-    "wrap",
 ]
 
 FloatArray = NDArray[np.float64]
-
-
-def wrap(angle: ArrayLike) -> FloatArray:
-    """Angle wrapped to ``(-pi, pi]`` [rad].
-
-    Parameters
-    ----------
-    angle : array_like
-        Angles [rad].
-    """
-    return np.angle(np.exp(1j * np.asarray(angle, dtype=float)))
 
 
 def check_loads(load: ArrayLike, azimuth: ArrayLike) -> tuple[FloatArray, FloatArray]:
@@ -111,7 +101,7 @@ def assemble_solution(
         # round-off specks at the contact edges are not contact
         row[row <= 1e-12 * row.max(initial=0.0)] = 0.0
         pressure[i] = row
-    phi = wrap(theta[None, :] - azimuth[:, None])
+    phi = wrap_angle(theta[None, :] - azimuth[:, None])
     contact = pressure > 0
     return ContactSolution(
         pressure=pressure,

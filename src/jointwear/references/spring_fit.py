@@ -1,4 +1,4 @@
-"""Calibrate Winkler's and NLCP's constants to a reference solution.
+"""Fit Winkler's and NLCP's spring constants to a reference solution.
 
 The paper leaves the calibration of its models to future work. Here the
 foundation stiffness of Winkler's model, ``k = E_w / L`` (eq. 4), and the
@@ -30,7 +30,7 @@ and ``contact.nlcp_variant = "mesh-independent"``.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -41,6 +41,7 @@ from jointwear.contact import ContactParameters, ContactSolution, PowerLaw, solv
 from jointwear.contact import nlcp as nlcp_module
 from jointwear.contact import winkler as winkler_module
 from jointwear.errors import ConfigError, ConvergenceError, JointwearError
+from jointwear.geometry.angles import wrap_angle
 from jointwear.geometry.contour import BushingContour, Pin
 
 __all__ = [
@@ -140,8 +141,8 @@ def reference_solution(
 
 
 def _window(contour: BushingContour) -> NDArray[np.bool_]:
-    phi = np.degrees(np.angle(np.exp(1j * contour.theta)))
-    return np.abs(phi) <= _WINDOW_DEG
+    """The nodes within :data:`_WINDOW_DEG` of the load line (azimuth 0)."""
+    return np.abs(np.degrees(wrap_angle(contour.theta))) <= _WINDOW_DEG
 
 
 def _residuals(
@@ -205,7 +206,6 @@ def fit_winkler(
     """
     _check_target(target)
     loads = np.asarray(loads, dtype=float).ravel()
-    azimuth = np.zeros_like(loads)
     window = _window(contour)
     modulus = winkler_module.foundation_modulus(
         parameters.bushing_youngs_modulus,
@@ -215,17 +215,18 @@ def fit_winkler(
     start = modulus / parameters.bushing_thickness
     evaluations = 0
 
-    def model_at(log_k: float) -> ContactSolution:
+    def objective(x: FloatArray) -> FloatArray:
         nonlocal evaluations
         evaluations += 1
-        law = PowerLaw(math.exp(log_k), 1.0, name="winkler", symmetric=True)
-        return solve_contact(contour, pin, loads, azimuth, law)
-
-    def objective(x: FloatArray) -> FloatArray:
-        try:
-            return _residuals(model_at(float(x[0])), reference, window, target)
-        except JointwearError:
-            return np.full(_residual_size(loads, window, target), 10.0)
+        return _law_residuals(
+            lambda: PowerLaw(math.exp(float(x[0])), 1.0, name="winkler", symmetric=True),
+            contour,
+            pin,
+            loads,
+            reference,
+            window,
+            target,
+        )
 
     fit = least_squares(objective, [math.log(start)], x_scale=[1.0], diff_step=1e-6, xtol=1e-12)
     _converged(fit, "winkler")
@@ -294,30 +295,24 @@ def fit_nlcp(
     """
     _check_target(target)
     loads = np.asarray(loads, dtype=float).ravel()
-    azimuth = np.zeros_like(loads)
     window = _window(contour)
-    middle = int(np.argsort(loads)[loads.size // 2])
-    delta_ref = float(reference.penetration[middle])
-    if not delta_ref > 0:
-        raise ConvergenceError("calibrate: the reference has no approach to scale NLCP with")
-    p_ref = float(reference.pressure[middle].max())
-    evaluations = 0
-
-    def law(log_c_ref: float, exponent: float) -> PowerLaw:
-        coefficient = math.exp(log_c_ref) / delta_ref**exponent
-        return PowerLaw(coefficient, exponent, name="nlcp")
-
+    delta_ref, p_ref = _reference_scale(loads, reference)
     fixed = float(parameters.exponent)
+    evaluations = 0
 
     def objective(x: FloatArray) -> FloatArray:
         nonlocal evaluations
         evaluations += 1
         exponent = fixed if fix_exponent else float(x[1])
-        try:
-            solution = solve_contact(contour, pin, loads, azimuth, law(float(x[0]), exponent))
-            return _residuals(solution, reference, window, target)
-        except JointwearError:
-            return np.full(_residual_size(loads, window, target), 10.0)
+        return _law_residuals(
+            lambda: _scaled_power_law(float(x[0]), exponent, delta_ref),
+            contour,
+            pin,
+            loads,
+            reference,
+            window,
+            target,
+        )
 
     log_p = math.log(p_ref)
     if fix_exponent:
@@ -331,17 +326,94 @@ def fit_nlcp(
     log_c_ref = float(fit.x[0])
     n = fixed if fix_exponent else float(fit.x[1])
     c = math.exp(log_c_ref) / delta_ref**n
-    area = float(parameters.spring_area)
-    k_fit = c * area
-    cov = _covariance(fit)
+    k_fit = c * float(parameters.spring_area)
+    sigma_log_c, sigma_n = _nlcp_spreads(_covariance(fit), delta_ref, fix_exponent)
+    return LawFit(
+        model="nlcp-k" if fix_exponent else "nlcp",
+        values={"coefficient_pa_per_m_n": c, "exponent": n, "K_n_per_m_n": k_fit},
+        uncertainty={
+            "coefficient_pa_per_m_n": c * sigma_log_c,
+            "exponent": sigma_n,
+            "K_n_per_m_n": k_fit * sigma_log_c,
+        },
+        equivalent=_nlcp_equivalent(parameters, c, n, math.exp(log_c_ref), delta_ref, fix_exponent),
+        rms_residual=float(np.sqrt(np.mean(fit.fun**2))),
+        reference=reference_name,
+        target=target,
+        loads_n=loads,
+        evaluations=evaluations,
+    )
+
+
+def _reference_scale(loads: FloatArray, reference: ContactSolution) -> tuple[float, float]:
+    """Approach [m] and peak pressure [Pa] of the reference at the middle load.
+
+    NLCP is fitted as ``p = c_ref (delta / delta_ref)^n``: scaled by the reference's own
+    approach, the two constants hardly correlate.
+    """
+    middle = int(np.argsort(loads)[loads.size // 2])
+    delta_ref = float(reference.penetration[middle])
+    if not delta_ref > 0:
+        raise ConvergenceError("calibrate: the reference has no approach to scale NLCP with")
+    return delta_ref, float(reference.pressure[middle].max())
+
+
+def _scaled_power_law(log_c_ref: float, exponent: float, delta_ref: float) -> PowerLaw:
+    """``p = c_ref (delta / delta_ref)^n`` with ``c_ref = exp(log_c_ref)`` [Pa]."""
+    coefficient = math.exp(log_c_ref) / delta_ref**exponent
+    return PowerLaw(coefficient, exponent, name="nlcp")
+
+
+def _law_residuals(
+    law: Callable[[], PowerLaw],
+    contour: BushingContour,
+    pin: Pin,
+    loads: FloatArray,
+    reference: ContactSolution,
+    window: NDArray[np.bool_],
+    target: str,
+) -> FloatArray:
+    """Residuals of the law ``law()`` against the reference [-], 10 each where it fails.
+
+    The law's own balance (:func:`~jointwear.contact.solve_contact`) on the reference's
+    contour, for the reference's loads at azimuth 0.
+    """
+    try:
+        solution = solve_contact(contour, pin, loads, np.zeros_like(loads), law())
+        return _residuals(solution, reference, window, target)
+    except JointwearError:
+        return np.full(_residual_size(loads, window, target), 10.0)
+
+
+def _nlcp_spreads(
+    covariance: FloatArray, delta_ref: float, fix_exponent: bool
+) -> tuple[float, float]:
+    """Standard deviations of ``ln c`` and ``n`` [-] from those of ``(ln c_ref, n)``.
+
+    ``ln c = ln c_ref - n ln delta_ref``, so
+    ``var(ln c) = var(ln c_ref) + ln(delta_ref)^2 var(n) - 2 ln(delta_ref) cov``.
+    """
     if fix_exponent:
-        var_log_c, var_n = cov[0, 0], 0.0
+        var_log_c, var_n = covariance[0, 0], 0.0
     else:
         log_d = math.log(delta_ref)
-        var_log_c = cov[0, 0] + log_d**2 * cov[1, 1] - 2.0 * log_d * cov[0, 1]
-        var_n = cov[1, 1]
+        var_log_c = covariance[0, 0] + log_d**2 * covariance[1, 1] - 2.0 * log_d * covariance[0, 1]
+        var_n = covariance[1, 1]
     sigma_log_c = math.sqrt(max(var_log_c, 0.0)) if np.isfinite(var_log_c) else math.nan
     sigma_n = math.sqrt(max(var_n, 0.0)) if np.isfinite(var_n) else math.nan
+    return sigma_log_c, sigma_n
+
+
+def _nlcp_equivalent(
+    parameters: ContactParameters,
+    c: float,
+    n: float,
+    c_ref: float,
+    delta_ref: float,
+    fix_exponent: bool,
+) -> dict[str, float | str]:
+    """A fitted ``p = c delta^n`` as config keys, and ``K = c A`` against eq. (2)'s ``K``."""
+    area = float(parameters.spring_area)
     k_eq2 = float(
         nlcp_module.stiffness(
             parameters.pin_radius,
@@ -356,27 +428,13 @@ def fit_nlcp(
         "contact.spring_area": k_eq2 / c,
         "contact.nlcp_variant": "mesh-independent",
         "spring_area_m2": area,
-        "pressure_at_reference_approach_pa": math.exp(log_c_ref),
+        "pressure_at_reference_approach_pa": c_ref,
         "reference_approach_m": delta_ref,
     }
     if fix_exponent and n == 1.5:
         equivalent["K_eq2_n_per_m_1.5"] = k_eq2
-        equivalent["ratio_K_to_eq2"] = k_fit / k_eq2
-    return LawFit(
-        model="nlcp-k" if fix_exponent else "nlcp",
-        values={"coefficient_pa_per_m_n": c, "exponent": n, "K_n_per_m_n": k_fit},
-        uncertainty={
-            "coefficient_pa_per_m_n": c * sigma_log_c,
-            "exponent": sigma_n,
-            "K_n_per_m_n": k_fit * sigma_log_c,
-        },
-        equivalent=equivalent,
-        rms_residual=float(np.sqrt(np.mean(fit.fun**2))),
-        reference=reference_name,
-        target=target,
-        loads_n=loads,
-        evaluations=evaluations,
-    )
+        equivalent["ratio_K_to_eq2"] = c * area / k_eq2
+    return equivalent
 
 
 def _residual_size(loads: FloatArray, window: NDArray[np.bool_], target: str) -> int:

@@ -1,4 +1,4 @@
-"""Calibrate model parameters to measured wear profiles (and to the paper's tables).
+"""Fit config parameters (``K_d``, geometry) to measured wear profiles.
 
 The paper compares its simulation with measured bushings (§3.2); fitting the
 wear coefficient ``K_d`` -- and, if the data allow, the joint's undisclosed
@@ -701,8 +701,6 @@ class _Measured:
 
 
 def _simulate(config: Config) -> FloatArray:
-    import warnings
-
     from jointwear.errors import ContactModelWarning, WearFeedbackWarning, WearThroughError
     from jointwear.simulation import Simulation
 
@@ -865,9 +863,60 @@ def calibrate_profiles(
     JointwearError
         The simulation fails at every trial value (the start's error, reworded).
     """
-    from scipy.optimize import least_squares
-    from scipy.special import stdtrit
+    _check_calibration(cases, parameters, fit, profile, noise)
+    measured = [_Measured(case, fit, profile, noise) for case in cases]
+    start = _starting_values(config, parameters, initial)
+    _check_measured_wear(config, start, cases, measured)
+    objective = _ProfileObjective(config, cases, measured, parameters)
+    points, costs = _global_stage(objective, start)
+    best, starts = _polish(objective, points, costs, max_evaluations)
+    u_best = np.clip(best.x, 0.0, 1.0)
+    final = objective.trial(u_best)
+    if final.failure is not None:
+        raise _reworded(
+            final.failure,
+            f"calibrate: the simulation fails at {_describe(final.values)} (e.g. the bushing "
+            "wears through); narrow the bounds",
+        )
+    r = objective.scaled(final)
+    spread = _Spread.of(final, r, objective.jacobian(u_best), parameters)
+    result = CalibrationResult(
+        values=final.values,
+        uncertainty=spread.uncertainty,
+        residuals=r,
+        labels=[f"{case.name}:point {i}" for case in cases for i in range(case.x.size)],
+        config=config.replace(final.values),
+        evaluations=objective.evaluations,
+        message=str(best.message),
+    )
+    comparisons, fits = _cases_at(measured, final)
+    outcome = ProfileCalibration(
+        result=result,
+        parameters=list(parameters),
+        initial=start,
+        cases=list(cases),
+        comparisons=comparisons,
+        fits=fits,
+        intervals=spread.intervals,
+        correlation=spread.correlation,
+        scan=[(objective.values_at(u), float(c)) for u, c in zip(points, costs, strict=True)],
+        starts=starts,
+        evaluations=objective.evaluations,
+        simulations=objective.simulations,
+    )
+    for message in outcome.warnings:
+        warnings.warn(message, FitMisfitWarning, stacklevel=2)
+    return outcome
 
+
+def _check_calibration(
+    cases: Sequence[MeasuredCase],
+    parameters: Sequence[Parameter],
+    fit: str,
+    profile: str,
+    noise: float | None,
+) -> None:
+    """Refuse a calibration without cases or parameters, or with clashing or bad options."""
     if not cases:
         raise ConfigError("calibrate: give at least one measured profile")
     if not parameters:
@@ -884,12 +933,31 @@ def calibrate_profiles(
     resolve_profile_method(profile, 1, 1)  # check the names early
     if str(fit).replace("_", "-") not in CIRCLE_FITS:
         raise ConfigError(f"fit: unknown circle fit {fit!r}{suggest(str(fit), CIRCLE_FITS)}")
-    measured = [_Measured(case, fit, profile, noise) for case in cases]
+
+
+def _starting_values(
+    config: Config, parameters: Sequence[Parameter], initial: Mapping[str, float] | None
+) -> dict[str, float]:
+    """The given starting values, else the config's, clipped into the bounds [SI]."""
     start = {
         p.key: float((initial or {}).get(p.key, config_value(config, p.key))) for p in parameters
     }
-    start = {p.key: min(max(start[p.key], p.lower), p.upper) for p in parameters}
-    # every case's config, its measured profile and noise, checked once with the starting values
+    return {p.key: min(max(start[p.key], p.lower), p.upper) for p in parameters}
+
+
+def _check_measured_wear(
+    config: Config,
+    start: Mapping[str, float],
+    cases: Sequence[MeasuredCase],
+    measured: Sequence[_Measured],
+) -> None:
+    """Every case's config, measured profile and noise, checked once at the start values.
+
+    Raises
+    ------
+    DataError
+        A measured profile whose peak is within its noise: no wear to fit.
+    """
     for case, meas in zip(cases, measured, strict=True):
         cfg = _case_config(config.replace(start), case)
         radius, nodes = cfg.bushing_radius, cfg.contact.nodes
@@ -900,88 +968,110 @@ def calibrate_profiles(
                 f"{peak * 1e6:.3g} µm, noise {sigma * 1e6:.3g} µm rms)"
             )
 
-    simulations = 0
-    evaluations = 0
-    profiles: dict[tuple[tuple[float, ...], int], FloatArray | JointwearError] = {}
-    trials: dict[tuple[float, ...], _Trial] = {}
 
-    def values_at(u: FloatArray) -> dict[str, float]:
-        return {p.key: p.from_unit(float(v)) for p, v in zip(parameters, u, strict=True)}
+class _ProfileObjective:
+    """The point residuals of every case at a point ``u`` of the unit cube of the parameters.
 
-    def simulated(u: FloatArray, index: int) -> FloatArray | JointwearError:
-        """A case's simulated profile at ``u`` (or the error it fails with)."""
-        nonlocal simulations
+    Simulated profiles and trials are cached by ``u``; ``simulations`` counts the runs,
+    ``evaluations`` the residual and cost evaluations (not the Jacobian's).
+    """
+
+    def __init__(
+        self,
+        config: Config,
+        cases: Sequence[MeasuredCase],
+        measured: Sequence[_Measured],
+        parameters: Sequence[Parameter],
+    ) -> None:
+        self.config = config
+        self.cases = cases
+        self.measured = measured
+        self.parameters = parameters
+        self.steps = _steps(parameters)
+        self.simulations = 0
+        self.evaluations = 0
+        self._profiles: dict[tuple[tuple[float, ...], int], FloatArray | JointwearError] = {}
+        self._trials: dict[tuple[float, ...], _Trial] = {}
+
+    def values_at(self, u: FloatArray) -> dict[str, float]:
+        """Parameter values [SI] at ``u``."""
+        return {p.key: p.from_unit(float(v)) for p, v in zip(self.parameters, u, strict=True)}
+
+    def simulated(self, u: FloatArray, index: int) -> FloatArray | JointwearError:
+        """A case's simulated profile at ``u`` [m] (or the error it fails with)."""
         key = (tuple(float(v) for v in u), index)
-        if key not in profiles:
-            simulations += 1
-            cfg = _case_config(config.replace(values_at(u)), cases[index])
+        if key not in self._profiles:
+            self.simulations += 1
+            cfg = _case_config(self.config.replace(self.values_at(u)), self.cases[index])
             try:
-                profiles[key] = _simulate(cfg)
+                self._profiles[key] = _simulate(cfg)
             except JointwearError as exc:
-                profiles[key] = exc
-        return profiles[key]
+                self._profiles[key] = exc
+        return self._profiles[key]
 
-    def trial(u: FloatArray) -> _Trial:
+    def trial(self, u: FloatArray) -> _Trial:
+        """The cases simulated at ``u`` and their points fitted (up to the first failure)."""
         key = tuple(float(v) for v in u)
-        if key not in trials:
-            values = values_at(u)
-            configs = [_case_config(config.replace(values), case) for case in cases]
+        if key not in self._trials:
+            values = self.values_at(u)
+            configs = [_case_config(self.config.replace(values), case) for case in self.cases]
             item = _Trial(np.array(u, dtype=float), values, configs)
-            for index, (case, meas, cfg) in enumerate(zip(cases, measured, configs, strict=True)):
-                depth = simulated(u, index)
+            for index, (case, meas, cfg) in enumerate(
+                zip(self.cases, self.measured, configs, strict=True)
+            ):
+                depth = self.simulated(u, index)
                 if isinstance(depth, JointwearError):
                     item.failure, item.failed_case = depth, case.name
                     break
                 item.profiles.append(depth)
                 item.fits.append(meas.fit_points(depth, cfg.bushing_radius))
-            trials[key] = item
-        return trials[key]
+            self._trials[key] = item
+        return self._trials[key]
 
-    def weights(item: _Trial) -> list[float]:
+    def noises(self, item: _Trial) -> list[float]:
+        """Each case's measurement noise [m] (its residuals are divided by it)."""
         return [
             meas.noise(cfg.bushing_radius)[0]
-            for meas, cfg in zip(measured, item.configs, strict=True)
+            for meas, cfg in zip(self.measured, item.configs, strict=True)
         ]
 
-    def residual(u: FloatArray) -> FloatArray:
-        nonlocal evaluations
-        evaluations += 1
-        return scaled(trial(u))
-
-    def scaled(item: _Trial) -> FloatArray:
+    def scaled(self, item: _Trial) -> FloatArray:
         """The residual vector of a trial [-] (point residuals over each case's noise)."""
         if item.failed:
             # larger than any residual of a simulation that runs (wear within the wall)
             return np.concatenate(
                 [
                     np.full(case.x.size, 10 * cfg.bushing_radius / sigma)
-                    for case, cfg, sigma in zip(cases, item.configs, weights(item), strict=True)
+                    for case, cfg, sigma in zip(
+                        self.cases, item.configs, self.noises(item), strict=True
+                    )
                 ]
             )
         return np.concatenate(
-            [f.residuals / sigma for f, sigma in zip(item.fits, weights(item), strict=True)]
+            [f.residuals / sigma for f, sigma in zip(item.fits, self.noises(item), strict=True)]
         )
 
-    steps = _steps(parameters)
+    def residual(self, u: FloatArray) -> FloatArray:
+        """The residual vector at ``u`` [-] (an evaluation)."""
+        self.evaluations += 1
+        return self.scaled(self.trial(u))
 
-    def jacobian(u: FloatArray) -> FloatArray:
+    def cost(self, u: FloatArray) -> float:
+        """Sum of squared residuals at ``u`` [-], ``inf`` where a simulation fails."""
+        self.evaluations += 1
+        item = self.trial(u)
+        return math.inf if item.failed else float(np.sum(self.scaled(item) ** 2))
+
+    def jacobian(self, u: FloatArray) -> FloatArray:
         """Jacobian of the profiled residual: d(profile)/du, centre and rotation projected out."""
-        item = trial(u)
+        item = self.trial(u)
         if item.failed:  # no slope where the simulation fails: the cost there is a wall
-            return np.zeros((sum(case.x.size for case in cases), len(parameters)))
+            return np.zeros((sum(case.x.size for case in self.cases), len(self.parameters)))
         blocks = []
-        for index, (fitted, sigma) in enumerate(zip(item.fits, weights(item), strict=True)):
+        for index, (fitted, sigma) in enumerate(zip(item.fits, self.noises(item), strict=True)):
             columns = []
-            for i, step in enumerate(steps):
-                up, down = np.array(u, dtype=float), np.array(u, dtype=float)
-                up[i], down[i] = min(u[i] + step, 1.0), max(u[i] - step, 0.0)
-                high, low = simulated(up, index), simulated(down, index)
-                if isinstance(high, JointwearError):
-                    high, up = item.profiles[index], np.array(u, dtype=float)
-                if isinstance(low, JointwearError):
-                    low, down = item.profiles[index], np.array(u, dtype=float)
-                span = up[i] - down[i]
-                slope = (high - low) / span if span > 0 else np.zeros_like(high)
+            for i, step in enumerate(self.steps):
+                slope = self._profile_slope(u, item, index, i, step)
                 k, w = interpolation_weights(fitted.angles, slope.size)
                 columns.append(-((1 - w) * slope[k] + w * slope[(k + 1) % slope.size]) / sigma)
             block = np.column_stack(columns)
@@ -992,34 +1082,58 @@ def calibrate_profiles(
             blocks.append(block)
         return np.vstack(blocks)
 
-    def cost(u: FloatArray) -> float:
-        nonlocal evaluations
-        evaluations += 1
-        item = trial(u)
-        return math.inf if item.failed else float(np.sum(scaled(item) ** 2))
+    def _profile_slope(
+        self, u: FloatArray, item: _Trial, index: int, i: int, step: float
+    ) -> FloatArray:
+        """``d(profile)/du_i`` of case ``index`` [m] by central differences within the cube.
 
-    # 1. global stage
-    start_u = np.array([p.to_unit(start[p.key]) for p in parameters])
-    points = _global_trials(parameters, start_u)
-    costs = np.array([cost(u) for u in points])
+        A side where the simulation fails is replaced by ``u`` itself (one-sided).
+        """
+        up, down = np.array(u, dtype=float), np.array(u, dtype=float)
+        up[i], down[i] = min(u[i] + step, 1.0), max(u[i] - step, 0.0)
+        high, low = self.simulated(up, index), self.simulated(down, index)
+        if isinstance(high, JointwearError):
+            high, up = item.profiles[index], np.array(u, dtype=float)
+        if isinstance(low, JointwearError):
+            low, down = item.profiles[index], np.array(u, dtype=float)
+        span = up[i] - down[i]
+        return (high - low) / span if span > 0 else np.zeros_like(high)
+
+
+def _global_stage(
+    objective: _ProfileObjective, start: Mapping[str, float]
+) -> tuple[FloatArray, FloatArray]:
+    """Stage 1: the cost at the scan (or Sobol sample) of the unit cube and at the start.
+
+    Raises the start's error, reworded, if the simulation fails at every trial.
+    """
+    start_u = np.array([p.to_unit(start[p.key]) for p in objective.parameters])
+    points = _global_trials(objective.parameters, start_u)
+    costs = np.array([objective.cost(u) for u in points])
     if not np.any(np.isfinite(costs)):
-        failed = trial(start_u)
+        failed = objective.trial(start_u)
         raise _reworded(
             failed.failure or DataError("the simulation fails"),
             f"{failed.failed_case}: the simulation fails at {_describe(start)} "
             f"({failed.failure}), and at every value of the global search; narrow the bounds",
         )
-    scan = [(values_at(u), float(c)) for u, c in zip(points, costs, strict=True)]
+    return points, costs
 
-    # 2. polish the best candidates
+
+def _polish(
+    objective: _ProfileObjective, points: FloatArray, costs: FloatArray, max_evaluations: int
+) -> tuple[Any, int]:
+    """Stage 2: least squares from the global stage's best candidates; the best and how many."""
+    from scipy.optimize import least_squares
+
     best: Any = None
     starts = 0
     for index in _candidates(points, costs, _POLISH_STARTS):
         starts += 1
         solution = least_squares(
-            residual,
+            objective.residual,
             points[index],
-            jac=jacobian,
+            jac=objective.jacobian,
             bounds=(0.0, 1.0),
             method="trf",
             x_scale="jac",
@@ -1030,56 +1144,66 @@ def calibrate_profiles(
         )
         if best is None or solution.cost < best.cost:
             best = solution
-    u_best = np.clip(best.x, 0.0, 1.0)
-    final = trial(u_best)
-    if final.failure is not None:
-        raise _reworded(
-            final.failure,
-            f"calibrate: the simulation fails at {_describe(final.values)} (e.g. the bushing "
-            "wears through); narrow the bounds",
-        )
+    return best, starts
 
-    # 3. uncertainty from the profiled Jacobian
-    r = scaled(final)
-    jac = jacobian(u_best)
-    nuisance = sum(len(f.free) for f in final.fits)
-    dof = r.size - len(parameters) - nuisance
-    uncertainty = {key: math.nan for key in keys}
-    intervals = {key: (math.nan, math.nan) for key in keys}
-    correlation = np.full((len(keys), len(keys)), math.nan)
-    if dof > 0:
-        try:
-            covariance = np.linalg.inv(jac.T @ jac) * float(r @ r) / dof
-        except np.linalg.LinAlgError:
-            covariance = None
-        if covariance is not None and np.all(np.isfinite(covariance)):
-            quantile = float(stdtrit(dof, 0.5 + CONFIDENCE / 2))  # Student's t
-            sigma_u = np.sqrt(np.maximum(np.diag(covariance), 0.0))
-            with np.errstate(invalid="ignore", divide="ignore"):
-                correlation = covariance / np.outer(sigma_u, sigma_u)
-            for p, s in zip(parameters, sigma_u, strict=True):
-                value = final.values[p.key]
-                if p.logarithmic:
-                    spread = s * math.log(p.upper / p.lower)  # of ln(value)
-                    uncertainty[p.key] = value * spread
-                    intervals[p.key] = (
-                        value * math.exp(-quantile * spread),
-                        value * math.exp(quantile * spread),
-                    )
-                else:
-                    spread = s * (p.upper - p.lower)
-                    uncertainty[p.key] = spread
-                    intervals[p.key] = (value - quantile * spread, value + quantile * spread)
 
-    result = CalibrationResult(
-        values=final.values,
-        uncertainty=uncertainty,
-        residuals=r,
-        labels=[f"{case.name}:point {i}" for case in cases for i in range(case.x.size)],
-        config=config.replace(final.values),
-        evaluations=evaluations,
-        message=str(best.message),
-    )
+@dataclass(frozen=True)
+class _Spread:
+    """Stage 3: 1σ uncertainties and intervals [SI] and correlation, NaN if not estimable."""
+
+    uncertainty: dict[str, float]
+    intervals: dict[str, tuple[float, float]]
+    correlation: FloatArray
+
+    @classmethod
+    def of(
+        cls, final: _Trial, r: FloatArray, jac: FloatArray, parameters: Sequence[Parameter]
+    ) -> _Spread:
+        """From the profiled Jacobian ``jac`` and residuals ``r`` at the fitted trial.
+
+        ``s^2 (J^T J)^-1`` on ``M - P - Q`` degrees of freedom; Student's interval on the
+        fitting scale (log or linear).
+        """
+        from scipy.special import stdtrit
+
+        keys = [p.key for p in parameters]
+        nuisance = sum(len(f.free) for f in final.fits)
+        dof = r.size - len(parameters) - nuisance
+        uncertainty = {key: math.nan for key in keys}
+        intervals = {key: (math.nan, math.nan) for key in keys}
+        correlation = np.full((len(keys), len(keys)), math.nan)
+        covariance = None
+        if dof > 0:
+            try:
+                covariance = np.linalg.inv(jac.T @ jac) * float(r @ r) / dof
+            except np.linalg.LinAlgError:
+                covariance = None
+        if covariance is None or not np.all(np.isfinite(covariance)):
+            return cls(uncertainty, intervals, correlation)
+        quantile = float(stdtrit(dof, 0.5 + CONFIDENCE / 2))  # Student's t
+        sigma_u = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            correlation = covariance / np.outer(sigma_u, sigma_u)
+        for p, s in zip(parameters, sigma_u, strict=True):
+            value = final.values[p.key]
+            if p.logarithmic:
+                spread = s * math.log(p.upper / p.lower)  # of ln(value)
+                uncertainty[p.key] = value * spread
+                intervals[p.key] = (
+                    value * math.exp(-quantile * spread),
+                    value * math.exp(quantile * spread),
+                )
+            else:
+                spread = s * (p.upper - p.lower)
+                uncertainty[p.key] = spread
+                intervals[p.key] = (value - quantile * spread, value + quantile * spread)
+        return cls(uncertainty, intervals, correlation)
+
+
+def _cases_at(
+    measured: Sequence[_Measured], final: _Trial
+) -> tuple[list[Comparison], list[CaseFit]]:
+    """Each case at the fitted values, seen from its fitted centre and rotation."""
     fits = []
     comparisons = []
     for meas, cfg, depth, points_fit in zip(
@@ -1114,20 +1238,4 @@ def calibrate_profiles(
         fits.append(
             CaseFit(points_fit, sigma, source, comparison.measured_metrics.peak_depth, depth.size)
         )
-    outcome = ProfileCalibration(
-        result=result,
-        parameters=list(parameters),
-        initial=start,
-        cases=list(cases),
-        comparisons=comparisons,
-        fits=fits,
-        intervals=intervals,
-        correlation=correlation,
-        scan=scan,
-        starts=starts,
-        evaluations=evaluations,
-        simulations=simulations,
-    )
-    for message in outcome.warnings:
-        warnings.warn(message, FitMisfitWarning, stacklevel=2)
-    return outcome
+    return comparisons, fits
