@@ -54,8 +54,10 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         ),
     ),
     ("mechanism", ("jointwear.mechanism",)),
-    # the exact and finite-element references are contact models (and registered as such)
-    ("contact", ("jointwear.contact", "jointwear.references")),
+    # the exact and finite-element references are contact models (and registered as such);
+    # the mechanism stage's entry from a Config hands the contact-impact force laws the
+    # contact models' elastic laws
+    ("contact", ("jointwear.contact", "jointwear.references", "jointwear.mechanism.stage")),
     ("tribology", ("jointwear.tribology",)),
     ("geometry update", ("jointwear.geometry.update",)),
     ("simulation", ("jointwear.coupling", "jointwear.simulation")),
@@ -89,13 +91,6 @@ KNOWN_LAYER_EXCEPTIONS: dict[tuple[str, str], str] = {
     ("jointwear.config", "jointwear.mechanism"): "lazy: validates the dynamics model's name",
     ("jointwear.config", "jointwear.tribology.wear_laws"): "lazy: validates the wear law's name",
     ("jointwear.config", "jointwear.contact.nlcp"): "lazy: NLCP's default K (eq. 2)",
-    # the contact-impact dynamics integrate the pin's motion against the bushing's
-    # contact law: the force laws are the contact stage's, evaluated by the mechanism
-    ("jointwear.mechanism.force_laws", "jointwear.contact"): "lazy: impact force law",
-    ("jointwear.mechanism.force_laws", "jointwear.contact.hertz"): "Hertz stiffness of impacts",
-    ("jointwear.mechanism.force_laws", "jointwear.contact.laws"): "spring laws of the impact",
-    # a load history can be read from an earlier run's result file
-    ("jointwear.mechanism.history", "jointwear.results"): "lazy: reads a result file's loads",
     # the fused per-revolution kernel computes the pressure and Archard's wear increment
     # in one compiled pass
     ("jointwear.contact.kernel", "jointwear.tribology.archard"): "fused pressure + wear kernel",
