@@ -13,7 +13,7 @@ slider-crank, pull spring, 120 rpm, Lankarani-Nikravesh contact) with
 ``dynamics.model = "contact-impact"``. The reference is the readable Python right-hand
 side (``JOINTWEAR_NO_NUMBA=1``); the straightforward integration -- Python right-hand
 side and ``solve_ivp``'s own contact events -- is measured too
-(:func:`tests.mechanism.test_impact_integrator.reference_contacts`).
+(:func:`tests.mechanism.impact.test_integrator.reference_contacts`).
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ from pathlib import Path  # noqa: E402
 import numpy as np  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))  # tests.mechanism.test_impact_integrator
+sys.path.insert(0, str(REPO))  # tests.mechanism.impact.test_integrator
 
 from benchmarks.bench_simulation import (  # noqa: E402
     ROWS,
@@ -42,12 +42,15 @@ from benchmarks.bench_simulation import (  # noqa: E402
     numba_start_up,
     row,
 )
-from tests.mechanism.test_impact_integrator import reference_contacts  # noqa: E402
+from tests.mechanism.impact.test_integrator import reference_contacts  # noqa: E402
 
 from jointwear import load_config  # noqa: E402
 from jointwear.config import Config  # noqa: E402
-from jointwear.mechanism import SliderCrank  # noqa: E402
-from jointwear.mechanism import contact_impact as ci  # noqa: E402
+from jointwear.mechanism.impact.integrator import integrate_contacts  # noqa: E402
+from jointwear.mechanism.impact.settings import ContactImpactSettings  # noqa: E402
+from jointwear.mechanism.slider_crank import contact_impact as ci  # noqa: E402
+from jointwear.mechanism.slider_crank.dynamics import SliderCrank  # noqa: E402
+from jointwear.mechanism.stage import mechanism_inputs  # noqa: E402
 
 PAPER = REPO / "tests" / "data" / "paper_joint.toml"
 SWITCH = "JOINTWEAR_NO_NUMBA"
@@ -98,7 +101,7 @@ def bench_revolutions(quick: bool) -> None:
         config = paper(**{"dynamics.revolutions_settle": settle})
 
         def solve(config=config):
-            return ci.solve_contact_impact(config, compare=False, compiled=True)
+            return ci.solve_contact_impact(mechanism_inputs(config), compare=False, compiled=True)
 
         result = paired(solve, solve, 5 if quick else 15)
         (ref_wall, ref_cpu), (wall, cpu) = result["reference"], result["compiled"]
@@ -107,9 +110,9 @@ def bench_revolutions(quick: bool) -> None:
         row(f"{label}: compiled right-hand side", ms(wall, cpu), target)
         row(f"{label}: speed-up", f"{ref_wall / wall:.2f}x wall, {ref_cpu / cpu:.2f}x CPU")
     config = paper(**{"dynamics.revolutions_settle": 0})
-    fast = ci.solve_contact_impact(config, compare=False, compiled=True)
+    fast = ci.solve_contact_impact(mechanism_inputs(config), compare=False, compiled=True)
     with python_rhs():
-        reference = ci.solve_contact_impact(config, compare=False, compiled=True)
+        reference = ci.solve_contact_impact(mechanism_inputs(config), compare=False, compiled=True)
     difference = np.abs(fast.load.load - reference.load.load).max() / reference.load.load.max()
     row(
         "one revolution: max |compiled - reference| / peak (normal force); RHS evaluations",
@@ -121,12 +124,14 @@ def bench_revolutions(quick: bool) -> None:
 def bench_integration(quick: bool) -> None:
     """The integration alone: ``solve_ivp``'s own events + Python RHS vs this package's."""
     config = paper()
+    inputs = mechanism_inputs(config)
+    settings = ContactImpactSettings.from_config(config.dynamics)
     mechanism = SliderCrank.from_config(config.mechanism)
-    contact = ci.JointContact.from_config(config)
+    contact = ci.slider_crank_contact(inputs, settings)
     omega = config.mechanism.crank_speed
     python = ci.SliderCrankContactSystem(mechanism, omega, contact, compiled=False)
     compiled = ci.SliderCrankContactSystem(mechanism, omega, contact)
-    y0, _ = ci._initial_state(python, 360)
+    y0, _ = ci.initial_state(python, 360)
     period = 2 * math.pi / omega
 
     def straightforward():
@@ -135,7 +140,7 @@ def bench_integration(quick: bool) -> None:
     samples = np.linspace(0.0, period, 361)
 
     def integrate(system, keep=None):
-        return ci.integrate_contacts(
+        return integrate_contacts(
             system, (0.0, period), y0, in_contact=True, max_step=period / 360, keep=keep
         )
 
@@ -170,13 +175,14 @@ _START = """
 import time
 t0 = time.perf_counter()
 from jointwear import load_config
-from jointwear.mechanism import contact_impact as ci
+from jointwear.mechanism.slider_crank import contact_impact as ci
+from jointwear.mechanism.stage import mechanism_inputs
 config = load_config({path!r}, overrides={{"dynamics.model": "contact-impact",
                                            "dynamics.revolutions_settle": 0}})
 t1 = time.perf_counter()
 ci.impact_kernel()
 t2 = time.perf_counter()
-ci.solve_contact_impact(config, compare=False, compiled=True)
+ci.solve_contact_impact(mechanism_inputs(config), compare=False, compiled=True)
 t3 = time.perf_counter()
 print(t2 - t1, t3 - t2)
 """

@@ -52,9 +52,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 import jointwear as jw
-from jointwear import mechanism
 from jointwear.cli.dynamics_cmd import write_csv
 from jointwear.mechanism import LoadCycle
+from jointwear.mechanism.stage import load_cycle
 
 FloatArray = NDArray[np.float64]
 
@@ -250,7 +250,7 @@ def read_back(path: Path, cycle: LoadCycle) -> None:
         overrides={"mechanism.type": "load-history", "mechanism.file": str(path)}
     )
     try:
-        back = mechanism.load_cycle(config)
+        back = load_cycle(config)
     except ModuleNotFoundError as missing:
         # a jointwear without the load-history reader still writes the file
         print(f"not read back: {missing}")

@@ -55,8 +55,10 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         ),
     ),
     ("mechanism", ("jointwear.mechanism",)),
-    # the exact and finite-element references are contact models (and registered as such)
-    ("contact", ("jointwear.contact", "jointwear.references")),
+    # the exact and finite-element references are contact models (and registered as such);
+    # the mechanism stage's entry from a Config hands the contact-impact force laws the
+    # contact models' elastic laws
+    ("contact", ("jointwear.contact", "jointwear.references", "jointwear.mechanism.stage")),
     ("tribology", ("jointwear.tribology",)),
     ("geometry update", ("jointwear.geometry.update",)),
     ("simulation", ("jointwear.coupling", "jointwear.simulation")),
@@ -83,13 +85,6 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
 
 #: (importing module, imported module) -> why the upward import stays for now
 KNOWN_LAYER_EXCEPTIONS: dict[tuple[str, str], str] = {
-    # the contact-impact dynamics integrate the pin's motion against the bushing's
-    # contact law: the force laws are the contact stage's, evaluated by the mechanism
-    ("jointwear.mechanism.force_laws", "jointwear.contact"): "lazy: impact force law",
-    ("jointwear.mechanism.force_laws", "jointwear.contact.hertz"): "Hertz stiffness of impacts",
-    ("jointwear.mechanism.force_laws", "jointwear.contact.laws"): "spring laws of the impact",
-    # a load history can be read from an earlier run's result file
-    ("jointwear.mechanism.history", "jointwear.results"): "lazy: reads a result file's loads",
     # WearResult's conveniences (summary, netCDF, plot, repr) delegate to the modules that
     # present a result; all lazy, at call time
     ("jointwear.simulation", "jointwear.results"): "lazy: WearResult builds its dataset",

@@ -77,7 +77,7 @@ class Lazy:
     Parameters
     ----------
     target : str
-        ``"module:attr"``, e.g. ``"jointwear.mechanism.four_bar:check_four_bar"``.
+        ``"module:attr"``, e.g. ``"jointwear.mechanism.four_bar.geometry:check_four_bar"``.
     key : str
         The config key the entry serves (its errors start with it).
     """

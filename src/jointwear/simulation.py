@@ -56,6 +56,7 @@ from jointwear.coupling import DynamicsSchedule, LifeLimits, load_change
 from jointwear.errors import WearFeedbackWarning
 from jointwear.geometry.contour import BushingContour, Pin
 from jointwear.geometry.update import update_contour
+from jointwear.mechanism.stage import load_cycles
 from jointwear.state import Deferred, SimulationState
 from jointwear.tribology.checks import warn_model_validity
 from jointwear.tribology.metrics import (
@@ -290,7 +291,7 @@ class Simulation:
         [m -> Pa]; default ``config.contact.model``.
     load_cycle : LoadCycle, optional
         Precomputed load cycle of the joint (default: from ``config`` by
-        :func:`jointwear.mechanism.load_cycles`; a given cycle is never re-solved).
+        :func:`jointwear.mechanism.stage.load_cycles`; a given cycle is never re-solved).
     joint : str, optional
         The clearance joint to simulate; default all of ``config.joints``.
     wear_law : str or callable, optional
@@ -362,7 +363,7 @@ class Simulation:
     def load_cycles(self) -> dict[str, mechanism.LoadCycle]:
         """Stage 1: the load cycle of every simulated clearance joint (unworn joint)."""
         if self._cycles is None:
-            cycles = mechanism.load_cycles(self.config)
+            cycles = load_cycles(self.config)
             self._cycles = cycles if self.joint is None else {self.joint: cycles[self.joint]}
         return self._cycles
 
@@ -829,7 +830,7 @@ class Simulation:
 
     def _worn_cycle(self, wear_depth: FloatArray) -> mechanism.LoadCycle:
         """The load cycle of the joint worn by ``wear_depth`` (stage 1 on the worn joint)."""
-        cycles = mechanism.load_cycles(self.config, wear_depth=wear_depth)
+        cycles = load_cycles(self.config, wear_depth=wear_depth)
         return cycles[self.joint] if self.joint is not None else next(iter(cycles.values()))
 
     def _resolve_dynamics(self, state: SimulationState) -> SimulationState:

@@ -42,7 +42,7 @@ def test_the_mechanism_types_are_the_mechanism_registrys() -> None:
 
 
 def test_the_force_laws_are_the_contact_impact_dynamics() -> None:
-    from jointwear.mechanism.force_laws import FORCE_LAWS
+    from jointwear.mechanism.impact.force_laws import FORCE_LAWS
 
     force_law = DynamicsConfig.model_fields["force_law"].annotation
     assert typing.get_args(force_law) == FORCE_LAWS

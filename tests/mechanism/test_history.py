@@ -15,8 +15,9 @@ import pytest
 from jointwear import Simulation, load_config
 from jointwear.cli import main
 from jointwear.errors import DataError
-from jointwear.mechanism import LoadCycle, load_cycle
+from jointwear.mechanism import LoadCycle
 from jointwear.mechanism.history import MIN_ROWS, history_cycle, read_load_history
+from jointwear.mechanism.stage import load_cycle
 
 REPO = Path(__file__).resolve().parents[2]
 PAPER = REPO / "tests" / "data" / "paper_joint.toml"
@@ -226,7 +227,7 @@ def test_bom_comments_blank_lines_and_informative_columns_are_accepted(tmp_path:
 def test_history_cycle_scales_the_load_and_records_the_file(tmp_path: Path) -> None:
     path = write_csv(tmp_path / "loads.csv", example_columns())
     config = write_config(tmp_path, HISTORY + "load_scale = 2.5\n")
-    cycle = history_cycle(load_config(config))
+    cycle = history_cycle(load_config(config).mechanism)
     plain = read_load_history(path)
     np.testing.assert_allclose(cycle.load, 2.5 * plain.load, rtol=1e-15)
     assert (cycle.mechanism, cycle.model, cycle.joint) == ("load-history", "prescribed", "joint")
@@ -497,7 +498,7 @@ def test_example_load_history_runs(capsys: pytest.CaptureFixture[str]) -> None:
 def test_every_mechanism_writes_what_reads_back(tmp_path: Path, example: str) -> None:
     """A mechanism's diagnostics must be known to the reader, or its CSV would not read back."""
     from jointwear.cli.dynamics_cmd import write_csv
-    from jointwear.mechanism import load_cycles
+    from jointwear.mechanism.stage import load_cycles
 
     root = Path(__file__).resolve().parents[2] / "examples"
     for joint, cycle in load_cycles(load_config(root / example)).items():

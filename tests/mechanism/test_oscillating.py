@@ -11,7 +11,7 @@ from jointwear import Simulation
 from jointwear.config import config_from_dict
 from jointwear.contact import winkler
 from jointwear.errors import ConfigError
-from jointwear.mechanism import load_cycle
+from jointwear.mechanism.stage import load_cycle
 
 BASE = {
     "mechanism": {

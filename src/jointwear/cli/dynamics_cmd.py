@@ -22,7 +22,8 @@ from jointwear.cli.common import (
 )
 from jointwear.errors import ConfigError, DataError
 from jointwear.io import atomic_write, os_reason
-from jointwear.mechanism import LoadCycle, load_cycles
+from jointwear.mechanism import LoadCycle
+from jointwear.mechanism.stage import load_cycles
 
 CsvOpt = Annotated[
     Path | None,

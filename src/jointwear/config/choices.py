@@ -86,7 +86,7 @@ SLIDING_MODEL = Choice(
 CHOICES: tuple[Choice, ...] = (CONTACT_MODEL, DYNAMICS_MODEL, WEAR_LAW, SLIDING_MODEL)
 
 #: ``check_four_bar(ground, crank, coupler, rocker)``: the linkage assembles and turns
-FOUR_BAR_GEOMETRY = Lazy("jointwear.mechanism.four_bar:check_four_bar", "mechanism")
+FOUR_BAR_GEOMETRY = Lazy("jointwear.mechanism.four_bar.geometry:check_four_bar", "mechanism")
 #: ``stiffness(R_p, E_p, nu_p, E_b, nu_b)``: NLCP's spring stiffness, eq. (2) [N/m^n]
 NLCP_STIFFNESS = Lazy("jointwear.contact.nlcp:stiffness", "contact.stiffness")
 #: ``check_model_choice(model, update_contour)``: the model can follow a worn contour

@@ -179,7 +179,7 @@ class DynamicsConfig(Section):
     """Which dynamics model produces the joint load, and its settings.
 
     The keys from ``force_law`` on belong to ``model = "contact-impact"``
-    (:mod:`jointwear.mechanism.contact_impact`); velocities are m/s or strings
+    (:mod:`jointwear.mechanism.slider_crank.contact_impact`); velocities are m/s or strings
     with units (``"0.1 mm/s"``).
     """
 

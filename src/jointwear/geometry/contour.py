@@ -325,7 +325,7 @@ def pin_penetration(along: ArrayLike, across: ArrayLike, gap: ArrayLike, pin_rad
     the difference of two millimetre radii. The one statement of the ray geometry for
     the load balance, the finite-element reference, :meth:`BushingContour.penetration`
     and the distributed force laws of the contact-impact dynamics
-    (:mod:`jointwear.mechanism.force_laws`). Two copies remain, for speed: the compiled
+    (:mod:`jointwear.mechanism.impact.distributed`). Two copies remain, for speed: the compiled
     contact kernel takes the same formula from its series, and the balance's residual
     (:mod:`jointwear.contact.balance.residual`) evaluates it in place in reused buffers.
 

@@ -3,8 +3,9 @@
 Every mechanism type (``mechanism.type``) and dynamics model hands the rest of the
 pipeline a :class:`LoadCycle`: per time step of one period of the joint's motion,
 the time, the magnitude of the force between pin and bushing, its direction in the
-bushing's frame and the increment of the relative rotation pin - bushing (which
-sets the sliding distance of the Archard step). Nothing downstream of stage 1
+bushing's frame and the increment of the relative rotation pin - bushing (from
+which :mod:`jointwear.tribology.sliding` computes the sliding distance of the Archard
+step, at a radius it states). Nothing downstream of stage 1
 knows which mechanism produced it; mechanism-specific series (crank torque,
 slider position, ...) travel beside it as :attr:`LoadCycle.diagnostics`.
 """
@@ -15,32 +16,16 @@ import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["Diagnostic", "LoadCycle", "bushing_azimuth", "crank_extras", "wrap_angle"]
+from jointwear.geometry.angles import wrap_angle
+
+__all__ = ["Diagnostic", "LoadCycle", "bushing_azimuth", "crank_extras"]
 
 FloatArray = NDArray[np.float64]
-
-
-def wrap_angle(angle: FloatArray | float) -> FloatArray:
-    """Wrap angles to the interval (-pi, pi] [rad].
-
-    Parameters
-    ----------
-    angle : array_like
-        Angles [rad].
-
-    Returns
-    -------
-    ndarray
-        The same angles in (-pi, pi] [rad].
-    """
-    wrapped = np.mod(np.asarray(angle, dtype=float) + np.pi, 2.0 * np.pi) - np.pi
-    # mod maps +pi to -pi; the interval is closed on the right
-    return np.where(wrapped == -np.pi, np.pi, wrapped)
 
 
 def bushing_azimuth(
@@ -138,8 +123,9 @@ class LoadCycle:
         the x axis of the body that carries the bushing [rad]. Unwrapped and shifted
         by whole turns so that its mean lies in (-pi, pi].
     relative_rotation : ndarray, shape (N,)
-        Signed increment of ``phi_pin - phi_bushing`` over each step [rad];
-        ``R_b |relative_rotation|`` is the sliding distance of the step.
+        Signed increment of ``phi_pin - phi_bushing`` over each step [rad]; a surface
+        at radius ``R`` slides ``R |relative_rotation|`` over the step
+        (:mod:`jointwear.tribology.sliding`).
     period : float
         Duration of one cycle [s].
     mechanism : str
@@ -295,39 +281,6 @@ class LoadCycle:
     def total_relative_rotation(self) -> float:
         """Sum of the absolute relative-rotation increments over the cycle [rad]."""
         return float(np.sum(np.abs(self.relative_rotation)))
-
-    def azimuth_increment(self) -> FloatArray:
-        """Change of the load azimuth over each step, wrapped to (-pi, pi] [rad]."""
-        return wrap_angle(np.roll(self.azimuth, -1) - self.azimuth)
-
-    def sliding_distance(
-        self,
-        radius: float,
-        variant: Literal["relative-rotation", "contact-azimuth"] = "relative-rotation",
-    ) -> FloatArray:
-        """Sliding distance at the pin-bushing interface over each step [m].
-
-        Parameters
-        ----------
-        radius : float
-            Radius at which the sliding is measured, normally the bushing radius
-            ``R_b`` [m].
-        variant : {"relative-rotation", "contact-azimuth"}
-            ``"relative-rotation"`` (default, kinematically correct):
-            ``R |d(phi_pin - phi_bushing)|``. ``"contact-azimuth"``: ``R |d psi|``,
-            the change of the load azimuth on the bushing, as the paper words it
-            (its section 3.1).
-
-        Returns
-        -------
-        ndarray, shape (N,)
-            Sliding distance ``ds_k`` of each step [m].
-        """
-        if variant == "relative-rotation":
-            return radius * np.abs(self.relative_rotation)
-        if variant == "contact-azimuth":
-            return radius * np.abs(self.azimuth_increment())
-        raise ValueError(f"unknown sliding variant {variant!r}")
 
     @property
     def mean_load(self) -> float:

@@ -83,13 +83,15 @@ import math
 from collections.abc import Mapping
 from dataclasses import replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
 from jointwear.errors import DataError
+from jointwear.io import check_input
 from jointwear.mechanism.cycle import LoadCycle, bushing_azimuth
+from jointwear.mechanism.inputs import MechanismInputs
 from jointwear.registry import suggest
 from jointwear.tables import (
     delimiter_of,
@@ -102,9 +104,16 @@ from jointwear.tables import (
 )
 
 if TYPE_CHECKING:
-    from jointwear.config import Config
+    from jointwear.config import LoadHistoryConfig
 
-__all__ = ["INFORMATIVE_COLUMNS", "MIN_ROWS", "history_cycle", "read_load_history"]
+__all__ = [
+    "INFORMATIVE_COLUMNS",
+    "LOAD_HISTORY",
+    "MIN_ROWS",
+    "LoadHistoryMechanism",
+    "history_cycle",
+    "read_load_history",
+]
 
 FloatArray = NDArray[np.float64]
 
@@ -227,15 +236,15 @@ def read_load_history(
     )
 
 
-def history_cycle(config: Config) -> LoadCycle:
+def history_cycle(mechanism: LoadHistoryConfig) -> LoadCycle:
     """The load cycle of a ``load-history`` mechanism.
 
     Parameters
     ----------
-    config : jointwear.config.Config
-        Uses ``[mechanism]`` (type ``"load-history"``): ``file`` (an absolute path,
-        as :func:`~jointwear.config.load_config` resolves it), ``frame``, ``period``
-        [s] and ``load_scale`` [-], the factor on the load.
+    mechanism : jointwear.config.LoadHistoryConfig
+        The ``[mechanism]`` section (type ``"load-history"``): ``file`` (an absolute
+        path, as :func:`~jointwear.config.load_config` resolves it), ``frame``,
+        ``period`` [s] and ``load_scale`` [-], the factor on the load.
 
     Returns
     -------
@@ -243,7 +252,7 @@ def history_cycle(config: Config) -> LoadCycle:
         The cycle of the one joint, ``"joint"``, with the file's path and SHA-256
         in its extras (``history_file``, ``history_sha256``).
     """
-    mech = config.mechanism
+    mech = mechanism
     path = Path(mech.file)
     cycle = read_load_history(path, mech.frame, mech.period)
     with path.open("rb") as handle:
@@ -363,10 +372,7 @@ def _read_result(path: Path, frame: str, period: float | None) -> LoadCycle:
         raise DataError(
             f"{path}: a jointwear result holds the load in the bushing frame; use frame = 'bushing'"
         )
-    # xarray is imported only for a result file, not for every CSV history
-    from jointwear.results import read_result
-
-    dataset = read_result(path)
+    dataset = _open_result(path)
     arrays = {}
     for name, unit in (
         ("time", "s"),
@@ -400,3 +406,40 @@ def _read_result(path: Path, frame: str, period: float | None) -> LoadCycle:
         )
     except DataError as exc:
         raise DataError(f"{path}: {exc}") from None
+
+
+def _open_result(path: Path) -> Any:
+    """The dataset of a netCDF result file, loaded into memory (xarray, h5netcdf).
+
+    Only the load variables are read from it (a history is not checked as a wear
+    result); the reader is the one ``jointwear run --out`` files are written for.
+    """
+    check_input(path, "result", max_bytes=None)
+    # xarray is imported only for a result file, not for every CSV history
+    import xarray as xr
+
+    try:
+        with xr.open_dataset(path, engine="h5netcdf") as handle:
+            return handle.load()
+    except Exception as exc:
+        raise DataError(f"{path}: not a readable netCDF result ({type(exc).__name__})") from None
+
+
+class LoadHistoryMechanism:
+    """A load history as a mechanism type (:class:`jointwear.mechanism.base.Mechanism`)."""
+
+    description = (
+        "one period of joint load from a file (CSV or netCDF), e.g. another multibody code"
+    )
+    models = ("prescribed",)
+
+    def load_cycles(
+        self, inputs: MechanismInputs, wear_depth: FloatArray | None = None
+    ) -> dict[str, LoadCycle]:
+        """:func:`history_cycle`; a prescribed load does not depend on the wear [m]."""
+        cycle = history_cycle(inputs.mechanism)
+        return {cycle.joint: cycle}
+
+
+#: the registry entry
+LOAD_HISTORY = LoadHistoryMechanism()

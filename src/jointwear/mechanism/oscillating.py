@@ -23,34 +23,31 @@ the pin (``"pin"``: the load direction follows ``load_angle + varphi``).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
+from numpy.typing import NDArray
 
 from jointwear.mechanism.cycle import Diagnostic, LoadCycle
+from jointwear.mechanism.inputs import MechanismInputs
 
-if TYPE_CHECKING:
-    from jointwear.config import Config
-
-__all__ = ["oscillating_cycle"]
+__all__ = ["OSCILLATING", "OscillatingMechanism", "oscillating_cycle"]
 
 
-def oscillating_cycle(config: Config) -> dict[str, LoadCycle]:
+def oscillating_cycle(inputs: MechanismInputs) -> dict[str, LoadCycle]:
     """Load cycle of the oscillating bearing over one oscillation.
 
     Parameters
     ----------
-    config : jointwear.config.Config
-        Uses ``[mechanism]`` (type ``"oscillating"``) and
-        ``simulation.steps_per_revolution`` (steps per oscillation).
+    inputs : MechanismInputs
+        Uses the ``[mechanism]`` section (type ``"oscillating"``) and the steps per
+        oscillation.
 
     Returns
     -------
     dict of str to LoadCycle
         The cycle of the one joint, ``"bearing"``.
     """
-    mech = config.mechanism
-    steps = config.simulation.steps_per_revolution
+    mech = inputs.mechanism
+    steps = inputs.steps
     period = mech.period
     time = period * np.arange(steps) / steps
     phase = 2.0 * np.pi * np.arange(steps + 1) / steps
@@ -79,3 +76,20 @@ def oscillating_cycle(config: Config) -> dict[str, LoadCycle]:
         },
     )
     return {"bearing": cycle}
+
+
+class OscillatingMechanism:
+    """The oscillating bearing as a mechanism type (:class:`jointwear.mechanism.base.Mechanism`)."""
+
+    description = "oscillating-bearing test: pin swinging +-amplitude under a radial load"
+    models = ("prescribed",)
+
+    def load_cycles(
+        self, inputs: MechanismInputs, wear_depth: NDArray[np.float64] | None = None
+    ) -> dict[str, LoadCycle]:
+        """:func:`oscillating_cycle`; a prescribed load does not depend on the wear [m]."""
+        return oscillating_cycle(inputs)
+
+
+#: the registry entry
+OSCILLATING = OscillatingMechanism()

@@ -1,4 +1,4 @@
-"""The slider-crank's compiled right-hand side against its Python reference.
+"""The slider-crank's compiled contact-impact right-hand side against its Python reference.
 
 The compiled functions (numba) mirror the reference expression by expression, so on
 any state -- pin pressed into the wall or flying free, with friction, on a worn
@@ -17,11 +17,12 @@ import pytest
 
 from jointwear.config import Config
 from jointwear.geometry import BushingContour
-from jointwear.mechanism import SliderCrank
-from jointwear.mechanism import contact_impact as ci
+from jointwear.mechanism.slider_crank.contact_impact import impact_kernel
+
+from ..joints import slider_crank_system
 
 pytestmark = pytest.mark.skipif(
-    ci.impact_kernel() is None, reason="numba missing or JOINTWEAR_NO_NUMBA set"
+    impact_kernel() is None, reason="numba missing or JOINTWEAR_NO_NUMBA set"
 )
 
 VARIANTS = {
@@ -35,12 +36,9 @@ VARIANTS = {
 
 def systems(config: Config, contour: BushingContour | None = None):
     """The compiled system and the Python one of ``config``."""
-    mechanism = SliderCrank.from_config(config.mechanism)
-    contact = ci.JointContact.from_config(config, contour)
-    omega = config.mechanism.crank_speed
     return (
-        ci.SliderCrankContactSystem(mechanism, omega, contact, compiled=True),
-        ci.SliderCrankContactSystem(mechanism, omega, contact, compiled=False),
+        slider_crank_system(config, contour, compiled=True),
+        slider_crank_system(config, contour, compiled=False),
     )
 
 
@@ -115,7 +113,7 @@ def test_compiled_rhs_on_a_worn_bushing(paper_config: Config) -> None:
 
 def test_compiled_hypot_is_pythons() -> None:
     """The kernel's hypot gives CPython's ``math.hypot`` bits, over 40 decades."""
-    kernel = ci.impact_kernel()
+    kernel = impact_kernel()
     rng = np.random.default_rng(3)
     x = rng.normal(size=20000) * 10.0 ** rng.uniform(-20, 20, size=20000)
     y = x * 10.0 ** rng.uniform(-8, 8, size=20000) * rng.choice([-1, 1], size=20000)
@@ -131,14 +129,10 @@ def test_switch_and_distributed_laws_use_python(paper_config: Config) -> None:
     config = paper_config.replace({"dynamics.model": "contact-impact"})
     os.environ["JOINTWEAR_NO_NUMBA"] = "1"
     try:
-        assert ci.impact_kernel() is None
+        assert impact_kernel() is None
         with pytest.raises(Exception, match="numba"):
             systems(config)
     finally:
         del os.environ["JOINTWEAR_NO_NUMBA"]
-    nlcp = config.replace({"dynamics.force_law": "nlcp"})
-    mechanism = SliderCrank.from_config(nlcp.mechanism)
-    system = ci.SliderCrankContactSystem(
-        mechanism, nlcp.mechanism.crank_speed, ci.JointContact.from_config(nlcp)
-    )
+    system = slider_crank_system(config.replace({"dynamics.force_law": "nlcp"}))
     assert not system.compiled

@@ -25,12 +25,15 @@ import numpy as np
 import pytest
 
 from jointwear.config import load_config
-from jointwear.mechanism.four_bar import FourBar, four_bar_cycles, four_bar_motion
+from jointwear.mechanism.four_bar.geometry import FourBar
+from jointwear.mechanism.four_bar.kinematics import four_bar_motion
+from jointwear.mechanism.four_bar.massless_link import massless_link_cycles
+from jointwear.mechanism.stage import mechanism_inputs
 
 exu = pytest.importorskip("exudyn")
 ii = pytest.importorskip("exudyn.itemInterface")
 
-EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "four_bar.toml"
+EXAMPLE = Path(__file__).resolve().parents[3] / "examples" / "four_bar.toml"
 STEPS = 360
 SUBSTEPS = 10
 
@@ -189,7 +192,7 @@ def exudyn_joint_forces(linkage: FourBar, omega: float) -> dict[str, np.ndarray]
 def test_joint_loads_match_exudyn(overrides) -> None:
     config = load_config(EXAMPLE, overrides)
     linkage = FourBar.from_config(config.mechanism)
-    cycles = four_bar_cycles(config, "massless-link")
+    cycles = massless_link_cycles(mechanism_inputs(config))
     reference = exudyn_joint_forces(linkage, config.mechanism.crank_speed)
     for joint, cycle in cycles.items():
         ours = np.column_stack(

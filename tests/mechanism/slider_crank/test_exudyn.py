@@ -30,14 +30,15 @@ import numpy as np
 import pytest
 
 from jointwear.config import Config, load_config
-from jointwear.mechanism import LoadCycle, SliderCrank, massless_link_load
+from jointwear.mechanism import LoadCycle
+from jointwear.mechanism.slider_crank.dynamics import SliderCrank
+from jointwear.mechanism.slider_crank.massless_link import massless_link_load
+from jointwear.mechanism.stage import mechanism_inputs
 
 exu = pytest.importorskip("exudyn")
 ii = pytest.importorskip("exudyn.itemInterface")
 
-PAPER_CONFIG = (
-    Path(__file__).resolve().parents[2] / "tests" / "data" / "paper_joint.toml"
-)
+PAPER_CONFIG = Path(__file__).resolve().parents[3] / "tests" / "data" / "paper_joint.toml"
 
 #: the paper's slider-crank (Table 1, SI); rod inertia m l^2 / 12 about its centre;
 #: 20 N preload, pull: the ``nlcp-paper`` parameter set
@@ -226,7 +227,7 @@ def jointwear_cycle(rpm: float, bushing_body: str) -> LoadCycle:
     )
     # the same mechanism on both sides, or the comparison proves nothing
     assert SliderCrank.from_config(config.mechanism) == PAPER
-    return massless_link_load(config)
+    return massless_link_load(mechanism_inputs(config))
 
 
 def relative_deviation(ours: np.ndarray, theirs: np.ndarray, scale: float) -> float:

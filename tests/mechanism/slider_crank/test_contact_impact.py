@@ -1,4 +1,4 @@
-"""Contact-impact dynamics: the pin free in the clearance (``dynamics.model = "contact-impact"``).
+"""Contact-impact dynamics of the slider-crank: the pin free in the clearance.
 
 Physical checks, each of which fails if the mechanics is wrong:
 
@@ -6,8 +6,6 @@ Physical checks, each of which fails if the mechanics is wrong:
   mechanical energy (kinetic + spring + gravity + contact K delta^(n+1)/(n+1)) changes
   by exactly the crank work, over an interval with many impacts;
 * dissipation with damping and friction is never negative and never decreases;
-* one impact of a free pin on the wall: the effective restitution is the one the
-  law's hysteresis factor produces, and each law's accuracy claim is checked;
 * continuous contact (the paper's pull spring at 120 rpm): the load agrees with
   the massless-link model, the residue being the penetration's geometric effect;
 * separation (push spring, tiny preload): impacts and free flight are detected
@@ -26,23 +24,26 @@ import pytest
 from jointwear.cli import main
 from jointwear.config import Config
 from jointwear.errors import ConfigError, ContactLossWarning, ConvergenceError
-from jointwear.mechanism import (
-    DYNAMICS_MODELS,
-    LoadCycle,
-    SliderCrank,
-    load_cycle,
-    massless_link_load,
+from jointwear.mechanism import DYNAMICS_MODELS, ContactImpactSolution, LoadCycle
+from jointwear.mechanism.impact.integrator import integrate_contacts
+from jointwear.mechanism.slider_crank.contact_impact import (
+    initial_state,
     solve_contact_impact,
 )
-from jointwear.mechanism import contact_impact as ci
-from jointwear.mechanism import force_laws as fl
+from jointwear.mechanism.slider_crank.massless_link import massless_link_load
+from jointwear.mechanism.stage import load_cycle, mechanism_inputs
+
+from ..joints import slider_crank_system
 
 #: push spring with 1 N preload at 240 rpm, 0.2 mm clearance, light rod: the pin
 #: separates from the wall twice per revolution
 SEPARATING = {
-    "mechanism.spring_mode": "push", "mechanism.spring_preload": "1 N",
-    "mechanism.crank_speed": "240 rpm", "joint.clearance": "0.2 mm",
-    "mechanism.rod_mass": "0.3 kg", "mechanism.rod_inertia": 0.3 * 0.2**2 / 12,
+    "mechanism.spring_mode": "push",
+    "mechanism.spring_preload": "1 N",
+    "mechanism.crank_speed": "240 rpm",
+    "joint.clearance": "0.2 mm",
+    "mechanism.rod_mass": "0.3 kg",
+    "mechanism.rod_inertia": 0.3 * 0.2**2 / 12,
 }
 
 
@@ -50,21 +51,24 @@ def impact_config(config: Config, **overrides: object) -> Config:
     return config.replace({"dynamics.model": "contact-impact", **overrides})
 
 
-def system_of(config: Config) -> ci.SliderCrankContactSystem:
-    return ci.SliderCrankContactSystem(
-        SliderCrank.from_config(config.mechanism), config.mechanism.crank_speed,
-        ci.JointContact.from_config(config),
-    )
+def solve(config: Config, **options: object) -> ContactImpactSolution:
+    """:func:`solve_contact_impact` of the slider-crank of ``config``."""
+    return solve_contact_impact(mechanism_inputs(config), **options)
 
 
 # ------------------------------------------------------------------ energy
 
 
 def energy_balance(config: Config, duration: float, rtol: float, atol: float):
-    system = system_of(config)
-    y0, _ = ci._initial_state(system, 360)
-    history = ci.integrate_contacts(
-        system, (0.0, duration), y0, in_contact=True, rtol=rtol, atol=atol,
+    system = slider_crank_system(config)
+    y0, _ = initial_state(system, 360)
+    history = integrate_contacts(
+        system,
+        (0.0, duration),
+        y0,
+        in_contact=True,
+        rtol=rtol,
+        atol=atol,
         max_step=2 * math.pi / system.omega / 360,
     )
     times = np.linspace(0.0, duration, 2001)
@@ -94,8 +98,9 @@ def test_energy_residue_shrinks_with_tolerance(paper_config: Config) -> None:
 @pytest.mark.slow
 @pytest.mark.parametrize("law", ["nlcp", "winkler"])
 def test_energy_conserved_distributed_laws(paper_config: Config, law: str) -> None:
-    config = impact_config(paper_config, **SEPARATING,
-                           **{"dynamics.restitution": 1.0, "dynamics.force_law": law})
+    config = impact_config(
+        paper_config, **SEPARATING, **{"dynamics.restitution": 1.0, "dynamics.force_law": law}
+    )
     residue, _, history = energy_balance(config, 0.05, 1e-10, 1e-13)
     assert len(history.impact_times) >= 5
     assert np.max(np.abs(residue)) < 1e-6
@@ -103,8 +108,11 @@ def test_energy_conserved_distributed_laws(paper_config: Config, law: str) -> No
 
 @pytest.mark.parametrize("friction", [0.0, 0.2])
 def test_dissipation_is_positive_and_monotone(paper_config: Config, friction: float) -> None:
-    config = impact_config(paper_config, **SEPARATING, **{
-        "dynamics.restitution": 0.5, "dynamics.friction_coefficient": friction})
+    config = impact_config(
+        paper_config,
+        **SEPARATING,
+        **{"dynamics.restitution": 0.5, "dynamics.friction_coefficient": friction},
+    )
     residue, _, history = energy_balance(config, 0.05, 1e-10, 1e-13)
     dissipated = -residue  # crank work not stored as mechanical energy
     assert len(history.impact_times) >= 2
@@ -112,79 +120,18 @@ def test_dissipation_is_positive_and_monotone(paper_config: Config, friction: fl
     assert np.all(np.diff(dissipated) > -1e-8)
 
 
-# ------------------------------------------------------------------ restitution
-
-
-def point_contact(paper_config: Config, law: str, ce: float) -> ci.JointContact:
-    return ci.JointContact.from_config(
-        paper_config.replace({"dynamics.force_law": law, "dynamics.restitution": ce})
-    )
-
-
-@pytest.mark.parametrize("law", ["lankarani-nikravesh", "hunt-crossley", "flores"])
-@pytest.mark.parametrize("ce", [0.3, 0.5, 0.7, 0.8, 0.9, 0.95, 1.0])
-def test_single_impact_restitution_follows_hysteresis(
-    paper_config: Config, law: str, ce: float
-) -> None:
-    contact = point_contact(paper_config, law, ce)
-    effective, history = ci.free_pin_impact(contact, mass=0.4, impact_velocity=0.1,
-                                            direction=0.7)
-    assert len(history.impact_times) == 1
-    assert len(history.separation_times) == 1
-    expected = fl.hysteresis_restitution(fl.hysteresis_factor(law, ce))
-    assert effective == pytest.approx(expected, abs=2e-6)
-
-
-def test_restitution_independent_of_mass_speed_and_law_shape(paper_config: Config) -> None:
-    # for F = f(delta)(1 + chi delta'/delta'^-) the restitution depends on chi only
-    results = []
-    for law, mass, speed in [("lankarani-nikravesh", 0.4, 0.1), ("lankarani-nikravesh", 5.0, 1.0),
-                             ("lankarani-nikravesh", 0.05, 0.005), ("nlcp", 0.4, 0.1)]:
-        contact = point_contact(paper_config, law, 0.7)
-        results.append(ci.free_pin_impact(contact, mass, speed, direction=-2.0)[0])
-    assert results == pytest.approx([results[0]] * 4, abs=2e-6)
-
-
-def restitution(paper_config: Config, law: str, ce: float) -> float:
-    return ci.free_pin_impact(point_contact(paper_config, law, ce), 0.4, 0.1)[0]
-
-
-def test_lankarani_nikravesh_claim_ce_near_one(paper_config: Config) -> None:
-    # derived for c_e -> 1: within 2 % from 0.9 up (observed 1.5 % at 0.9, 0.4 % at 0.95)
-    for ce in (0.9, 0.95, 0.99):
-        assert restitution(paper_config, "lankarani-nikravesh", ce) == pytest.approx(ce, rel=0.02)
-    # and far off for low c_e (0.73 for 0.5): the damping is too weak there
-    assert restitution(paper_config, "lankarani-nikravesh", 0.5) > 0.7
-
-
-def test_hunt_crossley_claim_ce_near_one(paper_config: Config) -> None:
-    # observed 1.0 % at 0.9, 4 % at 0.8, 16 % at 0.5
-    for ce in (0.9, 0.95, 0.99):
-        assert restitution(paper_config, "hunt-crossley", ce) == pytest.approx(ce, rel=0.011)
-    assert restitution(paper_config, "hunt-crossley", 0.5) > 0.65
-
-
-def test_flores_claim_whole_range(paper_config: Config) -> None:
-    # observed: 0.7 % at 0.9, 1.4 % at 0.8, 2.4 % at 0.7, 5.9 % at 0.5, 15 % at 0.3 (low)
-    for ce, rel in [(0.95, 0.006), (0.9, 0.008), (0.8, 0.015), (0.7, 0.025), (0.5, 0.06)]:
-        assert restitution(paper_config, "flores", ce) == pytest.approx(ce, rel=rel)
-    # the best of the three at every c_e below 1
-    for ce in (0.3, 0.5, 0.7, 0.8, 0.9):
-        errors = {law: abs(restitution(paper_config, law, ce) - ce)
-                  for law in ("lankarani-nikravesh", "hunt-crossley", "flores")}
-        assert min(errors, key=errors.get) == "flores"
-
-
 # ------------------------------------------------------------------ continuous contact
 
 
 def load_difference(a: LoadCycle, b: LoadCycle) -> np.ndarray:
-    return np.hypot(a.load * np.cos(a.azimuth) - b.load * np.cos(b.azimuth),
-                    a.load * np.sin(a.azimuth) - b.load * np.sin(b.azimuth))
+    return np.hypot(
+        a.load * np.cos(a.azimuth) - b.load * np.cos(b.azimuth),
+        a.load * np.sin(a.azimuth) - b.load * np.sin(b.azimuth),
+    )
 
 
 def test_agrees_with_massless_link_when_spring_keeps_contact(paper_config: Config) -> None:
-    solution = solve_contact_impact(impact_config(paper_config))
+    solution = solve(impact_config(paper_config))
     load, massless = solution.load, solution.massless
     assert massless is not None
     assert not massless.contact_lost
@@ -197,37 +144,47 @@ def test_agrees_with_massless_link_when_spring_keeps_contact(paper_config: Confi
     assert solution.load_difference_rms < 2e-3 * mean
     assert solution.load_difference_max < 3e-3 * mean
     assert np.max(np.abs(load.azimuth - massless.azimuth)) < math.radians(0.05)
-    assert np.max(np.abs(load.diagnostics['crank_torque'].values
-                         - massless.diagnostics['crank_torque'].values)) < 0.01
-    assert load.total_relative_rotation == pytest.approx(massless.total_relative_rotation,
-                                                         rel=1e-3)
+    assert (
+        np.max(
+            np.abs(
+                load.diagnostics["crank_torque"].values
+                - massless.diagnostics["crank_torque"].values
+            )
+        )
+        < 0.01
+    )
+    assert load.total_relative_rotation == pytest.approx(massless.total_relative_rotation, rel=1e-3)
     # Hertz pin-in-hole stiffness: tens of micrometres into the PTFE
     assert 3e-5 < solution.max_penetration < 5e-5
     # the residue is geometric: a massless link as long as clearance + static
     # penetration (~34 um at the mean load) agrees ~10x better
-    longer = massless_link_load(paper_config.replace({"joint.clearance": 0.05e-3 + 34e-6}))
+    longer = massless_link_load(
+        mechanism_inputs(paper_config.replace({"joint.clearance": 0.05e-3 + 34e-6}))
+    )
     residue = load_difference(load, longer)
     assert np.sqrt(np.mean(residue**2)) < 0.2 * solution.load_difference_rms
 
 
 @pytest.mark.parametrize("bushing_body", ["rod"])
 def test_agrees_with_massless_link_bushing_in_rod(paper_config: Config, bushing_body: str) -> None:
-    config = impact_config(paper_config, **{"mechanism.bushing_body": bushing_body,
-                                            "dynamics.revolutions_settle": 1})
-    solution = solve_contact_impact(config)
+    config = impact_config(
+        paper_config, **{"mechanism.bushing_body": bushing_body, "dynamics.revolutions_settle": 1}
+    )
+    solution = solve(config)
     assert solution.load.extras["bushing_body"] == "rod"
     assert solution.load_difference_rms < 2e-3 * solution.massless.mean_load
-    np.testing.assert_allclose(solution.load.relative_rotation,
-                               solution.massless.relative_rotation, atol=2e-4)
+    np.testing.assert_allclose(
+        solution.load.relative_rotation, solution.massless.relative_rotation, atol=2e-4
+    )
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("law", ["hunt-crossley", "flores", "nlcp", "winkler"])
-@pytest.mark.parametrize("overrides", [{}, {"mechanism.spring_preload": "120 N",
-                                            "mechanism.crank_speed": "240 rpm"}])
+@pytest.mark.parametrize(
+    "overrides", [{}, {"mechanism.spring_preload": "120 N", "mechanism.crank_speed": "240 rpm"}]
+)
 def test_agreement_all_laws(paper_config: Config, law: str, overrides: dict) -> None:
-    solution = solve_contact_impact(
-        impact_config(paper_config, **{"dynamics.force_law": law, **overrides}))
+    solution = solve(impact_config(paper_config, **{"dynamics.force_law": law, **overrides}))
     assert solution.impacts == 0
     assert solution.load_difference_rms < 2e-3 * solution.massless.mean_load
 
@@ -248,8 +205,8 @@ def test_wear_pipeline_consumes_contact_impact_load(paper_config: Config) -> Non
 def test_separation_detected_where_massless_link_warns(paper_config: Config) -> None:
     config = impact_config(paper_config, **SEPARATING)
     with pytest.warns(ContactLossWarning):
-        massless_link_load(config)
-    solution = solve_contact_impact(config)
+        massless_link_load(mechanism_inputs(config))
+    solution = solve(config)
     load = solution.load
     assert solution.massless_contact_lost is True
     # observed: 9 impacts, 13 % free flight per revolution
@@ -269,8 +226,7 @@ def test_separation_detected_where_massless_link_warns(paper_config: Config) -> 
 
 
 def test_paper_mechanism_keeps_contact(paper_config: Config) -> None:
-    solution = solve_contact_impact(impact_config(paper_config,
-                                                  **{"dynamics.revolutions_settle": 1}))
+    solution = solve(impact_config(paper_config, **{"dynamics.revolutions_settle": 1}))
     assert solution.impacts == 0
     assert solution.free_flight_fraction == 0.0
 
@@ -280,8 +236,9 @@ def test_paper_mechanism_keeps_contact(paper_config: Config) -> None:
 
 def test_registered_and_joint_load(paper_config: Config) -> None:
     assert "contact-impact" in DYNAMICS_MODELS
-    config = impact_config(paper_config, **{"simulation.steps_per_revolution": 72,
-                                            "dynamics.revolutions_settle": 0})
+    config = impact_config(
+        paper_config, **{"simulation.steps_per_revolution": 72, "dynamics.revolutions_settle": 0}
+    )
     load = load_cycle(config)
     assert isinstance(load, LoadCycle)
     assert load.model == "contact-impact"
@@ -293,22 +250,25 @@ def test_registered_and_joint_load(paper_config: Config) -> None:
 def test_integrators_agree(paper_config: Config) -> None:
     base = {"dynamics.revolutions_settle": 0, "simulation.steps_per_revolution": 36}
     loads = {
-        method: solve_contact_impact(
-            impact_config(paper_config, **base, **{"dynamics.integrator": method}),
-            compare=False).load.load
+        method: solve(
+            impact_config(paper_config, **base, **{"dynamics.integrator": method}), compare=False
+        ).load.load
         for method in ("LSODA", "Radau")
     }
     np.testing.assert_allclose(loads["Radau"], loads["LSODA"], rtol=1e-4)
 
 
-@pytest.mark.parametrize(("key", "value", "match"), [
-    ("dynamics.restitution", 0.0, "dynamics.restitution"),
-    ("dynamics.restitution", 1.5, "dynamics.restitution"),
-    ("dynamics.integrator", "Euler", "dynamics.integrator"),
-    ("dynamics.force_law", "hertz", "dynamics.force_law"),
-    ("dynamics.friction_velocity_tolerance", "1 N", "dynamics.friction_velocity_tolerance"),
-    ("dynamics.friction_velocity_full", 1e-5, "dynamics.friction_velocity_full"),
-])
+@pytest.mark.parametrize(
+    ("key", "value", "match"),
+    [
+        ("dynamics.restitution", 0.0, "dynamics.restitution"),
+        ("dynamics.restitution", 1.5, "dynamics.restitution"),
+        ("dynamics.integrator", "Euler", "dynamics.integrator"),
+        ("dynamics.force_law", "hertz", "dynamics.force_law"),
+        ("dynamics.friction_velocity_tolerance", "1 N", "dynamics.friction_velocity_tolerance"),
+        ("dynamics.friction_velocity_full", 1e-5, "dynamics.friction_velocity_full"),
+    ],
+)
 def test_bad_settings_raise_config_error(
     paper_config: Config, key: str, value: object, match: str
 ) -> None:
@@ -343,14 +303,23 @@ def test_integrator_failure_raises_convergence_error(
     # contact_impact imports solve_ivp when it integrates: patch it at the source
     monkeypatch.setattr(scipy.integrate, "solve_ivp", failing)
     with pytest.raises(ConvergenceError, match="dynamics.integrator"):
-        solve_contact_impact(impact_config(paper_config, **{"dynamics.revolutions_settle": 0}))
+        solve(impact_config(paper_config, **{"dynamics.revolutions_settle": 0}))
 
 
 def test_cli_reports_impact_fields(capsys: pytest.CaptureFixture[str], paper_config_path) -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        main(["dynamics", str(paper_config_path), "--set", "dynamics.model=contact-impact",
-              "--set", "dynamics.revolutions_settle=1", "--json"])
+        main(
+            [
+                "dynamics",
+                str(paper_config_path),
+                "--set",
+                "dynamics.model=contact-impact",
+                "--set",
+                "dynamics.revolutions_settle=1",
+                "--json",
+            ]
+        )
     data = json.loads(capsys.readouterr().out)
     assert data["dynamics_model"] == "contact-impact"
     assert data["impacts"] == 0
@@ -359,30 +328,12 @@ def test_cli_reports_impact_fields(capsys: pytest.CaptureFixture[str], paper_con
     assert 0 <= data["load_difference_rms_n"] <= data["load_difference_max_n"] < 1.0
 
 
-@pytest.mark.parametrize(
-    ("overrides", "compiled"),
-    [
-        ({}, False),  # one integration of settle + 1 = 3 revolutions
-        ({"dynamics.revolutions_settle": 20}, None),
-        ({"simulation.revolutions": 100, "simulation.dynamics_update": 1}, None),
-        ({"simulation.revolutions": 100, "simulation.dynamics_update": "adaptive"}, None),
-        ({"simulation.revolutions": 100, "simulation.dynamics_update": 50}, False),
-        ({"simulation.update_contour": False, "simulation.dynamics_update": 1}, False),
-    ],
-)
-def test_compiled_dynamics_follows_from_the_config_alone(
-    paper_config: Config, overrides: dict, compiled: bool | None
-) -> None:
-    settings = {"simulation.update_contour": True, "dynamics.revolutions_settle": 2, **overrides}
-    assert ci.compiled_dynamics(impact_config(paper_config, **settings)) is compiled
-
-
 def test_compiled_and_python_right_hand_sides_give_the_same_revolution(
     paper_config: Config,
 ) -> None:
     config = impact_config(paper_config, **{"dynamics.revolutions_settle": 0})
-    fast = ci.solve_contact_impact(config, compare=False, compiled=True)
-    reference = ci.solve_contact_impact(config, compare=False, compiled=False)
+    fast = solve(config, compare=False, compiled=True)
+    reference = solve(config, compare=False, compiled=False)
     np.testing.assert_array_equal(fast.load.load, reference.load.load)
     np.testing.assert_array_equal(fast.load.azimuth, reference.load.azimuth)
     assert fast.history.evaluations == reference.history.evaluations

@@ -1,13 +1,13 @@
 """The slider-crank's contact-impact right-hand side, compiled by numba.
 
-Imported by :mod:`jointwear.mechanism.impact_systems` on first use only (``import
-numba`` and loading the cached machine code cost a few tenths of a second, which a
-run without contact-impact dynamics should not pay). The physics is that of
-:meth:`~jointwear.mechanism.impact_systems.SliderCrankContactSystem.evaluate` and
-:meth:`~jointwear.mechanism.force_laws.JointContact.force` (point laws), which stay
-the readable reference: every expression below is written in the same order, so the
-compiled right-hand side gives the same bits (``math.hypot`` is CPython's algorithm,
-:func:`hypot`), and the integrator takes the same steps.
+Imported by :mod:`jointwear.mechanism.slider_crank.contact_impact` on first use only
+(``import numba`` and loading the cached machine code cost a few tenths of a second,
+which a run without contact-impact dynamics should not pay). The physics is that of
+:meth:`~jointwear.mechanism.slider_crank.contact_impact.SliderCrankContactSystem.evaluate`
+and :meth:`~jointwear.mechanism.impact.joint_contact.JointContact.force` (point laws),
+which stay the readable reference: every expression below is written in the same order,
+so the compiled right-hand side gives the same bits (``math.hypot`` is CPython's
+algorithm, :func:`hypot`), and the integrator takes the same steps.
 
 ``solve_ivp`` calls the right-hand side ~10^4 times per revolution; in Python each
 call costs a few microseconds of interpreter work, here a fraction of one. The

@@ -16,10 +16,11 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from jointwear.config import Config
-from jointwear.mechanism import SliderCrank
-from jointwear.mechanism import contact_impact as ci
+from jointwear.mechanism.impact.integrator import integrate_contacts
+from jointwear.mechanism.slider_crank.contact_impact import initial_state
 
-from .test_contact_impact import SEPARATING
+from ..joints import slider_crank_system
+from ..slider_crank.test_contact_impact import SEPARATING
 
 
 def reference_contacts(system, t_end: float, y0, *, in_contact: bool, method: str):
@@ -58,18 +59,15 @@ def reference_contacts(system, t_end: float, y0, *, in_contact: bool, method: st
 def separating(paper_config: Config):
     """The slider-crank whose pin separates twice a revolution, and its initial state."""
     config = paper_config.replace({"dynamics.model": "contact-impact", **SEPARATING})
-    system = ci.SliderCrankContactSystem(
-        SliderCrank.from_config(config.mechanism), config.mechanism.crank_speed,
-        ci.JointContact.from_config(config),
-    )  # fmt: skip
-    return system, ci._initial_state(system, 360)[0]
+    system = slider_crank_system(config)
+    return system, initial_state(system, 360)[0]
 
 
 @pytest.mark.parametrize("method", ["LSODA", "RK45"])
 def test_event_watch_equals_solve_ivp_events(paper_config: Config, method: str) -> None:
     system, y0 = separating(paper_config)
     t_end = 2 * math.pi / system.omega
-    history = ci.integrate_contacts(
+    history = integrate_contacts(
         system, (0.0, t_end), y0, in_contact=True, method=method,
         max_step=2 * math.pi / system.omega / 360,
     )  # fmt: skip
@@ -92,8 +90,8 @@ def test_kept_steps_give_the_same_states(paper_config: Config) -> None:
     period = 2 * math.pi / system.omega
     times = np.linspace(0.5 * period, 1.5 * period, 73)
     options = {"in_contact": True, "max_step": period / 360}
-    full = ci.integrate_contacts(system, (0.0, 1.5 * period), y0, **options)
-    sparse = ci.integrate_contacts(system, (0.0, 1.5 * period), y0, keep=times, **options)
+    full = integrate_contacts(system, (0.0, 1.5 * period), y0, **options)
+    sparse = integrate_contacts(system, (0.0, 1.5 * period), y0, keep=times, **options)
     assert [s.end for s in sparse.segments] == [s.end for s in full.segments]
     assert sparse.peak_times == full.peak_times
     for history in (full, sparse):

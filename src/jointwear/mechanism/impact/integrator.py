@@ -1,21 +1,20 @@
-r"""Integration of a contact system through its contact events (``[dynamics]`` settings).
+r"""Integration of a contact system through its contact events.
 
-A contact system (:class:`ContactSystem`: the slider-crank or the free pin of
-:mod:`jointwear.mechanism.impact_systems`, the four-bar of
-:mod:`jointwear.mechanism.four_bar`) has a state ``y``, a right-hand side and a
-signed gap between pin and bushing wall, positive while they overlap.
+A contact system (:class:`ContactSystem`: the slider-crank's
+:class:`~jointwear.mechanism.slider_crank.contact_impact.SliderCrankContactSystem`, the
+four-bar's :class:`~jointwear.mechanism.four_bar.contact_impact.FourBarContactSystem`,
+the free pin of :mod:`jointwear.mechanism.impact.free_pin`) has a state ``y``, a
+right-hand side and a signed gap between pin and bushing wall, positive while they
+overlap.
 
-Integration
------------
 ``scipy.integrate.solve_ivp`` (``dynamics.integrator``: LSODA by default,
 Radau/BDF for stiff contact, RK45/DOP853 explicit) with terminal events at the
 contact start (penetration rises through zero) and contact end (falls through
 zero); the integration restarts at each event, so no step straddles the change of
 force law, and the approach velocity ``delta'^-`` of the damping term is taken
 at the contact start. A non-terminal event at ``delta' = 0`` records each
-penetration maximum. ``dynamics.revolutions_settle`` revolutions are integrated
-first so that the start-up transient decays; the next revolution is sampled
-(dense output) at ``simulation.steps_per_revolution`` crank angles.
+penetration maximum. (:mod:`jointwear.mechanism.impact.revolution` integrates the
+settling revolutions and samples the next one.)
 
 The events are watched by the solver after every step (:class:`_EventWatch`) and
 their roots found on the step's dense output exactly as ``solve_ivp``'s own event
@@ -27,7 +26,6 @@ per-step NumPy cost.
 from __future__ import annotations
 
 import math
-import time as _time
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -37,133 +35,22 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import ConfigError, ConvergenceError
-from jointwear.mechanism import force_laws
-from jointwear.mechanism.force_laws import JointContact
+from jointwear.mechanism.impact.settings import INTEGRATORS
 
 if TYPE_CHECKING:
     from scipy.integrate import OdeSolution
 
-    from jointwear.config import DynamicsConfig
+    from jointwear.mechanism.impact.joint_contact import JointContact
 
 __all__ = [
-    "INTEGRATORS",
     "ContactHistory",
-    "ContactImpactSettings",
     "ContactSystem",
     "ContactSystemBase",
-    "SampledRevolution",
     "Segment",
     "integrate_contacts",
-    "integrate_revolution",
 ]
 
 FloatArray = NDArray[np.float64]
-
-#: ``solve_ivp`` methods accepted by ``dynamics.integrator``
-INTEGRATORS: tuple[str, ...] = ("LSODA", "Radau", "BDF", "RK45", "DOP853")
-
-
-@dataclass(frozen=True)
-class ContactImpactSettings:
-    """Settings of the contact–impact model (the ``[dynamics]`` keys it uses).
-
-    Parameters
-    ----------
-    force_law : str
-        Normal force law, one of :data:`~jointwear.mechanism.force_laws.FORCE_LAWS`.
-    restitution : float
-        Coefficient of restitution ``c_e``, ``0 < c_e <= 1`` [-].
-    friction_coefficient : float
-        Coulomb coefficient ``mu >= 0`` [-].
-    friction_velocity_tolerance : float
-        ``v_0`` of the friction ramp: no friction below this slip speed [m/s].
-    friction_velocity_full : float, optional
-        ``v_1 > v_0``: full friction above this slip speed [m/s]; default ``2 v_0``.
-    impact_velocity_floor : float
-        Lower bound of the approach velocity ``delta'^-`` in the damping term
-        (a contact that starts with a vanishing approach velocity would have
-        unbounded damping) [m/s].
-    integrator : str
-        ``solve_ivp`` method, one of :data:`INTEGRATORS`.
-    rtol : float
-        Relative tolerance of the integrator [-].
-    atol : float
-        Absolute tolerance of the integrator, on every state component (SI) [-].
-    revolutions_settle : int
-        Revolutions integrated before the recorded one [-].
-    max_step : float, optional
-        Largest integrator step [s]; default one sampling step ``2 pi / (N omega)``.
-    """
-
-    force_law: str = "lankarani-nikravesh"
-    restitution: float = 0.9
-    friction_coefficient: float = 0.0
-    friction_velocity_tolerance: float = 1e-4
-    friction_velocity_full: float | None = None
-    impact_velocity_floor: float = 1e-3
-    integrator: str = "LSODA"
-    rtol: float = 1e-8
-    atol: float = 1e-10
-    revolutions_settle: int = 2
-    max_step: float | None = None
-
-    def __post_init__(self) -> None:
-        if self.force_law not in force_laws.FORCE_LAWS:
-            raise ConfigError(
-                f"dynamics.force_law: unknown force law {self.force_law!r}; choose from "
-                + ", ".join(repr(name) for name in force_laws.FORCE_LAWS)
-            )
-        force_laws.hysteresis_factor(self.force_law, self.restitution)  # validates c_e
-        if not (math.isfinite(self.friction_coefficient) and self.friction_coefficient >= 0):
-            raise ConfigError(
-                f"dynamics.friction_coefficient: must be >= 0, got {self.friction_coefficient!r}"
-            )
-        if not self.friction_velocity_tolerance > 0:
-            raise ConfigError("dynamics.friction_velocity_tolerance: must be > 0")
-        if (
-            self.friction_velocity_full is not None
-            and not self.friction_velocity_full > self.friction_velocity_tolerance
-        ):
-            raise ConfigError(
-                "dynamics.friction_velocity_full: must be > dynamics.friction_velocity_tolerance"
-            )
-        if not self.impact_velocity_floor > 0:
-            raise ConfigError("dynamics.impact_velocity_floor: must be > 0")
-        if self.integrator not in INTEGRATORS:
-            raise ConfigError(
-                f"dynamics.integrator: {self.integrator!r} is not allowed; choose from "
-                + ", ".join(repr(name) for name in INTEGRATORS)
-            )
-        if not 0 < self.rtol < 1 or not self.atol > 0:
-            raise ConfigError("dynamics.rtol, dynamics.atol: need 0 < rtol < 1 and atol > 0")
-        if self.revolutions_settle < 0:
-            raise ConfigError("dynamics.revolutions_settle: must be >= 0")
-        if self.max_step is not None and not self.max_step > 0:
-            raise ConfigError("dynamics.max_step: must be > 0")
-
-    @property
-    def friction_full_speed(self) -> float:
-        """``v_1`` of the friction ramp [m/s]."""
-        if self.friction_velocity_full is not None:
-            return self.friction_velocity_full
-        return 2.0 * self.friction_velocity_tolerance
-
-    @classmethod
-    def from_config(cls, dynamics: DynamicsConfig) -> ContactImpactSettings:
-        """Build from the validated ``[dynamics]`` section."""
-        return cls(
-            force_law=dynamics.force_law,
-            restitution=dynamics.restitution,
-            friction_coefficient=dynamics.friction_coefficient,
-            friction_velocity_tolerance=dynamics.friction_velocity_tolerance,
-            friction_velocity_full=dynamics.friction_velocity_full,
-            impact_velocity_floor=dynamics.impact_velocity_floor,
-            integrator=dynamics.integrator,
-            rtol=dynamics.rtol,
-            atol=dynamics.atol,
-            revolutions_settle=dynamics.revolutions_settle,
-            max_step=dynamics.max_step,
-        )
 
 
 # ------------------------------------------------------------------ systems
@@ -185,6 +72,12 @@ class ContactSystem(Protocol):
 
     def gap_rate(self, t: float, y: FloatArray) -> float:
         """Rate of the gap [m/s]."""
+
+    def gap_and_rate(self, t: float, y: FloatArray) -> tuple[float, float]:
+        """:meth:`gap` and :meth:`gap_rate` together."""
+
+    def rhs_function(self, impact_velocity: float) -> Callable[[float, FloatArray], FloatArray]:
+        """``f(t, y)`` of the integrator for a contact with approach velocity [m/s]."""
 
 
 class ContactSystemBase:
@@ -492,6 +385,58 @@ def _integrate_segment(
     return _Part(float(ts[-1]), solution, evaluations, peaks, event, None)
 
 
+def _append_part(
+    history: ContactHistory,
+    system: ContactSystem,
+    part: _Part,
+    start: float,
+    in_contact: bool,
+    impact_velocity: float,
+    method: str,
+) -> None:
+    """Add one integrated segment, its right-hand-side count and its penetration maxima."""
+    history.evaluations += part.evaluations
+    if part.failed is not None:
+        raise ConvergenceError(
+            f"dynamics.integrator: {method} failed at t = {start:.6g} s "
+            f"({part.failed}); try dynamics.integrator = 'Radau' or looser "
+            f"dynamics.rtol/atol"
+        )
+    history.segments.append(
+        Segment(
+            start, part.end, part.solution, in_contact,
+            impact_velocity if in_contact else math.nan,
+        )
+    )  # fmt: skip
+    for t_peak, y_peak in part.peaks:
+        history.peak_times.append(t_peak)
+        history.peak_penetrations.append(system.gap(t_peak, y_peak))
+
+
+class _EventCount:
+    """Contact events so far; refuses chattering (events piling up at one instant)."""
+
+    def __init__(self, max_events: int) -> None:
+        self.max_events = max_events
+        self.events = 0
+        self.stalled = 0
+
+    def count(self, start: float, t_event: float) -> None:
+        """Count the event at ``t_event`` that ends a segment begun at ``start`` [s]."""
+        self.events += 1
+        stalled = t_event - start <= 1e-14 * max(1.0, abs(start))
+        self.stalled = self.stalled + 1 if stalled else 0
+        if self.stalled > 100:
+            raise ConvergenceError(
+                f"dynamics: contact events pile up at t = {t_event:.9g} s (grazing contact or "
+                f"chattering); loosen dynamics.rtol or raise dynamics.impact_velocity_floor"
+            )
+        if self.events > self.max_events:
+            raise ConvergenceError(
+                f"dynamics: more than {self.max_events} contact events before t = {t_event:.9g} s"
+            )
+
+
 def integrate_contacts(
     system: ContactSystem,
     t_span: tuple[float, float],
@@ -512,7 +457,8 @@ def integrate_contacts(
     Parameters
     ----------
     system : ContactSystem
-        :class:`SliderCrankContactSystem` or :class:`FreePinSystem`.
+        E.g. :class:`~jointwear.mechanism.slider_crank.contact_impact.SliderCrankContactSystem`
+        or :class:`~jointwear.mechanism.impact.free_pin.FreePinSystem`.
     t_span : tuple of float
         ``(t_0, t_end)`` [s].
     y0 : array_like
@@ -550,51 +496,24 @@ def integrate_contacts(
     """
     if method not in INTEGRATORS:
         raise ConfigError(f"dynamics.integrator: {method!r} is not one of {INTEGRATORS}")
-    contact = system.contact
-    floor = contact.impact_velocity_floor
+    floor = system.contact.impact_velocity_floor
     t, t_end = float(t_span[0]), float(t_span[1])
     y = np.asarray(y0, dtype=float).copy()
     v_imp = floor if not math.isfinite(impact_velocity) else max(impact_velocity, floor)
     history = ContactHistory()
-
-    gap_rate = system.gap_rate
     kept = None if keep is None else sorted(float(v) for v in np.ravel(keep))
-    stalled = 0
-    events = 0
+    events = _EventCount(max_events)
     while t < t_end:
-        velocity = v_imp
-        fun = system.rhs_function(velocity)
+        fun = system.rhs_function(v_imp)
         part = _integrate_segment(
             system, fun, t, t_end, y, in_contact, method, rtol, atol, max_step, kept
         )
-        history.evaluations += part.evaluations
-        if part.failed is not None:
-            raise ConvergenceError(
-                f"dynamics.integrator: {method} failed at t = {t:.6g} s "
-                f"({part.failed}); try dynamics.integrator = 'Radau' or looser "
-                f"dynamics.rtol/atol"
-            )
-        history.segments.append(
-            Segment(t, part.end, part.solution, in_contact, velocity if in_contact else math.nan)
-        )
-        for t_peak, y_peak in part.peaks:
-            history.peak_times.append(t_peak)
-            history.peak_penetrations.append(system.gap(t_peak, y_peak))
+        _append_part(history, system, part, t, in_contact, v_imp, method)
         if part.event is None:
             break
         t_event, y = part.end, part.event
-        events += 1
-        stalled = stalled + 1 if t_event - t <= 1e-14 * max(1.0, abs(t)) else 0
-        if stalled > 100:
-            raise ConvergenceError(
-                f"dynamics: contact events pile up at t = {t_event:.9g} s (grazing contact or "
-                f"chattering); loosen dynamics.rtol or raise dynamics.impact_velocity_floor"
-            )
-        if events > max_events:
-            raise ConvergenceError(
-                f"dynamics: more than {max_events} contact events before t = {t_event:.9g} s"
-            )
-        rate = gap_rate(t_event, y)
+        events.count(t, t_event)
+        rate = system.gap_rate(t_event, y)
         if in_contact:
             history.separation_times.append(t_event)
             history.separation_velocities.append(-rate)
@@ -610,164 +529,3 @@ def integrate_contacts(
         in_contact = not in_contact
         t = t_event
     return history
-
-
-# ------------------------------------------------------------------ sampling
-
-
-@dataclass(frozen=True, eq=False)
-class SampledRevolution:
-    """A contact system integrated through the settling revolutions, one sampled.
-
-    Attributes
-    ----------
-    history : ContactHistory
-        Full integration record.
-    times : ndarray, shape (N + 1,)
-        Sample times of the recorded revolution and its end [s].
-    states : ndarray, shape (N + 1, n_state)
-        States at ``times``.
-    records : list of dict
-        ``system.evaluate`` at the first ``N`` samples.
-    step_lost : ndarray of bool, shape (N,)
-        Steps with free flight inside them.
-    impacts : int
-        Contact starts in the recorded revolution [-].
-    free_flight_fraction : float
-        Share of the recorded revolution without penetration [-].
-    max_penetration : float
-        Largest penetration in the recorded revolution [m].
-    peak_load : float
-        Largest normal contact force, samples and penetration maxima [N].
-    record_start : float
-        Start of the recorded revolution [s].
-    runtime : float
-        Wall-clock time of the integration [s].
-    """
-
-    history: ContactHistory
-    times: FloatArray
-    states: FloatArray
-    records: list[dict[str, Any]]
-    step_lost: NDArray[np.bool_]
-    impacts: int
-    free_flight_fraction: float
-    max_penetration: float
-    peak_load: float
-    record_start: float
-    runtime: float
-
-    def column(self, key: str) -> FloatArray:
-        """One ``evaluate`` output over the ``N`` samples."""
-        return np.array([r[key] for r in self.records])
-
-
-def integrate_revolution(
-    system: Any,
-    y0: ArrayLike,
-    settings: ContactImpactSettings,
-    steps: int,
-    in_contact: bool = True,
-    dense: bool = True,
-) -> SampledRevolution:
-    """Integrate a crank-driven contact system and sample its last revolution.
-
-    Parameters
-    ----------
-    system : ContactSystem
-        A system with ``omega`` (crank speed [rad/s]) and ``evaluate(t, y,
-        impact_velocity)`` returning ``normal_force`` and ``penetration`` (e.g.
-        :class:`SliderCrankContactSystem`).
-    y0 : array_like
-        State at ``t = 0`` (crank angle 0).
-    settings : ContactImpactSettings
-        Integrator settings and ``revolutions_settle``.
-    steps : int
-        Samples ``N`` per revolution [-].
-    in_contact : bool
-        Whether the pin penetrates the wall at ``t = 0``.
-    dense : bool
-        Keep the dense output of every step in the history. ``False``: only of the
-        steps holding a sample, a penetration maximum or a segment's end (``keep=``
-        of :func:`integrate_contacts`: a third less time, the same samples to the
-        bit); the history's :meth:`~ContactHistory.state` then answers at those
-        times only.
-
-    Returns
-    -------
-    SampledRevolution
-    """
-    omega = system.omega
-    period = 2.0 * math.pi / omega
-    record_start = settings.revolutions_settle * period
-    max_step = settings.max_step if settings.max_step is not None else period / steps
-    # samples of the recorded revolution, plus its end (for the last increment)
-    phi = 2.0 * np.pi * np.arange(steps) / steps
-    times = record_start + np.append(phi, 2.0 * np.pi) / omega
-    started = _time.perf_counter()
-    history = integrate_contacts(
-        system,
-        (0.0, record_start + period),
-        y0,
-        in_contact=in_contact,
-        method=settings.integrator,
-        rtol=settings.rtol,
-        atol=settings.atol,
-        max_step=max_step,
-        keep=None if dense else times,
-    )
-    runtime = _time.perf_counter() - started
-    states, index = history.state(times)
-    records = [
-        system.evaluate(float(t), y, history.segments[k].impact_velocity)
-        for t, y, k in zip(times[:-1], states[:-1], index[:-1], strict=True)
-    ]
-    record_end = record_start + period
-    free = history.free_time(record_start, record_end)
-    impacts = int(
-        np.sum(
-            (np.array(history.impact_times) >= record_start)
-            & (np.array(history.impact_times) < record_end)
-        )
-    )
-    # free flight inside each sampling step
-    step_lost = np.zeros(steps, dtype=bool)
-    width = period / steps
-    for seg in history.segments:
-        if seg.in_contact or seg.end <= record_start or seg.start >= record_end:
-            continue
-        first = max(math.floor((seg.start - record_start) / width), 0)
-        last = min(math.ceil((seg.end - record_start) / width), steps)
-        step_lost[first:last] = True
-    peak_times = [t for t in history.peak_times if record_start <= t <= record_end]
-    peaks = [
-        p
-        for t, p in zip(history.peak_times, history.peak_penetrations, strict=True)
-        if record_start <= t <= record_end
-    ]
-    sampled = np.array([r["penetration"] for r in records])
-    max_penetration = float(max([*peaks, float(sampled.max())]))
-    # the largest contact force: impacts peak between samples, near the penetration maxima
-    peak_load = float(normal_max := np.max([r["normal_force"] for r in records]))
-    if peak_times:
-        peak_states, peak_index = history.state(peak_times)
-        peak_load = max(
-            normal_max,
-            *(
-                system.evaluate(t, y, history.segments[k].impact_velocity)["normal_force"]
-                for t, y, k in zip(peak_times, peak_states, peak_index, strict=True)
-            ),
-        )
-    return SampledRevolution(
-        history=history,
-        times=times,
-        states=states,
-        records=records,
-        step_lost=step_lost,
-        impacts=impacts,
-        free_flight_fraction=free / period,
-        max_penetration=max_penetration,
-        peak_load=float(peak_load),
-        record_start=record_start,
-        runtime=runtime,
-    )

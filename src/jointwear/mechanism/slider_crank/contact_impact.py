@@ -1,4 +1,12 @@
-r"""Equations of motion of the contact systems: the slider-crank with a free pin, a free pin.
+r"""Contact–impact dynamics of the slider–crank: the pin moves freely in the clearance.
+
+The massless-link model (:mod:`jointwear.mechanism.slider_crank.massless_link`) assumes
+that the pin never leaves the bushing wall. Here the assumption is dropped: pin and
+bushing are connected only through a contact force that exists while they overlap
+(:class:`~jointwear.mechanism.impact.joint_contact.JointContact`), so the pin can
+separate, fly across the clearance and hit the wall again. The integration through
+the contact events and the sampled revolution are shared with every mechanism
+(:mod:`jointwear.mechanism.impact`).
 
 Generalized coordinates
 -----------------------
@@ -33,7 +41,7 @@ bushing), ``t = (-n_y, n_x)`` and ``rho = R_p`` when the bushing is in the slide
 
 (moments about the accelerating point ``B``; ``a_B = -omega^2 B``), with
 ``J = F_N n + F_T t``: normal force ``F_N`` from ``dynamics.force_law``
-(:mod:`jointwear.mechanism.force_laws`) and friction
+(:mod:`jointwear.mechanism.impact.force_laws`) and friction
 ``F_T = mu c_d(v_T) F_N sign(v_T)``, ``v_T = e' . t + rho theta'`` the slip of the
 rod-side surface over the slider-side one. The crank torque that keeps ``omega``
 constant is, as in the massless-link model,
@@ -42,10 +50,17 @@ constant is, as in the massless-link model,
 ``E(t) - E(0) = W(t) - dissipation`` can be checked
 (:meth:`SliderCrankContactSystem.energy`).
 
-The right-hand side runs compiled (numba, :mod:`jointwear.mechanism._impact_compiled`,
-imported on first use and cached on disk) for the point force laws; without numba, with
+The right-hand side runs compiled (numba,
+:mod:`jointwear.mechanism.slider_crank._contact_impact_kernel`, imported on first use
+and cached on disk) for the point force laws; without numba, with
 ``JOINTWEAR_NO_NUMBA=1`` or for the distributed laws, the Python methods below, which
 stay the readable reference, give the same numbers to the bit.
+
+Initial state
+-------------
+The massless-link solution at ``phi_1 = 0`` (rod angle, slider position and their
+rates), with the pin pushed into the wall by the static penetration of the
+massless-link load (:func:`initial_state`).
 """
 
 from __future__ import annotations
@@ -53,26 +68,41 @@ from __future__ import annotations
 import functools
 import math
 import os
+import warnings
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from jointwear.errors import ConfigError, ConvergenceError
-from jointwear.mechanism.force_laws import JointContact
-from jointwear.mechanism.impact_integrator import (
-    ContactHistory,
-    ContactSystemBase,
-    integrate_contacts,
+from jointwear.errors import ConfigError, JointwearError
+from jointwear.geometry.contour import BushingContour
+from jointwear.mechanism.cycle import LoadCycle
+from jointwear.mechanism.impact.integrator import ContactSystemBase
+from jointwear.mechanism.impact.joint_contact import JointContact
+from jointwear.mechanism.impact.revolution import (
+    ContactImpactSolution,
+    integrate_revolution,
+    sampled_solution,
 )
-from jointwear.mechanism.slider_crank import SliderCrank
+from jointwear.mechanism.impact.settings import ContactImpactSettings
+from jointwear.mechanism.inputs import MechanismInputs
+from jointwear.mechanism.slider_crank.dynamics import SliderCrank, inverse_dynamics
+from jointwear.mechanism.slider_crank.joint_load import slider_crank_cycle
+from jointwear.mechanism.slider_crank.kinematics import ideal_motion
+from jointwear.mechanism.slider_crank.massless_link import (
+    massless_link_load,
+    solve_massless_link,
+)
 
 __all__ = [
-    "FreePinSystem",
     "SliderCrankContactSystem",
-    "free_pin_impact",
+    "contact_impact_load",
     "impact_kernel",
+    "initial_state",
+    "slider_crank_contact",
+    "solve_contact_impact",
+    "worn_contour",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -97,10 +127,10 @@ def impact_kernel() -> Any:
 @functools.cache
 def _load_kernel() -> Any:
     try:
-        from jointwear.mechanism import _impact_compiled
+        from jointwear.mechanism.slider_crank import _contact_impact_kernel
     except ImportError:
         return None
-    return _impact_compiled
+    return _contact_impact_kernel
 
 
 class SliderCrankContactSystem(ContactSystemBase):
@@ -146,7 +176,8 @@ class SliderCrankContactSystem(ContactSystemBase):
         self._kernel = kernel
         if kernel is not None:
             self._parameters = self._kernel_parameters()
-            self._wear = contact._wear if contact._wear is not None else np.empty(0)
+            wear = contact.wear_profile
+            self._wear = wear if wear is not None else np.empty(0)
 
     @property
     def compiled(self) -> bool:
@@ -154,7 +185,7 @@ class SliderCrankContactSystem(ContactSystemBase):
         return self._kernel is not None
 
     def _kernel_parameters(self) -> FloatArray:
-        """The parameter array of the compiled right-hand side (``_impact_compiled.P_*``)."""
+        """The parameter array of the compiled right-hand side (``_contact_impact_kernel.P_*``)."""
         m, c, k = self.mechanism, self.contact, self._kernel
         values = {
             k.P_CRANK: m.crank_length,
@@ -344,98 +375,195 @@ class SliderCrankContactSystem(ContactSystemBase):
         return kinetic + gravity + self.spring_energy(x3) + self.contact.potential(ex, ey)
 
 
-class FreePinSystem(ContactSystemBase):
-    """A free pin of mass ``m`` inside a fixed bushing (to test one impact in isolation).
-
-    State ``y = (e_x, e_y, e'_x, e'_y, W)`` with ``W`` the work of the constant
-    external force [J]. The bushing does not move and the pin does not spin.
+def slider_crank_contact(
+    inputs: MechanismInputs,
+    settings: ContactImpactSettings,
+    contour: BushingContour | None = None,
+) -> JointContact:
+    """The contact force model of the slider-crank's joint.
 
     Parameters
     ----------
-    mass : float
-        Pin mass [kg].
-    contact : JointContact
-        Contact force model.
-    external_force : tuple of float
-        Constant force on the pin, e.g. its weight [N].
+    inputs : MechanismInputs
+        Uses ``mechanism.bushing_body``, the joint and its elastic law.
+    settings : ContactImpactSettings
+        The ``[dynamics]`` settings of the contact–impact model.
+    contour : BushingContour, optional
+        Bushing contour (distributed laws, a worn bushing).
+
+    Raises
+    ------
+    ConfigError
+        If ``inputs`` carries no elastic law.
     """
-
-    def __init__(
-        self, mass: float, contact: JointContact, external_force: tuple[float, float] = (0.0, 0.0)
-    ) -> None:
-        self.mass = float(mass)
-        self.contact = contact
-        self.external_force = (float(external_force[0]), float(external_force[1]))
-
-    def clearance_state(self, t: float, y: FloatArray) -> tuple[float, float, float, float]:
-        return float(y[0]), float(y[1]), float(y[2]), float(y[3])
-
-    def rhs(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:
-        ex, ey, vx, vy = (float(v) for v in y[:4])
-        jx, jy, *_ = self.contact.force(ex, ey, vx, vy, 0.0, impact_velocity)
-        fx, fy = self.external_force
-        return np.array([vx, vy, (fx - jx) / self.mass, (fy - jy) / self.mass, fx * vx + fy * vy])
-
-    def energy(self, t: float, y: ArrayLike) -> float:
-        """Kinetic + contact elastic energy [J]."""
-        ex, ey, vx, vy = (float(v) for v in np.asarray(y, dtype=float)[:4])
-        return 0.5 * self.mass * (vx * vx + vy * vy) + self.contact.potential(ex, ey)
+    if inputs.elastic is None:
+        raise ConfigError(
+            "dynamics.model: the contact-impact model needs the joint's elastic law "
+            "(jointwear.mechanism.stage.mechanism_inputs builds it)"
+        )
+    joint = inputs.joint
+    # rho: from the rod-side joint centre C to the contact point
+    arm = joint.pin_radius if inputs.mechanism.bushing_body == "slider" else (-joint.bushing_radius)
+    return JointContact.for_joint(settings, inputs.elastic, joint, arm, contour)
 
 
-def free_pin_impact(
-    contact: JointContact,
-    mass: float,
-    impact_velocity: float,
-    direction: float = 0.0,
-    method: str = "LSODA",
-    rtol: float = 1e-10,
-    atol: float = 1e-14,
-) -> tuple[float, ContactHistory]:
-    """One impact of a free pin on the bushing wall; effective restitution.
-
-    The pin starts at the bushing centre moving along ``direction`` at
-    ``impact_velocity`` and is integrated until it leaves the wall again.
+def initial_state(system: SliderCrankContactSystem, steps: int) -> tuple[FloatArray, float]:
+    """State at ``phi_1 = 0``: massless-link motion, pin pressed in by the static load.
 
     Parameters
     ----------
-    contact : JointContact
-        Contact force model (its clearance and law).
-    mass : float
-        Pin mass [kg].
-    impact_velocity : float
-        Approach velocity [m/s], > 0.
-    direction : float
-        Direction of flight [rad].
-    method : str
-        ``solve_ivp`` method.
-    rtol, atol : float
-        Integrator tolerances.
+    system : SliderCrankContactSystem
+        The system to start.
+    steps : int
+        Steps per revolution of the massless-link solution it starts from [-].
 
     Returns
     -------
-    restitution : float
-        ``-delta'^+ / delta'^-``: normal separation velocity over approach
-        velocity [-].
-    history : ContactHistory
-        The integration record.
+    state : ndarray, shape (5,)
+        ``(theta, x_3, theta', x_3', 0)``.
+    direction : float
+        Direction of ``e`` [rad].
     """
-    system = FreePinSystem(mass, contact)
-    u = (math.cos(direction), math.sin(direction))
-    y0 = np.array([0.0, 0.0, impact_velocity * u[0], impact_velocity * u[1], 0.0])
-    gap = contact.clearance if not contact.distributed else contact._touch(direction)
-    flight = gap / impact_velocity
-    # generous bound on the contact duration (Hertz: 2.94 (m^2 / (K^2 v))^(1/5))
-    duration = 50.0 * (mass**2 / (contact.stiffness**2 * impact_velocity)) ** 0.2
-    history = integrate_contacts(
-        system,
-        (0.0, 2.0 * flight + duration),
-        y0,
-        in_contact=False,
-        method=method,
-        rtol=rtol,
-        atol=atol,
-        stop_after_separations=1,
+    m, omega = system.mechanism, system.omega
+    clearance = system.contact.clearance
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            solution = solve_massless_link(m, omega, clearance, steps)
+        motion, reaction = solution.motion, solution.reaction
+    except JointwearError:
+        motion = ideal_motion(np.array([0.0]), m.crank_length, m.rod_length, omega)
+        reaction = inverse_dynamics(motion, m)
+    jx, jy = float(reaction.force_x[0]), float(reaction.force_y[0])
+    load = math.hypot(jx, jy)
+    direction = math.atan2(jy, jx)
+    offset = system.contact.static_offset(load, direction)
+    ex, ey = offset * math.cos(direction), offset * math.sin(direction)
+    # loop closure at phi_1 = 0: l2 sin(theta) = e_y, x_3 = l1 + l2 cos(theta) - e_x
+    theta = math.asin(ey / m.rod_length)
+    x3 = m.crank_length + m.rod_length * math.cos(theta) - ex
+    state = np.array(
+        [
+            theta,
+            x3,
+            float(motion.rod_angular_velocity[0]),
+            float(motion.slider_velocity[0]),
+            0.0,
+        ]
     )
-    if not history.separation_times:
-        raise ConvergenceError("free pin: no separation within the integration window")
-    return history.separation_velocities[0] / history.impact_velocities[0], history
+    return state, direction
+
+
+def solve_contact_impact(
+    inputs: MechanismInputs,
+    contour: BushingContour | None = None,
+    compare: bool = True,
+    compiled: bool | None = None,
+) -> ContactImpactSolution:
+    """Integrate the contact–impact slider–crank and sample one settled revolution.
+
+    Parameters
+    ----------
+    inputs : MechanismInputs
+        The slider-crank's ``[mechanism]`` section, the joint and its elastic law, the
+        ``[dynamics]`` settings, the steps per revolution and whether the right-hand
+        side may run compiled.
+    contour : BushingContour, optional
+        Bushing contour for the distributed force laws (default: unworn circle).
+    compare : bool
+        Also run the massless-link model and report the load difference.
+    compiled : bool, optional
+        Run the compiled right-hand side where it can (``True``) or the Python one
+        (``False``); default: as ``inputs.compiled`` says
+        (:func:`jointwear.mechanism.stage.compiled_dynamics`). Both give the same bits.
+
+    Returns
+    -------
+    ContactImpactSolution
+
+    Raises
+    ------
+    ConvergenceError
+        If the integrator fails.
+    ConfigError
+        For inconsistent settings.
+    """
+    settings = ContactImpactSettings.from_config(inputs.dynamics)
+    mechanism = SliderCrank.from_config(inputs.mechanism)
+    omega = inputs.mechanism.crank_speed
+    steps = inputs.steps
+    contact = slider_crank_contact(inputs, settings, contour)
+    choice = inputs.compiled if compiled is None else (None if compiled else False)
+    system = SliderCrankContactSystem(mechanism, omega, contact, choice)
+    y0, _ = initial_state(system, max(steps, 64))
+    run = integrate_revolution(system, y0, settings, steps, dense=False)
+    states = run.states
+    theta_all = states[:, 0]
+    theta = theta_all[:-1]
+    force_x, force_y = run.column("force_x"), run.column("force_y")
+    load = slider_crank_cycle(
+        inputs.mechanism,
+        force_x,
+        force_y,
+        theta,
+        np.diff(theta_all),
+        states[:-1, 1],
+        run.column("crank_torque"),
+        normal_x=run.column("normal_x"),
+        normal_y=run.column("normal_y"),
+        load=run.column("normal_force"),
+        model="contact-impact",
+        lost_steps=run.step_lost,
+    )
+    return sampled_solution(
+        load, run, system, settings, (lambda: massless_link_load(inputs)) if compare else None
+    )
+
+
+def worn_contour(inputs: MechanismInputs, wear_depth: FloatArray | None) -> BushingContour | None:
+    """The worn bushing the pin meets, or ``None`` for an unworn one.
+
+    Parameters
+    ----------
+    inputs : MechanismInputs
+        The joint and ``mechanism.bushing_body``.
+    wear_depth : ndarray, shape (N,) or None
+        Wear depth of the bushing on the ``joint.nodes`` grid [m].
+
+    Raises
+    ------
+    ConfigError
+        If the bushing is in the rod end (it turns with the rod).
+    """
+    if wear_depth is None or not np.any(wear_depth):
+        return None
+    if inputs.mechanism.bushing_body != "slider":
+        raise ConfigError(
+            "simulation.dynamics_update: contact-impact on a worn bushing needs the bushing "
+            "on a body that does not turn (mechanism.bushing_body = 'slider')"
+        )
+    joint = inputs.joint
+    return BushingContour.from_wear_profile(joint.bushing_radius, wear_depth, joint.axial_length)
+
+
+def contact_impact_load(inputs: MechanismInputs, wear_depth: FloatArray | None = None) -> LoadCycle:
+    """Joint load over one settled revolution from the contact–impact model.
+
+    Parameters
+    ----------
+    inputs : MechanismInputs
+        As for :func:`solve_contact_impact`.
+    wear_depth : ndarray, shape (N,), optional
+        Wear depth of the bushing on the ``joint.nodes`` grid [m]: the pin meets
+        the worn contour. ``None``: the unworn bushing.
+
+    Returns
+    -------
+    LoadCycle
+        ``load`` is the normal contact force ``F_N`` (zero in free flight),
+        ``azimuth`` the contact normal in the bushing body's frame; the extras hold
+        the impacts, the free-flight fraction and the difference from the
+        massless-link load
+        (:meth:`~jointwear.mechanism.impact.revolution.ContactImpactSolution.summary`).
+    """
+    return solve_contact_impact(inputs, worn_contour(inputs, wear_depth)).load_cycle()

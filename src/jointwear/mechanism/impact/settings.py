@@ -1,0 +1,125 @@
+"""Settings of the contact–impact model: the ``[dynamics]`` keys it reads, checked.
+
+:class:`ContactImpactSettings` is what the force laws, the integrator and the sampled
+revolution of every contact system take from the ``[dynamics]`` section.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from jointwear.errors import ConfigError
+from jointwear.mechanism.impact.force_laws import FORCE_LAWS, hysteresis_factor
+
+if TYPE_CHECKING:
+    from jointwear.config import DynamicsConfig
+
+__all__ = ["INTEGRATORS", "ContactImpactSettings"]
+
+#: ``solve_ivp`` methods accepted by ``dynamics.integrator``
+INTEGRATORS: tuple[str, ...] = ("LSODA", "Radau", "BDF", "RK45", "DOP853")
+
+
+@dataclass(frozen=True)
+class ContactImpactSettings:
+    """Settings of the contact–impact model (the ``[dynamics]`` keys it uses).
+
+    Parameters
+    ----------
+    force_law : str
+        Normal force law, one of :data:`~jointwear.mechanism.impact.force_laws.FORCE_LAWS`.
+    restitution : float
+        Coefficient of restitution ``c_e``, ``0 < c_e <= 1`` [-].
+    friction_coefficient : float
+        Coulomb coefficient ``mu >= 0`` [-].
+    friction_velocity_tolerance : float
+        ``v_0`` of the friction ramp: no friction below this slip speed [m/s].
+    friction_velocity_full : float, optional
+        ``v_1 > v_0``: full friction above this slip speed [m/s]; default ``2 v_0``.
+    impact_velocity_floor : float
+        Lower bound of the approach velocity ``delta'^-`` in the damping term
+        (a contact that starts with a vanishing approach velocity would have
+        unbounded damping) [m/s].
+    integrator : str
+        ``solve_ivp`` method, one of :data:`INTEGRATORS`.
+    rtol : float
+        Relative tolerance of the integrator [-].
+    atol : float
+        Absolute tolerance of the integrator, on every state component (SI) [-].
+    revolutions_settle : int
+        Revolutions integrated before the recorded one [-].
+    max_step : float, optional
+        Largest integrator step [s]; default one sampling step ``2 pi / (N omega)``.
+    """
+
+    force_law: str = "lankarani-nikravesh"
+    restitution: float = 0.9
+    friction_coefficient: float = 0.0
+    friction_velocity_tolerance: float = 1e-4
+    friction_velocity_full: float | None = None
+    impact_velocity_floor: float = 1e-3
+    integrator: str = "LSODA"
+    rtol: float = 1e-8
+    atol: float = 1e-10
+    revolutions_settle: int = 2
+    max_step: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.force_law not in FORCE_LAWS:
+            raise ConfigError(
+                f"dynamics.force_law: unknown force law {self.force_law!r}; choose from "
+                + ", ".join(repr(name) for name in FORCE_LAWS)
+            )
+        hysteresis_factor(self.force_law, self.restitution)  # validates c_e
+        if not (math.isfinite(self.friction_coefficient) and self.friction_coefficient >= 0):
+            raise ConfigError(
+                f"dynamics.friction_coefficient: must be >= 0, got {self.friction_coefficient!r}"
+            )
+        if not self.friction_velocity_tolerance > 0:
+            raise ConfigError("dynamics.friction_velocity_tolerance: must be > 0")
+        if (
+            self.friction_velocity_full is not None
+            and not self.friction_velocity_full > self.friction_velocity_tolerance
+        ):
+            raise ConfigError(
+                "dynamics.friction_velocity_full: must be > dynamics.friction_velocity_tolerance"
+            )
+        if not self.impact_velocity_floor > 0:
+            raise ConfigError("dynamics.impact_velocity_floor: must be > 0")
+        if self.integrator not in INTEGRATORS:
+            raise ConfigError(
+                f"dynamics.integrator: {self.integrator!r} is not allowed; choose from "
+                + ", ".join(repr(name) for name in INTEGRATORS)
+            )
+        if not 0 < self.rtol < 1 or not self.atol > 0:
+            raise ConfigError("dynamics.rtol, dynamics.atol: need 0 < rtol < 1 and atol > 0")
+        if self.revolutions_settle < 0:
+            raise ConfigError("dynamics.revolutions_settle: must be >= 0")
+        if self.max_step is not None and not self.max_step > 0:
+            raise ConfigError("dynamics.max_step: must be > 0")
+
+    @property
+    def friction_full_speed(self) -> float:
+        """``v_1`` of the friction ramp [m/s]."""
+        if self.friction_velocity_full is not None:
+            return self.friction_velocity_full
+        return 2.0 * self.friction_velocity_tolerance
+
+    @classmethod
+    def from_config(cls, dynamics: DynamicsConfig) -> ContactImpactSettings:
+        """Build from the validated ``[dynamics]`` section."""
+        return cls(
+            force_law=dynamics.force_law,
+            restitution=dynamics.restitution,
+            friction_coefficient=dynamics.friction_coefficient,
+            friction_velocity_tolerance=dynamics.friction_velocity_tolerance,
+            friction_velocity_full=dynamics.friction_velocity_full,
+            impact_velocity_floor=dynamics.impact_velocity_floor,
+            integrator=dynamics.integrator,
+            rtol=dynamics.rtol,
+            atol=dynamics.atol,
+            revolutions_settle=dynamics.revolutions_settle,
+            max_step=dynamics.max_step,
+        )
