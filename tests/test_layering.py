@@ -55,6 +55,8 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         ),
     ),
     ("mechanism", ("jointwear.mechanism",)),
+    # film and asperity forces of a lubricated joint: what the contact stage will share
+    ("lubrication", ("jointwear.lubrication",)),
     # the exact and finite-element references are contact models (and registered as such);
     # the mechanism stage's entry from a Config hands the contact-impact force laws the
     # contact models' elastic laws

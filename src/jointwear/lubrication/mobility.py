@@ -1,0 +1,509 @@
+"""The finite-length journal bearing and Booker's mobility method.
+
+The film force of a bushing of any length is the solution of the two-dimensional
+Reynolds equation (:mod:`jointwear.lubrication.film`). In the dimensionless pressure
+``Pi`` with ``p = 6 mu (R/c)^2 m Pi`` and axial coordinate ``zeta = z / R``,
+
+.. math::
+
+    \\frac{\\partial}{\\partial\\theta}\\Big(H^3\\frac{\\partial\\Pi}{\\partial\\theta}\\Big)
+    + \\frac{\\partial}{\\partial\\zeta}\\Big(H^3\\frac{\\partial\\Pi}{\\partial\\zeta}\\Big)
+    = -\\sin(\\theta - \\beta),
+    \\qquad H = 1 + \\varepsilon\\cos\\theta,
+
+where the motion enters only through its size ``m`` and direction ``beta``:
+``eps omega_bar = m cos beta`` and ``2 deps/dt = m sin beta``. ``Pi`` is zero at both
+ends of the bushing (``zeta = +-L/(2R)``) and periodic in ``theta``. The full-film
+solution is ``cos beta Pi_w + sin beta Pi_s`` of two solutions per eccentricity;
+half-Sommerfeld cavitation keeps its positive part. The force is then
+
+.. math:: F = 6\\mu R^2 (R/c)^2\\, m\\, G(\\varepsilon, \\beta; L/D),
+          \\qquad G = \\iint \\Pi^+ (\\cos\\theta, \\sin\\theta)\\,d\\theta\\,d\\zeta .
+
+:func:`finite_bearing_force` solves the equation by finite differences (conservative
+second-order stencil on a grid uniform in Sommerfeld's angle, which crowds the nodes at
+the smallest film), tabulates ``G`` over the eccentricity and ``beta`` once per ``L/D``
+(cached) and interpolates it with cubic splines: thousands of states per call, any
+``L/D``. Its accuracy against closed forms is in ``docs/lubrication.md``.
+
+Booker's mobility method inverts the force law: given the load on the pin, it returns
+the velocity of the pin's centre. In a frame turning at the mean surface speed
+``(omega_pin + omega_bushing) / 2`` the film is a pure squeeze film, and
+
+.. math::
+
+    \\dot\\varepsilon = \\frac{|F|(c/R)^2}{\\mu L D} M_\\varepsilon, \\qquad
+    \\varepsilon\\Big(\\dot\\phi - \\frac{\\omega_{pin}+\\omega_{bushing}}{2}\\Big)
+      = \\frac{|F|(c/R)^2}{\\mu L D} M_\\phi,
+
+with the mobility vector ``M(eps, direction of the load)``. Here it is computed from
+the same force laws (short, long or finite length), so the mobility and the force
+models agree exactly. Goenka (1984) fitted closed forms to this finite-length mobility;
+jointwear computes it from the Reynolds equation instead, so its accuracy is measured
+rather than inherited from a fit.
+
+References
+----------
+.. [1] J. F. Booker, "Dynamically loaded journal bearings: mobility method of
+   solution", ASME J. Basic Eng. 87 (1965) 537-546.
+.. [2] J. F. Booker, "Dynamically loaded journal bearings: numerical application of the
+   mobility method", ASME J. Lubr. Technol. 93 (1971) 168-176.
+.. [3] P. K. Goenka, "Analytical curve fits for solution parameters of dynamically
+   loaded journal bearings", ASME J. Tribol. 106 (1984) 421-428.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import cache
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.integrate import simpson
+from scipy.interpolate import RegularGridInterpolator
+from scipy.optimize import elementwise
+from scipy.sparse import diags, identity, kron
+from scipy.sparse.linalg import splu
+
+from jointwear.geometry.angles import wrap_angle
+from jointwear.lubrication.film import (
+    FilmForce,
+    long_bearing_force,
+    short_bearing_force,
+)
+
+__all__ = [
+    "FILM_MODELS",
+    "CentreVelocity",
+    "Mobility",
+    "film_force",
+    "finite_bearing_force",
+    "journal_centre_velocity",
+    "mobility",
+]
+
+FloatArray = NDArray[np.float64]
+
+#: finite-difference grid: nodes around the bushing and over half its length
+ANGLE_NODES = 120
+AXIAL_CELLS = 16
+#: tabulated eccentricities eps = 1 - 10^-s, s uniform in [0, LOG_GAP_MAX] (eps <= 0.995);
+#: beyond, the force scaled by (1 - eps^2)^2.5 is held at its last tabulated value
+LOG_GAP_MAX = 2.3
+LOG_GAP_NODES = 40
+DIRECTION_NODES = 72
+#: eccentricity below which the mobility uses this value (the direction of e is undefined)
+SMALLEST_ECCENTRICITY = 1e-6
+
+
+def inverse_sommerfeld_angle(gamma: FloatArray, eps: float) -> FloatArray:
+    """``theta`` of a Sommerfeld angle ``gamma`` (inverse of :func:`sommerfeld_angle`) [rad]."""
+    b = eps / (1.0 + np.sqrt(1.0 - eps * eps))
+    return gamma + 2.0 * np.arctan(b * np.sin(gamma) / (1.0 - b * np.cos(gamma)))
+
+
+def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Full-film solutions ``Pi_w`` (``beta = 0``) and ``Pi_s`` (``beta = pi/2``) on the grid.
+
+    Parameters
+    ----------
+    eps : float
+        Eccentricity ratio [-].
+    half_length : float
+        ``L / (2R)`` [-].
+
+    Returns
+    -------
+    tuple of ndarray
+        ``theta`` of the angle nodes [rad], and ``Pi_w``, ``Pi_s`` of shape
+        ``(AXIAL_CELLS + 1, ANGLE_NODES)`` from the middle (row 0) to the end [-].
+    """
+    step = 2.0 * np.pi / ANGLE_NODES
+    gamma = step * np.arange(ANGLE_NODES)
+    root = np.sqrt(1.0 - eps * eps)
+
+    def stretch(g: FloatArray) -> FloatArray:  # d theta / d gamma
+        return root / (1.0 - eps * np.cos(g))
+
+    def film(g: FloatArray) -> FloatArray:
+        return 1.0 + eps * np.cos(inverse_sommerfeld_angle(g, eps))
+
+    mid = gamma + 0.5 * step
+    flux = film(mid) ** 3 / stretch(mid) / step**2  # at gamma_{i+1/2}
+    around = diags(-(flux + np.roll(flux, 1))) + diags(flux[:-1], 1) + diags(flux[:-1], -1)
+    around = around + diags([flux[-1]], ANGLE_NODES - 1) + diags([flux[-1]], 1 - ANGLE_NODES)
+    dz = half_length / AXIAL_CELLS
+    axial = diags(
+        [-2.0 * np.ones(AXIAL_CELLS), np.ones(AXIAL_CELLS - 1), np.ones(AXIAL_CELLS - 1)],
+        [0, 1, -1],
+    )
+    axial = axial.tolil()
+    axial[0, 1] = 2.0  # symmetric about the middle of the bushing
+    weight = stretch(gamma) * film(gamma) ** 3 / dz**2
+    matrix = kron(identity(AXIAL_CELLS), around) + kron(axial.tocsr(), diags(weight))
+    theta = inverse_sommerfeld_angle(gamma, eps)
+    solver = splu(matrix.tocsc())
+    fields = []
+    for source in (-np.sin(theta), np.cos(theta)):
+        solution = solver.solve(np.tile(stretch(gamma) * source, AXIAL_CELLS))
+        field = np.zeros((AXIAL_CELLS + 1, ANGLE_NODES))
+        field[:-1] = solution.reshape(AXIAL_CELLS, ANGLE_NODES)
+        fields.append(field)
+    return theta, fields[0], fields[1]
+
+
+def tabulated_forces(eps: float, half_length: float, directions: FloatArray) -> FloatArray:
+    """``G_r, G_t`` of the positive film for every direction ``beta``, shape ``(2, n)`` [-]."""
+    theta, wedge, squeeze = reynolds_solutions(eps, half_length)
+    step = 2.0 * np.pi / ANGLE_NODES
+    stretch = np.sqrt(1.0 - eps * eps) / (1.0 - eps * np.cos(step * np.arange(ANGLE_NODES)))
+    pressure = (
+        np.cos(directions)[:, None, None] * wedge + np.sin(directions)[:, None, None] * squeeze
+    )
+    positive = np.maximum(pressure, 0.0) * stretch * step
+    axial = np.linspace(0.0, half_length, AXIAL_CELLS + 1)
+    over_angle = np.stack([positive @ np.cos(theta), positive @ np.sin(theta)])
+    return 2.0 * simpson(over_angle, x=axial, axis=-1)
+
+
+@cache
+def force_table(length_to_diameter: float) -> RegularGridInterpolator:
+    """Interpolant of ``(1 - eps^2)^2.5 G(eps, beta)`` over ``(s, beta)``, ``eps = 1 - 10^-s``.
+
+    Built once per ``L/D`` (about 0.3 s) and cached.
+
+    Parameters
+    ----------
+    length_to_diameter : float
+        ``L / D`` [-].
+    """
+    log_gap = np.linspace(0.0, LOG_GAP_MAX, LOG_GAP_NODES)
+    directions = np.linspace(-np.pi, np.pi, DIRECTION_NODES, endpoint=False)
+    values = np.empty((LOG_GAP_NODES, DIRECTION_NODES, 2))
+    for k, s in enumerate(log_gap):
+        eps = 1.0 - 10.0**-s
+        values[k] = (
+            tabulated_forces(eps, length_to_diameter, directions).T * (1.0 - eps * eps) ** 2.5
+        )
+    # three directions repeated on each side make the spline periodic in beta
+    pad = 3
+    padded = np.concatenate([values[:, -pad:], values, values[:, :pad]], axis=1)
+    axis = np.concatenate(
+        [directions[-pad:] - 2.0 * np.pi, directions, directions[:pad] + 2.0 * np.pi]
+    )
+    return RegularGridInterpolator((log_gap, axis), padded, method="cubic")
+
+
+def finite_bearing_force(
+    radius: ArrayLike,
+    length: ArrayLike,
+    clearance: ArrayLike,
+    viscosity: ArrayLike,
+    eccentricity_ratio: ArrayLike,
+    eccentricity_rate: ArrayLike,
+    wedge_speed: ArrayLike,
+) -> FilmForce:
+    """Film force of a bushing of finite length, half-Sommerfeld cavitation [N].
+
+    .. math:: F = 6\\mu R^2 (R/c)^2\\, m\\, G(\\varepsilon, \\beta; L/D), \\qquad
+              m = \\sqrt{(\\varepsilon\\bar\\omega)^2 + (2\\dot\\varepsilon)^2},\\;
+              \\beta = \\operatorname{atan2}(2\\dot\\varepsilon, \\varepsilon\\bar\\omega)
+
+    with ``G`` the tabulated numerical solution of the Reynolds equation (module text).
+    Tends to :func:`~jointwear.lubrication.film.short_bearing_force` for small ``L/D``
+    and to :func:`~jointwear.lubrication.film.long_bearing_force` for large ``L/D``.
+    Tabulated for ``eps <= 0.995``; beyond, ``(1 - eps^2)^2.5 G`` is held at its value
+    there (the growth of the squeeze film).
+
+    Parameters
+    ----------
+    radius : array_like
+        Pin radius ``R`` [m].
+    length : array_like
+        Bushing length ``L`` [m].
+    clearance : array_like
+        Radial clearance ``c`` [m].
+    viscosity : array_like
+        Dynamic viscosity ``mu`` [Pa s].
+    eccentricity_ratio : array_like
+        ``eps`` in [0, 1) [-].
+    eccentricity_rate : array_like
+        ``deps/dt`` [1/s].
+    wedge_speed : array_like
+        ``omega_bar = omega_pin + omega_bushing - 2 dphi/dt`` [rad/s].
+
+    Returns
+    -------
+    FilmForce
+        Radial and tangential components on the pin [N].
+    """
+    radius_, length_, clearance_, viscosity_, eps, rate, wedge = np.broadcast_arrays(
+        *(
+            np.asarray(a, dtype=float)
+            for a in (
+                radius,
+                length,
+                clearance,
+                viscosity,
+                eccentricity_ratio,
+                eccentricity_rate,
+                wedge_speed,
+            )
+        )
+    )
+    size = np.hypot(eps * wedge, 2.0 * rate)
+    direction = np.arctan2(2.0 * rate, eps * wedge)
+    shape = dimensionless_finite(eps, direction, length_ / (2.0 * radius_))
+    scale = 6.0 * viscosity_ * radius_**2 * (radius_ / clearance_) ** 2 * size
+    return FilmForce(scale * shape[0], scale * shape[1])
+
+
+def dimensionless_finite(eps: FloatArray, direction: FloatArray, ratio: FloatArray) -> FloatArray:
+    """``G(eps, beta; L/D)`` of the finite bearing, shape ``(2, ...)`` [-]."""
+    out = np.empty((2, *eps.shape))
+    # beyond the table the scaled value is held: V(s_max) / (1 - eps^2)^2.5
+    log_gap = np.clip(-np.log10(np.maximum(1.0 - eps, 1e-300)), 0.0, LOG_GAP_MAX)
+    wrapped = wrap_angle(direction)
+    for value in np.unique(ratio):
+        where = ratio == value
+        scaled = force_table(float(value))(np.stack([log_gap[where], wrapped[where]], axis=-1))
+        out[:, where] = (scaled / (1.0 - eps[where, None] ** 2) ** 2.5).T
+    return out
+
+
+#: film models by name: force functions with the signature of short_bearing_force
+FILM_MODELS: dict[str, Callable[..., FilmForce]] = {
+    "short": short_bearing_force,
+    "long": long_bearing_force,
+    "finite": finite_bearing_force,
+}
+
+
+def film_force(
+    model: str,
+    radius: ArrayLike,
+    length: ArrayLike,
+    clearance: ArrayLike,
+    viscosity: ArrayLike,
+    eccentricity_ratio: ArrayLike,
+    eccentricity_rate: ArrayLike,
+    wedge_speed: ArrayLike,
+) -> FilmForce:
+    """Film force of the model named ``model`` (a key of :data:`FILM_MODELS`) [N].
+
+    Parameters
+    ----------
+    model : str
+        ``"short"``, ``"long"`` or ``"finite"``.
+    radius, length, clearance, viscosity, eccentricity_ratio, eccentricity_rate, wedge_speed
+        As for :func:`~jointwear.lubrication.film.short_bearing_force` [SI].
+    """
+    return FILM_MODELS[model](
+        radius, length, clearance, viscosity, eccentricity_ratio, eccentricity_rate, wedge_speed
+    )
+
+
+def dimensionless_force(
+    model: str,
+    eccentricity_ratio: FloatArray,
+    direction: FloatArray,
+    length_to_diameter: FloatArray,
+) -> FloatArray:
+    """``G(eps, beta; L/D)`` of a film model, shape ``(2, ...)`` [-] (module text).
+
+    Parameters
+    ----------
+    model : str
+        A key of :data:`FILM_MODELS`.
+    eccentricity_ratio : ndarray
+        ``eps`` [-].
+    direction : ndarray
+        ``beta = atan2(2 deps/dt, eps omega_bar)`` [rad].
+    length_to_diameter : ndarray
+        ``L / D`` [-].
+    """
+    eps, direction, ratio = np.broadcast_arrays(
+        np.maximum(eccentricity_ratio, SMALLEST_ECCENTRICITY), direction, length_to_diameter
+    )
+    if model == "finite":
+        return dimensionless_finite(eps, direction, ratio)
+    # R = c = 1, mu = 1/6 and m = 1 make F = G
+    force = FILM_MODELS[model](
+        1.0, 2.0 * ratio, 1.0, 1.0 / 6.0, eps, 0.5 * np.sin(direction), np.cos(direction) / eps
+    )
+    return np.stack([force.radial, force.tangential])
+
+
+class Mobility(NamedTuple):
+    """Booker's mobility vector [-].
+
+    Attributes
+    ----------
+    radial : ndarray
+        ``M_eps``, along the line of centres [-].
+    tangential : ndarray
+        ``M_phi``, along ``e_t`` [-].
+    """
+
+    radial: FloatArray
+    tangential: FloatArray
+
+
+def mobility(
+    eccentricity_ratio: ArrayLike,
+    load_angle: ArrayLike,
+    length_to_diameter: ArrayLike,
+    model: str = "finite",
+) -> Mobility:
+    """Booker's mobility vector ``M(eps, load direction)`` of a film model [-].
+
+    The squeeze motion whose film force balances the load: the direction ``beta`` of
+    the motion is the root of ``angle(G(eps, beta)) = load_angle + pi``
+    (:func:`scipy.optimize.elementwise.find_root`, bracketed on the tabulated
+    directions), and
+
+    .. math:: M_\\varepsilon = \\frac{L/D}{3|G|}\\sin\\beta, \\qquad
+              M_\\phi = -\\frac{L/D}{3|G|}\\cos\\beta .
+
+    For the short bearing at the centre this is Booker's ``1 / (pi (L/D)^2)`` along the
+    load.
+
+    Parameters
+    ----------
+    eccentricity_ratio : array_like
+        ``eps`` in [0, 1) [-].
+    load_angle : array_like
+        Direction of the load on the pin, measured from the line of centres ``e_r``
+        towards ``e_t`` [rad].
+    length_to_diameter : array_like
+        ``L / D`` [-].
+    model : str
+        ``"short"``, ``"long"`` or ``"finite"`` (:data:`FILM_MODELS`).
+
+    Returns
+    -------
+    Mobility
+        ``M_eps`` and ``M_phi`` [-].
+
+    References
+    ----------
+    Booker (1965, 1971).
+    """
+    eps, target, ratio = np.broadcast_arrays(
+        np.asarray(eccentricity_ratio, float),
+        np.asarray(load_angle, float) + np.pi,
+        np.asarray(length_to_diameter, float),
+    )
+
+    def mismatch(
+        direction: FloatArray, eps: FloatArray, target: FloatArray, ratio: FloatArray
+    ) -> FloatArray:
+        shape = dimensionless_force(model, eps, direction, ratio)
+        return wrap_angle(np.arctan2(shape[1], shape[0]) - target)
+
+    grid = np.linspace(-np.pi, np.pi, DIRECTION_NODES + 1)
+    scan = mismatch(grid, eps[..., None], target[..., None], ratio[..., None])
+    rising = (scan[..., :-1] <= 0.0) & (scan[..., 1:] > 0.0) & (np.diff(scan, axis=-1) < np.pi)
+    cell = np.argmax(rising, axis=-1)
+    found = elementwise.find_root(mismatch, (grid[cell], grid[cell + 1]), args=(eps, target, ratio))
+    direction = np.where(np.any(rising, axis=-1), found.x, np.nan)
+    shape = dimensionless_force(model, eps, direction, ratio)
+    size = ratio / (3.0 * np.hypot(shape[0], shape[1]))
+    return Mobility(size * np.sin(direction), -size * np.cos(direction))
+
+
+class CentreVelocity(NamedTuple):
+    """Motion of the pin's centre under a load (Booker's mobility method).
+
+    Attributes
+    ----------
+    eccentricity_rate : ndarray
+        ``deps/dt`` [1/s].
+    line_of_centres_speed : ndarray
+        ``dphi/dt`` [rad/s].
+    velocity_x, velocity_y : ndarray
+        Velocity of the pin's centre in the joint's x-y frame [m/s].
+    """
+
+    eccentricity_rate: FloatArray
+    line_of_centres_speed: FloatArray
+    velocity_x: FloatArray
+    velocity_y: FloatArray
+
+
+def journal_centre_velocity(
+    load_x: ArrayLike,
+    load_y: ArrayLike,
+    line_of_centres_angle: ArrayLike,
+    eccentricity_ratio: ArrayLike,
+    radius: ArrayLike,
+    length: ArrayLike,
+    clearance: ArrayLike,
+    viscosity: ArrayLike,
+    pin_speed: ArrayLike,
+    bushing_speed: ArrayLike = 0.0,
+    model: str = "finite",
+) -> CentreVelocity:
+    """Velocity of the pin's centre that lets the film carry a load [1/s, rad/s, m/s].
+
+    .. math::
+
+        \\dot\\varepsilon = k M_\\varepsilon, \\qquad
+        \\dot\\phi = \\frac{\\omega_{pin} + \\omega_{bushing}}{2}
+                   + \\frac{k M_\\phi}{\\varepsilon}, \\qquad
+        k = \\frac{|F|(c/R)^2}{\\mu L D},
+
+    with ``M`` of :func:`mobility` at the load's direction relative to the line of
+    centres; the centre moves with ``c (deps/dt e_r + eps dphi/dt e_t)``. Integrating
+    this over a load cycle gives the orbit of the pin (Booker 1965).
+
+    Parameters
+    ----------
+    load_x, load_y : array_like
+        Load on the pin (the force the mechanism applies to it) [N].
+    line_of_centres_angle : array_like
+        ``phi``, direction of the eccentricity from the x axis [rad].
+    eccentricity_ratio : array_like
+        ``eps`` in (0, 1) [-].
+    radius : array_like
+        Pin radius ``R`` [m].
+    length : array_like
+        Bushing length ``L`` [m].
+    clearance : array_like
+        Radial clearance ``c`` [m].
+    viscosity : array_like
+        Dynamic viscosity ``mu`` [Pa s].
+    pin_speed, bushing_speed : array_like
+        Angular velocities of pin and bushing [rad/s].
+    model : str
+        ``"short"``, ``"long"`` or ``"finite"``.
+
+    Returns
+    -------
+    CentreVelocity
+        Eccentricity rate, turning rate of the line of centres and the centre's
+        velocity.
+    """
+    phi = np.asarray(line_of_centres_angle, float)
+    eps = np.maximum(np.asarray(eccentricity_ratio, float), SMALLEST_ECCENTRICITY)
+    radius_, length_, clearance_ = (np.asarray(a, float) for a in (radius, length, clearance))
+    load = np.hypot(load_x, load_y)
+    load_angle = wrap_angle(np.arctan2(load_y, load_x) - phi)
+    vector = mobility(eps, load_angle, length_ / (2.0 * radius_), model)
+    rate = (
+        load
+        * (clearance_ / radius_) ** 2
+        / (np.asarray(viscosity, float) * length_ * 2.0 * radius_)
+    )
+    mean_speed = 0.5 * (np.asarray(pin_speed, float) + np.asarray(bushing_speed, float))
+    eccentricity_rate = rate * vector.radial
+    turning = mean_speed + rate * vector.tangential / eps
+    radial_speed = clearance_ * eccentricity_rate
+    tangential_speed = clearance_ * eps * turning
+    return CentreVelocity(
+        eccentricity_rate,
+        turning,
+        radial_speed * np.cos(phi) - tangential_speed * np.sin(phi),
+        radial_speed * np.sin(phi) + tangential_speed * np.cos(phi),
+    )
