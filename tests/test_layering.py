@@ -58,7 +58,8 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("contact", ("jointwear.contact", "jointwear.references")),
     ("tribology", ("jointwear.tribology",)),
     ("geometry update", ("jointwear.geometry.update",)),
-    ("simulation", ("jointwear.coupling", "jointwear.simulation")),
+    # the loop's schedule, its records and the loop itself
+    ("simulation", ("jointwear.coupling", "jointwear.record", "jointwear.simulation")),
     (
         "results",
         ("jointwear.results", "jointwear.plots", "jointwear.display", "jointwear.checkpoint"),
@@ -99,11 +100,9 @@ KNOWN_LAYER_EXCEPTIONS: dict[tuple[str, str], str] = {
     # the fused per-revolution kernel computes the pressure and Archard's wear increment
     # in one compiled pass
     ("jointwear.contact.kernel", "jointwear.tribology.archard"): "fused pressure + wear kernel",
-    # WearResult's conveniences (summary, netCDF, plot, repr) delegate to the modules that
-    # present a result; all lazy, at call time
-    ("jointwear.simulation", "jointwear.results"): "lazy: WearResult builds its dataset",
-    ("jointwear.simulation", "jointwear.plots"): "lazy: WearResult.plot",
-    ("jointwear.simulation", "jointwear.display"): "lazy: WearResult's text and HTML views",
+    # Simulation.run hands the loop's plain record to the result that presents it (lazy;
+    # nothing in jointwear.results imports the loop)
+    ("jointwear.simulation", "jointwear.results"): "lazy: run() returns a WearResult",
 }
 
 #: (importing module, imported module) -> why private names are shared between them

@@ -49,7 +49,7 @@ _LAZY = {
     "LoadCycle": ("jointwear.mechanism", "LoadCycle"),
     "Pin": ("jointwear.geometry", "Pin"),
     "Simulation": ("jointwear.simulation", "Simulation"),
-    "WearResult": ("jointwear.simulation", "WearResult"),
+    "WearResult": ("jointwear.results", "WearResult"),
     "load_config": ("jointwear.config", "load_config"),
     "read_result": ("jointwear.results", "read_wear_result"),
 }
@@ -96,8 +96,9 @@ if _typing.TYPE_CHECKING:
     from jointwear.errors import JointwearError
     from jointwear.geometry import BushingContour, Pin
     from jointwear.mechanism import LoadCycle
+    from jointwear.results import WearResult
     from jointwear.results import read_wear_result as read_result
-    from jointwear.simulation import Simulation, WearResult
+    from jointwear.simulation import Simulation
 
 
 def run(

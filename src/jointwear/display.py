@@ -11,13 +11,12 @@ import html
 from typing import Any
 
 from jointwear.plots import depth_unit
+from jointwear.results.text import end_of_run, revolutions_text
 
 __all__ = ["wear_result_html", "wear_result_repr"]
 
 
 def _rows(result: Any) -> list[tuple[str, str]]:
-    from jointwear.results import end_of_run, revolutions_text
-
     summary = result.summary()
     peak = summary["peak_wear_depth_m"]
     scale, unit = depth_unit(peak)

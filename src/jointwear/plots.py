@@ -28,7 +28,7 @@ from matplotlib.figure import Figure
 
 from jointwear.errors import JointwearError
 from jointwear.io import atomic_path
-from jointwear.results import revolutions_text
+from jointwear.results.text import revolutions_text
 
 __all__ = [
     "FIGURES",

@@ -692,7 +692,7 @@ def case_checks(result: Any) -> dict[str, Any]:
 
     Parameters
     ----------
-    result : jointwear.simulation.WearResult
+    result : jointwear.results.WearResult
         The case's result.
 
     Returns
