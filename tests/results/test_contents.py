@@ -9,6 +9,7 @@ import xarray as xr
 from jointwear import Simulation
 from jointwear.config import Config
 from jointwear.errors import DataError
+from jointwear.mechanism import LoadCycle
 from jointwear.results import ResultContents, summarize
 from jointwear.tribology.metrics import engineering_checks
 
@@ -87,3 +88,47 @@ def test_joint_data_names_the_joint_it_holds(result):
     assert result.joint_data(own) is result.joint_data()
     with pytest.raises(DataError, match="no clearance joint 'crank-rod'"):
         result.joint_data("crank-rod")
+
+
+def test_contents_are_built_from_a_plain_record_alone(paper_config):
+    """No simulation needed: a record made by hand (a load history with a diagnostic beside
+    it, two saved profiles, one dynamics solve) gives the variables, named and sized."""
+    from jointwear.coupling import dynamics_row
+    from jointwear.mechanism.cycle import Diagnostic
+    from jointwear.record import RunRecord
+    from jointwear.results import build_contents
+    from jointwear.state import Log, SimulationState
+
+    nodes, steps = paper_config.contact.nodes, 6
+    phase = np.linspace(0.0, 2 * np.pi, steps, endpoint=False)
+    cycle = LoadCycle.from_arrays(
+        100 + 10 * np.cos(phase),
+        0.2 * np.sin(phase),
+        np.full(steps, 0.1),
+        diagnostics={"torque": Diagnostic(np.sin(phase), "N m", "a torque")},
+    )
+    depth = np.linspace(0.0, 1e-6, nodes)
+    rows = [{"revolution": r, "peak_wear_depth": float(r * depth.max())} for r in (1, 2)]
+    state = SimulationState(
+        revolution=2,
+        wear_depth=2 * depth,
+        history=Log.of(rows),
+        profiles=Log.of([(1, depth), (2, 2 * depth)]),
+        dynamics_updates=Log.of([dynamics_row(cycle, 0, 0 * depth, 5e-5, None)]),
+    )
+    record = RunRecord(paper_config, state, cycle, 0.0075 * 0.1 * np.ones(steps), "nlcp")
+    contents = build_contents(record)
+    assert contents.sizes == {
+        "theta": nodes,
+        "revolution": 2,
+        "step": steps,
+        "update": 2,
+        "dynamics_update": 1,
+    }
+    np.testing.assert_array_equal(contents["wear_depth"].values[-1], 2 * depth)
+    assert contents["torque"].attrs == {"units": "N m", "long_name": "a torque"}
+    assert contents["dynamics_impacts"].values.tolist() == [0.0]
+    assert contents["peak_wear_depth"].values.tolist() == [depth.max(), 2 * depth.max()]
+    assert "pressure_initial" not in contents  # no contact snapshots in the record
+    assert contents.attrs["contact_model"] == "nlcp"
+    assert contents.attrs["mechanism"] == cycle.mechanism
