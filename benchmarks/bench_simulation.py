@@ -179,7 +179,7 @@ def kernel_inputs(config: Config, warm_revolutions: int = 0):
     simulation = Simulation(config)
     # the kernel where it can, as in a long run (a circular model's config has no contour
     # update, which alone would choose the NumPy path)
-    simulation._compiled = None
+    simulation.solver.compiled = None
     state = simulation.initial_state()
     for _ in range(warm_revolutions):
         state = simulation.step(state)

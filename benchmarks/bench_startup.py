@@ -35,7 +35,7 @@ from benchlib import (
 )
 
 sys.path.insert(0, str(SRC))
-from jointwear.simulation import COMPILED_KERNEL_SOLVES
+from jointwear.contact.solver import COMPILED_KERNEL_SOLVES
 
 MODELS = ("nlcp", "winkler", "asymmetric-winkler", "hertz")
 HEAVY = ("numba", "xarray", "pandas", "dask", "dask.array", "distributed", "matplotlib")

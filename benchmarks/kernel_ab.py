@@ -77,7 +77,7 @@ def warm_arguments(model: str) -> dict:
                  "simulation.update_every": 1}), 20,
     )  # fmt: skip
     contour = simulation._contour(state.wear_depth)
-    warm = simulation._warm_revolutions(simulation.load_cycle)
+    warm = simulation.solver._warm_revolutions(simulation.load_cycle, simulation.sliding_distance)
     nodes, grid, lines, _ = warm.arguments(contour)
     return {
         "load": warm.load, "sliding": warm.sliding, "nodes": nodes, "grid": grid,

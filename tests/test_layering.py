@@ -11,9 +11,8 @@ functions (lazy) or under ``TYPE_CHECKING`` -- is checked against three rules:
 (c) imports follow the data flow: a module imports only from its own layer or
     layers below it (:data:`LAYERS`).
 
-What breaks a rule today and is outside the scope of a layering fix is listed in
-:data:`KNOWN_LAYER_EXCEPTIONS` / :data:`KNOWN_PRIVATE_EXCEPTIONS` with the reason;
-an entry that no import needs any more fails too, so the lists only shrink.
+There is no exception list: an import against a rule is fixed (promote the name,
+move the caller or the module), never recorded.
 """
 
 from __future__ import annotations
@@ -35,6 +34,7 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         "foundation",
         (
             "jointwear.errors",
+            "jointwear.version",
             "jointwear.units",
             "jointwear.registry",
             "jointwear.tables",
@@ -63,11 +63,14 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("contact", ("jointwear.contact", "jointwear.references", "jointwear.mechanism.stage")),
     ("tribology", ("jointwear.tribology",)),
     ("geometry update", ("jointwear.geometry.update",)),
-    ("simulation", ("jointwear.coupling", "jointwear.simulation")),
-    (
-        "results",
-        ("jointwear.results", "jointwear.plots", "jointwear.display", "jointwear.checkpoint"),
-    ),
+    # the loop's schedule (cycle jumping, dynamics re-solves, life limits) and the plain
+    # record the loop fills
+    ("schedule", ("jointwear.coupling", "jointwear.record")),
+    # a record presented: Dataset, summary, files, plots, text
+    ("results", ("jointwear.results", "jointwear.plots", "jointwear.display")),
+    # the one loop over revolutions returns its record presented (a WearResult); the
+    # checkpoints save and resume that loop
+    ("simulation", ("jointwear.simulation", "jointwear.checkpoint")),
     (
         "analyses",
         (
@@ -84,18 +87,6 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("paper", ("jointwear.paper",)),
     ("command line", ("jointwear.cli", "jointwear.__main__", "jointwear")),
 )
-
-#: (importing module, imported module) -> why the upward import stays for now
-KNOWN_LAYER_EXCEPTIONS: dict[tuple[str, str], str] = {
-    # WearResult's conveniences (summary, netCDF, plot, repr) delegate to the modules that
-    # present a result; all lazy, at call time
-    ("jointwear.simulation", "jointwear.results"): "lazy: WearResult builds its dataset",
-    ("jointwear.simulation", "jointwear.plots"): "lazy: WearResult.plot",
-    ("jointwear.simulation", "jointwear.display"): "lazy: WearResult's text and HTML views",
-}
-
-#: (importing module, imported module) -> why private names are shared between them
-KNOWN_PRIVATE_EXCEPTIONS: dict[tuple[str, str], str] = {}
 
 
 @dataclass(frozen=True)
@@ -194,13 +185,10 @@ def private_violations() -> dict[tuple[str, str], list[str]]:
 
 def test_no_private_name_is_imported_from_another_module() -> None:
     found = private_violations()
-    unexplained = {pair: at for pair, at in found.items() if pair not in KNOWN_PRIVATE_EXCEPTIONS}
-    assert not unexplained, (
+    assert not found, (
         "private names imported across modules (make them public, with a docstring and "
-        f"units, or move the caller): {unexplained}"
+        f"units, or move the caller): {found}"
     )
-    stale = sorted(set(KNOWN_PRIVATE_EXCEPTIONS) - set(found))
-    assert not stale, f"known exceptions no import needs any more; remove them: {stale}"
 
 
 def test_the_paper_is_imported_only_by_itself_and_the_command_line() -> None:
@@ -231,10 +219,7 @@ def layer_violations() -> dict[tuple[str, str], list[str]]:
 
 def test_imports_follow_the_data_flow() -> None:
     found = layer_violations()
-    unexplained = {pair: at for pair, at in found.items() if pair not in KNOWN_LAYER_EXCEPTIONS}
-    assert not unexplained, f"imports against the layer order (see LAYERS): {unexplained}"
-    stale = sorted(set(KNOWN_LAYER_EXCEPTIONS) - set(found))
-    assert not stale, f"known exceptions no import needs any more; remove them: {stale}"
+    assert not found, f"imports against the layer order (see LAYERS): {found}"
 
 
 @pytest.mark.parametrize(

@@ -49,7 +49,7 @@ _LAZY = {
     "LoadCycle": ("jointwear.mechanism", "LoadCycle"),
     "Pin": ("jointwear.geometry", "Pin"),
     "Simulation": ("jointwear.simulation", "Simulation"),
-    "WearResult": ("jointwear.simulation", "WearResult"),
+    "WearResult": ("jointwear.results", "WearResult"),
     "load_config": ("jointwear.config", "load_config"),
     "read_result": ("jointwear.results", "read_wear_result"),
 }
@@ -76,17 +76,6 @@ _SUBMODULES = (
 _INTERNAL = ("checkpoint", "cli", "display", "io", "paper", "resources")
 
 
-def _package_version() -> str:
-    # read when first asked for: importlib.metadata and the scan of the installed
-    # distributions cost more than a one-revolution run's contact solve
-    from importlib import metadata
-
-    try:
-        return metadata.version("jointwear")
-    except metadata.PackageNotFoundError:  # running from a source tree
-        return "0+unknown"
-
-
 if _typing.TYPE_CHECKING:
     from collections.abc import Iterable, Mapping
     from os import PathLike
@@ -95,8 +84,9 @@ if _typing.TYPE_CHECKING:
     from jointwear.errors import JointwearError
     from jointwear.geometry import BushingContour, Pin
     from jointwear.mechanism import LoadCycle
+    from jointwear.results import WearResult
     from jointwear.results import read_wear_result as read_result
-    from jointwear.simulation import Simulation, WearResult
+    from jointwear.simulation import Simulation
 
 
 def run(
@@ -180,7 +170,9 @@ def __getattr__(name: str) -> object:
     from importlib import import_module
 
     if name == "__version__":
-        value: object = _package_version()
+        from jointwear.version import package_version
+
+        value: object = package_version()
     elif name in _LAZY:
         module, attribute = _LAZY[name]
         value = getattr(import_module(module), attribute)

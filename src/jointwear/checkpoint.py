@@ -6,7 +6,7 @@ file + rename, :mod:`jointwear.io`):
 ``checkpoint.toml``
     The fully resolved configuration of the run (written once, at the start).
 ``checkpoint.npz``
-    The :class:`~jointwear.simulation.SimulationState` after the latest
+    The :class:`~jointwear.state.SimulationState` after the latest
     checkpointed contour update: revolution, radii, wear rate, update interval,
     the per-update history, the saved profiles and the contact warm start.
     It also stores a digest of the configuration, so a state is never resumed
@@ -53,7 +53,7 @@ from jointwear.errors import ConfigError, DataError
 from jointwear.io import atomic_write, check_input, os_reason
 
 if TYPE_CHECKING:
-    from jointwear.simulation import SimulationState
+    from jointwear.state import SimulationState
 
 __all__ = [
     "CHECKPOINT_CONFIG",
@@ -155,9 +155,7 @@ def _state_arrays(state: SimulationState, digest: str) -> dict[str, np.ndarray]:
 
 
 def _state_from_arrays(arrays: dict[str, np.ndarray]) -> SimulationState:
-    from jointwear.results import revolution_number
-    from jointwear.simulation import SimulationState
-    from jointwear.state import Log
+    from jointwear.state import Log, SimulationState, revolution_number
 
     schema: dict[str, str] = json.loads(str(arrays["schema"]))
     expected = [spec.name for spec in dataclasses.fields(SimulationState)]

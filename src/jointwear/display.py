@@ -1,4 +1,5 @@
-"""Short text and HTML views of results, for the REPL and notebooks.
+"""How a result is said to people: legible units, revolution counts, the end of a run,
+and short text and HTML views for the REPL and notebooks.
 
 ``WearResult.__repr__`` and ``WearResult._repr_html_`` are these functions: a
 result holds a whole dataset and config, and the default dataclass repr would
@@ -10,14 +11,76 @@ from __future__ import annotations
 import html
 from typing import Any
 
-from jointwear.plots import depth_unit
+from jointwear.state import revolution_number
 
-__all__ = ["wear_result_html", "wear_result_repr"]
+__all__ = [
+    "depth_unit",
+    "end_of_run",
+    "revolutions_text",
+    "wear_result_html",
+    "wear_result_repr",
+]
+
+
+def depth_unit(peak: float) -> tuple[float, str]:
+    """Scale and name of the length unit that shows a depth legibly.
+
+    Parameters
+    ----------
+    peak : float
+        Largest depth to show [m].
+
+    Returns
+    -------
+    scale : float
+        Metres per unit [m].
+    unit : str
+        ``"nm"``, ``"µm"`` or ``"mm"``.
+    """
+    for scale, unit in ((1e-9, "nm"), (1e-6, "µm")):
+        if peak < 1000 * scale:
+            return scale, unit
+    return 1e-3, "mm"
+
+
+def revolutions_text(value: float) -> str:
+    """A revolution count for people: a whole number in full, a fraction to two decimals,
+    under one revolution to three digits (``352011``, ``352011.63``, ``0.00513``).
+
+    Parameters
+    ----------
+    value : float
+        Revolutions [-].
+    """
+    number = revolution_number(value)
+    if isinstance(number, int):
+        return str(number)
+    return f"{number:.2f}" if abs(number) >= 1.0 else f"{number:.3g}"
+
+
+def end_of_run(summary: dict[str, Any]) -> str:
+    """Why and when a run ended, one line from its summary values
+    (:func:`jointwear.results.summarize`).
+
+    ``stopped: wall_thickness reached at 0.00513 revolutions (7.13e-07 h)`` or
+    ``completed: 1000 revolutions (no life limit reached)``.
+
+    Parameters
+    ----------
+    summary : dict
+        A single joint's summary.
+    """
+    if summary.get("stopped_by"):
+        return (
+            f"stopped: {summary['stopped_by']} reached at "
+            f"{revolutions_text(summary['life_revolutions'])} revolutions "
+            f"({summary['life_hours']:.3g} h)"
+        )
+    revolutions = revolutions_text(summary["revolutions"])
+    return f"completed: {revolutions} revolutions (no life limit reached)"
 
 
 def _rows(result: Any) -> list[tuple[str, str]]:
-    from jointwear.results import end_of_run, revolutions_text
-
     summary = result.summary()
     peak = summary["peak_wear_depth_m"]
     scale, unit = depth_unit(peak)

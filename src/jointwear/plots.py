@@ -26,9 +26,9 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
+from jointwear.display import depth_unit, revolutions_text
 from jointwear.errors import JointwearError
 from jointwear.io import atomic_path
-from jointwear.results import revolutions_text
 
 __all__ = [
     "FIGURES",
@@ -112,27 +112,6 @@ def polar_magnification(peak: float, radius: float) -> float:
     if peak <= 0:
         return 1.0
     return 10.0 ** math.floor(math.log10(0.5 * radius / peak))
-
-
-def depth_unit(peak: float) -> tuple[float, str]:
-    """Scale and name of the length unit that shows a depth legibly.
-
-    Parameters
-    ----------
-    peak : float
-        Largest depth to show [m].
-
-    Returns
-    -------
-    scale : float
-        Metres per unit [m].
-    unit : str
-        ``"nm"``, ``"µm"`` or ``"mm"``.
-    """
-    for scale, unit in ((1e-9, "nm"), (1e-6, "µm")):
-        if peak < 1000 * scale:
-            return scale, unit
-    return 1e-3, "mm"
 
 
 def phase_coordinate(dataset: xr.Dataset) -> np.ndarray:

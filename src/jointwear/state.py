@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["Deferred", "Log", "SimulationState"]
+__all__ = ["Deferred", "Log", "SimulationState", "revolution_number"]
 
 FloatArray = NDArray[np.float64]
 
@@ -53,11 +53,15 @@ class Log(Sequence[Any]):
 
     __slots__ = ("_deferred", "_item", "_length", "_parent")
 
-    def __init__(self) -> None:
-        self._item: Any = None
-        self._parent: Log | None = None
-        self._length = 0
-        self._deferred = 0
+    def __init__(self, *, parent: Log | None = None, item: Any = None) -> None:
+        # (an empty log, or ``parent`` with ``item`` at the end: :meth:`append`)
+        self._item = item
+        self._parent = parent
+        if parent is None:
+            self._length = self._deferred = 0
+        else:
+            self._length = parent._length + 1
+            self._deferred = parent._deferred + 1 if isinstance(item, Deferred) else 0
 
     @classmethod
     def of(cls, items: Iterable[Any]) -> Log:
@@ -69,9 +73,7 @@ class Log(Sequence[Any]):
 
     def append(self, item: Any) -> Log:
         """A new log with ``item`` at the end."""
-        new = Log.__new__(Log)
-        new._item, new._parent, new._length = item, self, self._length + 1
-        new._deferred = self._deferred + 1 if isinstance(item, Deferred) else 0
+        new = Log(parent=self, item=item)
         if new._deferred >= DEFERRED_ITEMS:
             new._resolve()
         return new
@@ -133,6 +135,19 @@ class Log(Sequence[Any]):
 
     def __repr__(self) -> str:
         return f"Log({self._length} items)"
+
+
+def revolution_number(value: float) -> int | float:
+    """A revolution count as a state and a result hold it: an ``int`` if whole, else the
+    ``float`` (where a ``[life]`` limit ended a run inside a revolution) [-].
+
+    Parameters
+    ----------
+    value : float
+        Revolutions [-].
+    """
+    value = float(value)
+    return int(value) if value.is_integer() else value
 
 
 def _frozen(value: Any) -> Any:
@@ -217,21 +232,10 @@ class SimulationState:
                 if frozen is not value:
                     object.__setattr__(self, name, frozen)
 
-    def _evolved(self, changes: dict[str, Any]) -> SimulationState:
-        """``dataclasses.replace(self, **changes)`` without re-running the checks of the
-        unchanged fields (the revolution loop makes one state per revolution)."""
-        unknown = changes.keys() - _FIELD_NAMES
-        if unknown:
-            raise TypeError(f"SimulationState has no field {sorted(unknown)[0]!r}")
-        new = object.__new__(SimulationState)
-        fields_of = new.__dict__
-        fields_of.update(self.__dict__)
-        fields_of.update(changes)
-        for name in _ARRAY_FIELDS:
-            value = changes.get(name)
-            if value is not None:
-                fields_of[name] = _frozen(value)
-        return new
+    def evolved(self, changes: dict[str, Any]) -> SimulationState:
+        """The state with ``changes`` (field name -> value): ``dataclasses.replace(self,
+        **changes)`` without its checks of the field names, which ``__init__`` makes."""
+        return SimulationState(**{**self.__dict__, **changes})
 
     @property
     def wear_growth(self) -> float:
@@ -261,4 +265,3 @@ class SimulationState:
 _ARRAY_FIELDS = tuple(
     spec.name for spec in fields(SimulationState) if "FloatArray" in str(spec.type)
 )
-_FIELD_NAMES = frozenset(spec.name for spec in fields(SimulationState))

@@ -692,7 +692,7 @@ def case_checks(result: Any) -> dict[str, Any]:
 
     Parameters
     ----------
-    result : jointwear.simulation.WearResult
+    result : jointwear.results.WearResult
         The case's result.
 
     Returns
@@ -1265,8 +1265,8 @@ def write_sweep_dataset(
     """``sweep.nc``: metrics, parameters and final wear profiles along ``case``."""
     import xarray as xr
 
-    from jointwear import __version__
     from jointwear.results import ResultVariable, write_netcdf
+    from jointwear.version import package_version
 
     n = len(records)
     profiles = [r.get("wear_depth_m") for r in records]
@@ -1329,7 +1329,7 @@ def write_sweep_dataset(
             "swept_keys": json.dumps(plan.keys),
             "seed": -1 if plan.seed is None else plan.seed,
             "base_config": plan.base.to_toml(),
-            "jointwear_version": __version__,
+            "jointwear_version": package_version(),
         },
     )
     write_netcdf(dataset, path)

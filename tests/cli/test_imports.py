@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from jointwear import load_config
-from jointwear.simulation import COMPILED_KERNEL_SOLVES, compiled_kernel
+from jointwear.contact.solver import COMPILED_KERNEL_SOLVES, compiled_kernel
 
 SRC = Path(__file__).resolve().parents[2] / "src"
 #: libraries a summary of a run needs none of (the dask package itself is not one of them:

@@ -85,7 +85,7 @@ def simulated_profile(
 ) -> tuple[np.ndarray, int | float]:
     """The wear profile of a saved revolution (default the last) [m] and its revolution
     (fractional for the last profile of a run a life limit ended)."""
-    from jointwear.results import revolution_number
+    from jointwear.state import revolution_number
 
     revolutions = [revolution_number(r) for r in dataset["revolution"].values]
     if revolution is None:

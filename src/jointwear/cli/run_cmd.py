@@ -183,7 +183,7 @@ def run_ends(summary: dict) -> tuple[float, str]:
 
 def end_lines(summary: dict) -> list[str]:
     """Why and when the run (each joint's, of several) ended, one line each."""
-    from jointwear.results import end_of_run
+    from jointwear.display import end_of_run
 
     joints = summary.get("joints")
     if not joints:
@@ -192,7 +192,7 @@ def end_lines(summary: dict) -> list[str]:
 
 
 def summary_table(summary: dict, title: str) -> Table:
-    from jointwear.results import revolutions_text
+    from jointwear.display import revolutions_text
 
     table = Table(title=title)
     table.add_column("metric")

@@ -7,10 +7,11 @@ from typing import Any
 
 import numpy as np
 
+from jointwear.display import depth_unit
 from jointwear.io import atomic_write
 from jointwear.paper.calibration import CALIBRATION_CASE
 from jointwear.paper.cases import DISPLAY_UNITS, PAPER_ROWS, deviation
-from jointwear.plots import depth_unit, new_figure, polar_magnification, save_figure
+from jointwear.plots import new_figure, polar_magnification, save_figure
 
 __all__ = ["figures", "write_report"]
 

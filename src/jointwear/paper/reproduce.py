@@ -271,7 +271,7 @@ def run_cases(
         ``contour_updates`` counts the saved profiles of the scaled revolution) and
         ``budget`` (:func:`wear_budget`).
     results : dict
-        Per case, the :class:`~jointwear.simulation.WearResult`.
+        Per case, the :class:`~jointwear.results.WearResult`.
     """
     from jointwear.simulation import Simulation
 
@@ -301,7 +301,7 @@ def material_checks(result: Any) -> dict[str, dict[str, Any]]:
 
     Parameters
     ----------
-    result : jointwear.simulation.WearResult
+    result : jointwear.results.WearResult
         A single-joint run.
     """
     from jointwear.materials import LIMIT_KEYS, get_material
@@ -556,7 +556,7 @@ def reproduce(
         every case.
     """
     from jointwear.contact.kernel import compiled_available
-    from jointwear.simulation import compiled_kernel
+    from jointwear.contact.solver import compiled_kernel
 
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)

@@ -16,9 +16,8 @@ import pytest
 
 from jointwear import Simulation
 from jointwear.config import Config, load_config
-from jointwear.simulation import adaptive_interval, jump_error
-
-from .conftest import REPO
+from jointwear.coupling.jumping import adaptive_interval, jump_error
+from tests.conftest import REPO
 
 PAPER = REPO / "examples" / "paper" / "table5_nlcp_15000r.toml"
 CALIBRATED = {
@@ -192,3 +191,21 @@ def test_adaptive_wear_through_stops_at_the_wall():
     assert states[-2].revolution < last.revolution
     assert not float(last.revolution).is_integer()
     assert last.revolution < 200000
+
+
+def test_adaptive_updating_of_a_wearing_pin_is_refused(paper_config: Config):
+    """Adaptive jumps integrate the bushing's wear only: a wearing pin is refused, by name."""
+    from jointwear.coupling import Jumps
+    from jointwear.errors import ConfigError
+
+    config = paper_config.replace(
+        {
+            "simulation.update_contour": True,
+            "simulation.update_every": "adaptive",
+            "materials.pin.wear_coefficient": 1e-13,
+        }
+    )
+    with pytest.raises(ConfigError, match=r"^materials\.pin\.wear_coefficient: .*fixed"):
+        Jumps.from_config(config)
+    with pytest.raises(ConfigError, match=r"^materials\.pin\.wear_coefficient"):
+        Simulation(config)

@@ -1,9 +1,9 @@
-"""Wear that feeds back: life limits, immutable states, dynamics solved on the worn joint."""
+"""Life limits: the run ends where a ``[life]`` limit is reached, a fraction of a
+revolution included, on every path the wear takes."""
 
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import replace
 
 import numpy as np
@@ -11,47 +11,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from jointwear import Simulation
 from jointwear.config import Config
-from jointwear.coupling import (
-    LIFE_LIMITS,
-    DynamicsSchedule,
-    LifeLimits,
-    load_change,
-    wear_signature,
-)
-from jointwear.errors import WearFeedbackWarning
-from jointwear.mechanism import LoadCycle
-from jointwear.results import write_metrics_csv
-from jointwear.state import Log
-from jointwear.tribology.metrics import WEAR_METRICS, JointGeometry
+from jointwear.coupling import LIFE_LIMITS, LifeLimits
+from jointwear.tribology.metrics import JointGeometry
+from tests.coupling.conftest import simulate, summary
 
 LIMIT = 4e-6  # peak wear depth limit [m]
-
-
-@pytest.fixture(scope="module")
-def small(paper_config: Config) -> Config:
-    return paper_config.replace(
-        {
-            "contact.nodes": 120,
-            "simulation.steps_per_revolution": 90,
-            "contact.model": "asymmetric-winkler",
-        }
-    )
-
-
-def simulate(config: Config, pressures: bool = True):
-    """The result of a run (the worn joint's load warnings are not the question here)."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", WearFeedbackWarning)
-        return Simulation(config).run(pressures=pressures)
-
-
-def summary(config: Config) -> dict:
-    return simulate(config).summary()
-
-
-# ------------------------------------------------------------------ life limits
 
 
 @pytest.mark.parametrize("update", [None, 1, 7])
@@ -340,175 +305,3 @@ def test_the_first_limit_in_time_ends_the_run_and_ties_go_in_table_order() -> No
     assert LifeLimits((peak, early), geometry).first_reached(*path) == (4.0, "clearance")
     assert LifeLimits((peak, tied), geometry).first_reached(*path) == (16.0, "peak_wear_depth")
     assert LifeLimits((peak,), geometry).first_reached(lambda n: start + n * rate, 9.0) is None
-
-
-# ------------------------------------------------------------------ the orchestrator
-
-
-def test_states_are_immutable_and_do_not_share_records(small: Config) -> None:
-    simulation = Simulation(
-        small.replace({"simulation.update_contour": True, "simulation.revolutions": 5})
-    )
-    s0 = simulation.initial_state()
-    s1 = simulation.step(s0)
-    s2 = simulation.step(s1)
-    assert [len(s.history) for s in (s0, s1, s2)] == [0, 1, 2]
-    assert s1.history_columns["revolution"] == [1]
-    with pytest.raises(ValueError, match="read-only"):
-        s2.wear_depth[0] = 1.0
-    with pytest.raises(AttributeError):
-        s2.revolution = 7  # type: ignore[misc]
-    # a retried step from the same state gives the same state, not a longer record
-    again = simulation.step(s1)
-    np.testing.assert_array_equal(again.wear_depth, s2.wear_depth)
-    assert len(again.history) == 2
-
-
-def test_log_is_persistent() -> None:
-    a = Log().append(1).append(2)
-    b = a.append(3)
-    c = a.append(4)
-    assert [list(a), list(b), list(c)] == [[1, 2], [1, 2, 3], [1, 2, 4]]
-    assert Log.of([{"x": 1}, {"x": 2}]).columns() == {"x": [1, 2]}
-
-
-def test_one_metric_schema_drives_record_dataset_summary_and_csv(small: Config, tmp_path) -> None:
-    result = Simulation(
-        small.replace(
-            {
-                "simulation.update_contour": True,
-                "simulation.revolutions": 20,
-                "simulation.update_every": 5,
-            }
-        )
-    ).run()
-    data = result.summary()
-    for metric in WEAR_METRICS:
-        assert result.dataset[metric.name].attrs["units"] == metric.units
-        if metric.key is not None:
-            last = float(result.dataset[metric.name].values[-1])
-            assert data[metric.key] == pytest.approx(last * metric.scale, rel=1e-15)
-    write_metrics_csv(result.dataset, tmp_path / "m.csv")
-    header = (tmp_path / "m.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
-    assert header == ["revolution"] + [m.header for m in WEAR_METRICS]
-
-
-# ------------------------------------------------------------------ dynamics feedback
-
-
-def test_wear_signature_sees_where_the_load_wears() -> None:
-    steps = 360
-    cycle = LoadCycle.from_arrays(
-        np.full(steps, 100.0), np.full(steps, 0.3), np.full(steps, 0.01), period=1.0
-    )
-    signature = wear_signature(cycle)
-    assert signature.sum() == pytest.approx(100.0 * 0.01 * steps)
-    assert np.argmax(signature) == round(0.3 / (2 * np.pi) * 72)
-    turned = LoadCycle.from_arrays(cycle.load, cycle.azimuth + 0.5, cycle.relative_rotation)
-    assert load_change(cycle, cycle) == 0.0
-    # the load now wears elsewhere: no overlap, so the change is the hypotenuse of both norms
-    before, after = np.linalg.norm(signature), np.linalg.norm(wear_signature(turned))
-    assert load_change(cycle, turned) == pytest.approx(math.hypot(before, after) / before)
-    assert load_change(cycle, cycle.with_load(1.1 * cycle.load)) == pytest.approx(0.1)
-
-
-def test_adaptive_schedule_aims_at_the_tolerance() -> None:
-    schedule = DynamicsSchedule("adaptive", 0.02)
-    assert schedule.first_threshold(5e-5) == pytest.approx(1e-6)
-    # the load moved 1 % over 10 um of wear: 0.9 x 2 % needs 18 um, capped at 4 x
-    assert schedule.next_threshold(1e-5, 0.01, 6e-5) == pytest.approx(1.8e-5)
-    assert schedule.next_threshold(1e-5, 1e-6, 6e-5) == pytest.approx(4e-5)
-    # scatter without wear does not drive the interval below tolerance x clearance
-    assert schedule.next_threshold(1e-7, 0.5, 1e-4) == pytest.approx(2e-6)
-    assert DynamicsSchedule(3, 0.02).due(3, 0.0, 1.0)
-    assert not DynamicsSchedule("once", 0.02).due(10**6, 1.0, 0.0)
-
-
-def test_once_is_todays_result(small: Config) -> None:
-    config = small.replace(
-        {
-            "simulation.update_contour": True,
-            "simulation.revolutions": 500,
-            "simulation.update_every": 50,
-        }
-    )
-    default = Simulation(config).run().summary()
-    once = Simulation(config.replace({"simulation.dynamics_update": "once"})).run().summary()
-    assert once == {**default, "runtime_s": once["runtime_s"]}
-    assert default["dynamics_updates"] == 0
-
-
-def test_paper_joint_coupling_changes_little(paper_config: Config) -> None:
-    """Pulling spring, continuous contact: the worn joint's load hardly moves (0.12 % at 1e5 r)."""
-    config = paper_config.replace(
-        {
-            "contact.model": "nlcp",
-            "simulation.update_contour": True,
-            "simulation.update_every": "adaptive",
-            "simulation.revolutions": 100000,
-        }
-    )
-    once = summary(config)
-    coupled = summary(config.replace({"simulation.dynamics_update": "adaptive"}))
-    assert coupled["dynamics_updates"] >= 2
-    assert coupled["peak_wear_depth_m"] == pytest.approx(once["peak_wear_depth_m"], rel=5e-3)
-    assert coupled["wear_mass_kg"] == pytest.approx(once["wear_mass_kg"], rel=5e-3)
-    assert coupled["peak_wear_depth_m"] != once["peak_wear_depth_m"]
-
-
-def test_separating_joint_impacts_appear_as_it_wears(paper_config: Config) -> None:
-    """Push spring, 1 N preload, 240 rpm, light rod: continuous contact on the new joint,
-    impacts once the clearance has grown; the coupled wear differs from the uncoupled."""
-    config = paper_config.replace(
-        {
-            "mechanism.spring_mode": "push",
-            "mechanism.spring_preload": 1.0,
-            "mechanism.crank_speed": "240 rpm",
-            "mechanism.rod_mass": 0.3,
-            "dynamics.model": "contact-impact",
-            "simulation.steps_per_revolution": 90,
-            "contact.nodes": 120,
-            "materials.bushing.wear_coefficient": 5e-11,
-            "simulation.revolutions": 200,
-            "simulation.update_contour": True,
-            "simulation.update_every": 25,
-        }
-    )
-    once = Simulation(config).run()
-    with pytest.warns(WearFeedbackWarning, match="separates"):
-        coupled = Simulation(config.replace({"simulation.dynamics_update": 2})).run()
-    impacts = coupled.dataset["dynamics_impacts"].values
-    clearance = coupled.dataset["dynamics_max_clearance"].values
-    assert impacts[0] == 0  # the unworn joint stays in contact
-    assert np.all(np.diff(clearance) > 0)
-    assert impacts[-1] > 0
-    assert impacts.max() >= 3
-    a, b = once.summary(), coupled.summary()
-    assert b["dynamics_updates"] == 3
-    assert abs(b["wear_mass_kg"] / a["wear_mass_kg"] - 1) > 1e-3
-
-
-def test_a_given_load_cycle_is_never_resolved(small: Config) -> None:
-    cycle = Simulation(small).load_cycle
-    config = small.replace(
-        {
-            "simulation.dynamics_update": 1,
-            "simulation.update_contour": True,
-            "simulation.revolutions": 5,
-        }
-    )
-    result = Simulation(config, load_cycle=cycle).run().summary()
-    assert result["dynamics_updates"] == 0
-
-
-def test_massless_link_warns_when_wear_passes_the_clearance(small: Config) -> None:
-    config = small.replace(
-        {
-            "simulation.revolutions": 40000,
-            "simulation.update_contour": True,
-            "simulation.update_every": "adaptive",
-        }
-    )
-    with pytest.warns(WearFeedbackWarning, match="contact-impact") as caught:
-        Simulation(config).run()
-    assert sum("clearance" in str(w.message) for w in caught) == 1  # said once

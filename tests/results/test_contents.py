@@ -1,8 +1,6 @@
-"""Results: netCDF round trip, attributes, metrics CSV."""
+"""A result as plain arrays: read like the Dataset it becomes, built once, shared."""
 
 from __future__ import annotations
-
-import csv
 
 import numpy as np
 import pytest
@@ -11,13 +9,8 @@ import xarray as xr
 from jointwear import Simulation
 from jointwear.config import Config
 from jointwear.errors import DataError
-from jointwear.results import (
-    ResultContents,
-    config_of,
-    read_result,
-    summarize,
-    write_metrics_csv,
-)
+from jointwear.mechanism import LoadCycle
+from jointwear.results import ResultContents, summarize
 from jointwear.tribology.metrics import engineering_checks
 
 
@@ -34,67 +27,6 @@ def result(paper_config: Config):
         }
     )
     return Simulation(config).run()
-
-
-def test_netcdf_round_trip(result, tmp_path) -> None:
-    path = tmp_path / "result.nc"
-    result.to_netcdf(path)
-    back = read_result(path)
-    xr.testing.assert_identical(back, result.dataset)
-    # the stored config has every default written out: it resolves to the same values
-    assert config_of(back).to_dict() == result.config.to_dict()
-
-
-def test_every_variable_has_units_and_long_name(result) -> None:
-    for name, variable in result.dataset.variables.items():
-        assert "units" in variable.attrs, name
-        assert "long_name" in variable.attrs, name
-    assert result.dataset["wear_depth"].attrs["units"] == "m"
-    assert "[contact]" in result.dataset.attrs["config"]
-
-
-def test_metrics_csv_has_a_row_per_update(result, tmp_path) -> None:
-    path = tmp_path / "metrics.csv"
-    write_metrics_csv(result.dataset, path)
-    with open(path, newline="") as handle:
-        rows = list(csv.DictReader(handle))
-    assert len(rows) == result.dataset.sizes["update"] == 6
-    assert float(rows[-1]["wear_width [deg]"]) == pytest.approx(
-        result.summary()["wear_width_deg"], rel=1e-9
-    )
-    assert float(rows[-1]["peak_wear_depth [m]"]) == pytest.approx(
-        float(result.wear_depth.max()), rel=1e-9
-    )
-
-
-def test_final_profile_matches_the_final_radius(result) -> None:
-    ds = result.dataset
-    np.testing.assert_allclose(
-        ds["bushing_radius"].values - result.config.joint.bushing_radius,
-        ds["wear_depth"].values[-1],
-        rtol=1e-6,
-        atol=1e-15,
-    )
-
-
-@pytest.mark.parametrize("content", [b"", b"not a netcdf file", b"\x89HDF\r\n\x1a\n" + b"\0" * 40])
-def test_unreadable_result_is_a_data_error(tmp_path, content: bytes) -> None:
-    path = tmp_path / "broken.nc"
-    path.write_bytes(content)
-    with pytest.raises(DataError, match="broken.nc"):
-        read_result(path)
-
-
-def test_truncated_result_is_a_data_error(result, tmp_path) -> None:
-    path = tmp_path / "result.nc"
-    result.to_netcdf(path)
-    data = path.read_bytes()
-    path.write_bytes(data[: len(data) // 2])
-    with pytest.raises(DataError, match="result.nc"):
-        read_result(path)
-
-
-# ---------------------------------------------------------------- plain arrays
 
 
 def test_contents_read_like_the_dataset(result):
@@ -130,8 +62,9 @@ def test_summary_and_checks_equal_those_of_the_dataset(result):
 def test_the_dataset_is_built_once_and_shares_the_arrays(result):
     assert result.dataset is result.dataset
     assert isinstance(result.dataset, xr.Dataset)
-    assert np.shares_memory(result.dataset["wear_depth"].values,
-                            result.joint_data()["wear_depth"].values)
+    assert np.shares_memory(
+        result.dataset["wear_depth"].values, result.joint_data()["wear_depth"].values
+    )
 
 
 def test_without_pressures_the_wear_is_the_same(result):
@@ -155,3 +88,47 @@ def test_joint_data_names_the_joint_it_holds(result):
     assert result.joint_data(own) is result.joint_data()
     with pytest.raises(DataError, match="no clearance joint 'crank-rod'"):
         result.joint_data("crank-rod")
+
+
+def test_contents_are_built_from_a_plain_record_alone(paper_config):
+    """No simulation needed: a record made by hand (a load history with a diagnostic beside
+    it, two saved profiles, one dynamics solve) gives the variables, named and sized."""
+    from jointwear.coupling import dynamics_row
+    from jointwear.mechanism.cycle import Diagnostic
+    from jointwear.record import RunRecord
+    from jointwear.results import build_contents
+    from jointwear.state import Log, SimulationState
+
+    nodes, steps = paper_config.contact.nodes, 6
+    phase = np.linspace(0.0, 2 * np.pi, steps, endpoint=False)
+    cycle = LoadCycle.from_arrays(
+        100 + 10 * np.cos(phase),
+        0.2 * np.sin(phase),
+        np.full(steps, 0.1),
+        diagnostics={"torque": Diagnostic(np.sin(phase), "N m", "a torque")},
+    )
+    depth = np.linspace(0.0, 1e-6, nodes)
+    rows = [{"revolution": r, "peak_wear_depth": float(r * depth.max())} for r in (1, 2)]
+    state = SimulationState(
+        revolution=2,
+        wear_depth=2 * depth,
+        history=Log.of(rows),
+        profiles=Log.of([(1, depth), (2, 2 * depth)]),
+        dynamics_updates=Log.of([dynamics_row(cycle, 0, 0 * depth, 5e-5, None)]),
+    )
+    record = RunRecord(paper_config, state, cycle, 0.0075 * 0.1 * np.ones(steps), "nlcp")
+    contents = build_contents(record)
+    assert contents.sizes == {
+        "theta": nodes,
+        "revolution": 2,
+        "step": steps,
+        "update": 2,
+        "dynamics_update": 1,
+    }
+    np.testing.assert_array_equal(contents["wear_depth"].values[-1], 2 * depth)
+    assert contents["torque"].attrs == {"units": "N m", "long_name": "a torque"}
+    assert contents["dynamics_impacts"].values.tolist() == [0.0]
+    assert contents["peak_wear_depth"].values.tolist() == [depth.max(), 2 * depth.max()]
+    assert "pressure_initial" not in contents  # no contact snapshots in the record
+    assert contents.attrs["contact_model"] == "nlcp"
+    assert contents.attrs["mechanism"] == cycle.mechanism

@@ -1,0 +1,86 @@
+"""The scalar results of a run: the ``jointwear run --json`` object and ``summary.json``.
+
+:func:`summarize` reads one joint's result (a Dataset or its plain arrays);
+:func:`run_summary` makes the summary of a whole result, every joint's beside the most
+worn one's, with the engineering checks if asked: the one object ``run --json`` prints
+and ``summary.json`` holds.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from jointwear.state import revolution_number
+from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS, engineering_checks
+
+if TYPE_CHECKING:
+    import xarray as xr
+
+    from jointwear.results.wear_result import WearResult
+
+__all__ = ["run_summary", "summarize"]
+
+
+def summarize(dataset: xr.Dataset) -> dict[str, Any]:
+    """The scalar results of a single-joint result dataset (SI, units in the keys).
+
+    The wear metrics (:data:`~jointwear.tribology.metrics.WEAR_METRICS`) at the end
+    of the run, what ran, and the life: ``stopped_by`` (the ``[life]`` limit that
+    ended the run, or ``None``), ``life_revolutions`` and ``life_hours`` (where it
+    was reached, a fraction of a revolution included, or ``None``; then ``revolutions``
+    is the same) and ``dynamics_updates`` (solves of the dynamics on the
+    worn joint, the first on the unworn joint not counted).
+    """
+    out: dict[str, Any] = {
+        m.key: float(dataset[m.name].values[-1]) * m.scale
+        for m in (*WEAR_METRICS, *PIN_METRICS)
+        if m.key is not None and m.name in dataset
+    }
+    revolutions = revolution_number(dataset["update_revolution"].values[-1])
+    stopped_by = str(dataset.attrs.get("stopped_by", "")) or None
+    period = float(dataset.attrs.get("period_s", math.nan))
+    updates = dataset.sizes.get("dynamics_update", 1)
+    out.update(
+        {
+            "revolutions": revolutions,
+            "contour_updates": int(dataset.sizes["update"]),
+            "contact_model": dataset.attrs["contact_model"],
+            # (a file written before the attributes were: named as nothing else is)
+            "mechanism": str(dataset.attrs.get("mechanism", "unknown")),
+            "joint": str(dataset.attrs.get("joint", "joint")),
+            "stopped_by": stopped_by,
+            "life_revolutions": revolutions if stopped_by else None,
+            "life_hours": revolutions * period / 3600.0 if stopped_by else None,
+            "dynamics_updates": max(int(updates) - 1, 0),
+            "runtime_s": float(dataset.attrs.get("runtime_s", math.nan)),
+        }
+    )
+    return out
+
+
+def run_summary(result: WearResult, checks: bool = False) -> dict[str, Any]:
+    """The summary of a result (SI units in the key names).
+
+    With several clearance joints, the top-level values are those of the most worn
+    joint (``joint``), and ``joints`` holds every joint's.
+
+    Parameters
+    ----------
+    result : WearResult
+        The result.
+    checks : bool
+        Add the engineering checks (PV, pressure, speed against the bushing's limits,
+        :func:`jointwear.tribology.metrics.engineering_checks`) as ``checks``, the top
+        level's and each joint's; each exceeded limit warns once.
+    """
+    several = len(result.joints) > 1
+    out = summarize(result.joint_data())
+    if several:
+        out["joints"] = {j: summarize(result.joint_dataset(j)) for j in result.joints}
+    out["runtime_s"] = result.runtime
+    if checks:
+        out["checks"] = engineering_checks(result.joint_data(), result.config)
+        for joint, entry in out.get("joints", {}).items():
+            entry["checks"] = engineering_checks(result.joint_data(joint), result.config)
+    return out
