@@ -407,6 +407,29 @@ def test_a_clevis_pin_bends_load_onto_the_bushing_ends(params, pin, circle):
     np.testing.assert_allclose(bent.deflection, -matrix @ bent.force, rtol=1e-9, atol=1e-18)
 
 
+@pytest.mark.parametrize("support", [Clevis((-0.015, 0.015)), Cantilever(-0.016)])
+def test_the_linearised_foundation_is_the_derivative_of_the_balance(params, pin, circle, support):
+    """The slices' stiffness per unit length (dF_i/ds_i / h) is the foundation of the
+    linearised joint: the beam on it, loaded by its supports' reactions to a unit load,
+    gives the derivative of the balanced pin's offsets with respect to the load."""
+    law = contact_law("asymmetric-winkler", params)
+    law = PowerLaw(50 * law.coefficient, 1.0, name="stiff")
+    slices = AxialSlices(params.axial_length, 16)
+    contours = slices.contours(circle)
+    beam = PinBeam.solid(params.pin_radius, 209e9, 0.28)
+    matrix = compliance(beam, support, slices.centres)
+    load, step, offset = 2000.0, 1.0, 1e-3
+    states = [
+        solve_axial(contours, slices, pin, w, 0.2, law, load_offset=offset, compliance=matrix)
+        for w in (load - step, load, load + step)
+    ]
+    derivative = (states[2].offset - states[0].offset) / (2 * step)
+    foundation = states[1].foundation_stiffness
+    linear = linearised_joint(beam, support, slices.centres, slices.widths, foundation, 1.0, offset)
+    np.testing.assert_allclose(linear, derivative, rtol=1e-5)
+    assert np.ptp(derivative) > 0.1 * np.abs(derivative).max()  # tilt and bending both count
+
+
 def test_imposed_misalignment_with_a_bent_pin(params, pin, circle):
     law = contact_law("asymmetric-winkler", params)
     slices = AxialSlices(params.axial_length, 10)

@@ -1,8 +1,8 @@
 """Along the pin: a joint cut into axial slices that share one pin.
 
 A planar contact (:func:`jointwear.contact.solve`) is one cross-section of the joint.
-Here the bushing of length ``L`` is cut into ``N`` slices of width ``h = L / N``
-centred at
+Here the bushing of length ``L`` is cut into ``N`` slices of width ``h = L / N`` (the
+slicing method of misaligned roller contacts [1]_) centred at
 
 .. math:: z_i = \\left(i + \\tfrac12\\right) h - \\tfrac{L}{2}, \\qquad i = 0, \\dots, N - 1,
 
@@ -18,8 +18,8 @@ with ``delta_0`` the offset at the mid-plane, ``gamma`` the tilt in the load pla
 ``gamma_perp`` an imposed out-of-plane tilt and ``w_i`` the pin's bending
 (:mod:`jointwear.contact.pin_beam`). Slice ``i`` carries the resultant of its springs
 along the load, ``F_i = sum_j p(delta_ij) A_ij cos(theta_j - psi)``, the planar law of
-that slice at that pin position (paper eqs. 5/7; the penetration ``delta_ij`` along the
-node's ray, :func:`jointwear.geometry.contour.pin_penetration`). A load ``W`` whose line
+that slice at that pin position (Winkler [2]_, NLCP [3]_; the penetration ``delta_ij``
+along the node's ray, :func:`jointwear.geometry.contour.pin_penetration`). A load ``W`` whose line
 of action crosses the axis at ``z = a`` (the load offset) is balanced by
 
 .. math::
@@ -493,7 +493,8 @@ def solve_axial(
         The pin's flexibility at the slice centres relative to its supports [m/N]
         (:func:`jointwear.contact.pin_beam.compliance`); ``None``: a rigid pin.
     tolerance : float
-        Force tolerance [N] (the moment's is ``tolerance * L / 2`` [N m]).
+        Force tolerance [N], with the planar balance's round-off floor ``8 eps sum|f|``;
+        the moment's is the same at the half-length, times ``L / 2`` [N m].
     max_penetration : float, optional
         Largest admissible penetration, normally the wall thickness [m].
     method : {"hybr", "nested"}
@@ -564,9 +565,8 @@ class _Balance:
         return max(self.tolerance, 8 * _EPS * float(total.sum()))
 
     def moment_floor(self, total: FloatArray) -> float:
-        """Tolerance of the moment balance [N m]."""
-        scale = float(total @ np.abs(self.z))
-        return max(self.tolerance * self.half_length, 8 * _EPS * scale)
+        """Tolerance of the moment balance [N m]: the force's at the half-length."""
+        return self.force_floor(total) * self.half_length
 
     def solve(self, free: bool, tilt: float, method: str) -> tuple[float, float, FloatArray]:
         """``delta_0`` [m], ``gamma`` [rad] and the bending [m] that balance the load;
