@@ -430,6 +430,25 @@ def test_the_linearised_foundation_is_the_derivative_of_the_balance(params, pin,
     assert np.ptp(derivative) > 0.1 * np.abs(derivative).max()  # tilt and bending both count
 
 
+def test_a_flexible_pin_far_out_of_balance(params, pin, circle):
+    """A hard case: a cantilevered pin a tenth as stiff as steel, a wall 400 times NLCP's,
+    11 kN near the bushing's end. The pin jams (its clamped end presses the opposite wall)
+    and the middle slices open; the balance gets there by following the pin's flexibility
+    up from the rigid pin's, and still meets force, moment and w = -C F."""
+    law = contact_law("nlcp", params)
+    law = PowerLaw(400 * law.coefficient, law.exponent, name="stiff", force_area=law.force_area)
+    slices = AxialSlices(params.axial_length, 12)
+    beam = PinBeam.solid(params.pin_radius, 0.1 * 209e9, 0.28)
+    matrix = compliance(beam, Cantilever(-0.011), slices.centres)
+    axial = solve_axial(slices.contours(circle), slices, pin, 11206.0, 0.3, law,
+                        load_offset=8.64e-3, compliance=matrix)  # fmt: skip
+    assert axial.force[0] < 0  # the opposite wall
+    assert 0 < axial.loaded.sum() < 11
+    assert abs(axial.force_residual) <= 1e-13 * 11206.0
+    assert abs(axial.moment_reaction) <= 1e-13 * 11206.0 * params.axial_length
+    np.testing.assert_allclose(axial.deflection, -matrix @ axial.force, rtol=1e-9, atol=1e-18)
+
+
 def test_imposed_misalignment_with_a_bent_pin(params, pin, circle):
     law = contact_law("asymmetric-winkler", params)
     slices = AxialSlices(params.axial_length, 10)

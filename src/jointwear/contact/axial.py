@@ -40,9 +40,12 @@ planar solve.
 Solvers: ``scipy.optimize.brentq`` for ``delta_0`` (the resultant grows with it),
 ``scipy.optimize.root`` (Powell's hybrid method with the analytic Jacobian, the
 slices' linearised stiffness ``k_i = dF_i / ds_i``) for the tilt and the bending,
-nested ``brentq`` on the tilt where that fails. The force balance is met to the
-planar balance's tolerance, ``max(tolerance, 8 eps sum|f|)``; the moment to the same
-force tolerance at the half-length.
+nested ``brentq`` on the tilt where that fails. A bent pin starts from the rigid pin's
+balance and, where ``root`` does not converge at once, follows its flexibility up from
+zero (continuation). The force balance is met to the planar balance's tolerance,
+``max(tolerance, 8 eps sum|f|)`` (or the few ulps of the offsets that explain a
+residual, as in the planar balance); the moment to the same force tolerance at the
+half-length.
 
 References
 ----------
@@ -564,25 +567,27 @@ class _Balance:
         """Tolerance of the force balance [N] for the slices' ``sum_j |f_j|`` [N]."""
         return max(self.tolerance, 8 * _EPS * float(total.sum()))
 
-    def moment_floor(self, total: FloatArray) -> float:
-        """Tolerance of the moment balance [N m]: the force's at the half-length."""
-        return self.force_floor(total) * self.half_length
+    def moment_floor(self, total: FloatArray, slope: FloatArray, size: float) -> float:
+        """Tolerance of the moment balance [N m]: the force's at the half-length, or the
+        moment a few ulps of the offsets explain (slopes ``dF_i/ds_i`` [N/m], the largest
+        term of the offsets ``size`` [m], :func:`_round_off`)."""
+        return self.force_floor(total) * self.half_length + _round_off(slope * self.z, size)
 
     def solve(self, free: bool, tilt: float, method: str) -> tuple[float, float, FloatArray]:
         """``delta_0`` [m], ``gamma`` [rad] and the bending [m] that balance the load;
-        ``free``: the tilt from the moment balance, else ``tilt`` [rad] imposed."""
+        ``free``: the tilt from the moment balance, else ``tilt`` [rad] imposed. A bent
+        pin starts from the rigid pin's balance."""
         bending = np.zeros(self.z.size)
         centre = self.centre_offset(tilt * self.z)
+        if free:
+            found = self.free_tilt(centre) if method == "hybr" else None
+            if found is None:
+                tilt = self.nested_tilt(centre)
+                found = self.centre_offset(tilt * self.z), tilt
+            centre, tilt = found
         if self.compliance is not None and self.load > 0:
-            return self.coupled(free, centre, tilt)
-        if not free:
-            return centre, tilt, bending
-        if method == "hybr":
-            found = self.free_tilt(centre)
-            if found is not None:
-                return found[0], found[1], bending
-        tilt = self.nested_tilt(centre)
-        return self.centre_offset(tilt * self.z), tilt, bending
+            return self.bent(free, (centre, tilt, bending))
+        return centre, tilt, bending
 
     def centre_offset(self, base: FloatArray, guess: float | None = None) -> float:
         """``delta_0`` [m] with ``sum_i F_i(delta_0 + base_i) = W`` (``base`` [m]), by
@@ -629,8 +634,9 @@ class _Balance:
             centre = self.centre_offset(tilt * z, guess=float(found.x[0]))
         except ContactError:
             return None
-        force, _, _, total = self.forces(centre + tilt * z)
-        if abs(force @ z - load * self.load_offset) > self.moment_floor(total):
+        force, _, slope, total = self.forces(centre + tilt * z)
+        floor = self.moment_floor(total, slope, _size(centre, tilt * z))
+        if abs(force @ z - load * self.load_offset) > floor:
             return None
         return centre, tilt
 
@@ -657,13 +663,33 @@ class _Balance:
         ulps /= float(np.abs(z).max())
         return brentq(moment, lower, upper, xtol=ulps, rtol=4 * _EPS, maxiter=500)
 
-    def coupled(self, free: bool, centre: float, tilt: float) -> tuple[float, float, FloatArray]:
-        """``(delta_0, gamma, w)`` of the bent pin: ``scipy.optimize.root`` on the offset,
-        the tilt (``free``) and the bending, whose Jacobian is the beam on the slices'
-        linearised foundation; ``delta_0`` polished by ``brentq``."""
-        z, load, matrix = self.z, self.load, self.compliance
-        n = z.size
-        extra = 2 if free else 1
+    def bent(self, free: bool, rigid: tuple[float, float, FloatArray]):
+        """``(delta_0, gamma, w)`` of the bent pin from the rigid pin's balance ``rigid``;
+        where ``scipy.optimize.root`` does not converge at once, by continuation in the
+        pin's flexibility (``s C`` for ``s`` rising from 0 to 1 in steps halved on failure)."""
+        state, done, step = rigid, 0.0, 1.0
+        while done < 1.0:
+            share = min(1.0, done + step)
+            trial = self.coupled(free, state, share * self.compliance)
+            if trial is not None:
+                state, done, step = trial, share, 2 * step
+                continue
+            step /= 2
+            if step < 1 / 64:
+                raise ConvergenceError(
+                    f"axial balance: the bent pin's balance did not converge for "
+                    f"{self.load:.6g} N (at {done:.3g} of the pin's flexibility; a pin that "
+                    f"bends by much of the clearance is beyond this model)"
+                )
+        return state
+
+    def coupled(self, free: bool, start, matrix: FloatArray):
+        """``(delta_0, gamma, w)`` of the pin of compliance ``matrix`` [m/N] from ``start``:
+        ``scipy.optimize.root`` on the offset, the tilt (``free``) and the bending, whose
+        Jacobian is the beam on the slices' linearised foundation; ``delta_0`` polished by
+        ``brentq``. ``None`` where it misses the tolerances (:meth:`converged`)."""
+        z, load = self.z, self.load
+        n, extra, tilt = z.size, 2 if free else 1, start[1]
         deflection_scale = load * max(float(np.abs(matrix).max()), 1e-300)
         scale = np.concatenate(
             [[1.0 / load], [1.0 / (load * self.half_length)] if free else [],
@@ -676,9 +702,7 @@ class _Balance:
         shape[:, extra:] = np.eye(n)
         rows = np.vstack([np.ones(n), *([z] if free else []), *matrix])
         target = np.zeros(extra + n)
-        target[0] = load
-        if free:
-            target[1] = load * self.load_offset
+        target[:extra] = [load, load * self.load_offset][:extra]
 
         def residual(x: FloatArray):
             offset = shape @ x + (0.0 if free else tilt * z)
@@ -689,32 +713,36 @@ class _Balance:
             jac[extra:, extra:] += np.eye(n)
             return f * scale, jac * scale[:, None]
 
-        start = np.concatenate([[centre], [tilt] if free else [], np.zeros(n)])
-        found = root(residual, start, jac=True, method="hybr", options={"xtol": 1e-15})
+        x0 = np.concatenate([[start[0]], [tilt] if free else [], start[2]])
+        found = root(residual, x0, jac=True, method="hybr", options={"xtol": 1e-15})
+        if not np.all(np.isfinite(found.x)):
+            return None
         tilt = float(found.x[1]) if free else tilt
         bending = found.x[extra:]
-        centre = self.centre_offset(tilt * z + bending, guess=float(found.x[0]))
-        self._check_coupled(centre, tilt, bending, free)
-        return centre, tilt, bending
+        try:
+            centre = self.centre_offset(tilt * z + bending, guess=float(found.x[0]))
+        except ContactError:
+            return None
+        return (
+            (centre, tilt, bending) if self.converged(centre, tilt, bending, free, matrix) else None
+        )
 
-    def _check_coupled(self, centre, tilt, bending, free) -> None:
-        """Raise :class:`ConvergenceError` where the bent pin's balance misses its tolerances:
-        the moment (``free``) and the bending's consistency with the forces to 1e-9 of it."""
-        force, _, _, total = self.forces(centre + tilt * self.z + bending)
+    def converged(self, centre, tilt, bending, free, matrix) -> bool:
+        """Whether the bent pin's balance meets its tolerances: the moment (``free``) and
+        the bending's consistency with the forces, ``|w + C F| <= 1e-9 |w|``."""
+        force, _, slope, total = self.forces(centre + tilt * self.z + bending)
         moment = abs(force @ self.z - self.load * self.load_offset)
-        consistency = np.abs(bending + self.compliance @ force).max()
-        size = np.abs(bending).max() + 1e-9 * np.abs(self.compliance).max() * self.load
-        if (free and moment > self.moment_floor(total)) or consistency > 1e-9 * size:
-            raise ConvergenceError(
-                f"axial balance: the bent pin's balance did not converge for {self.load:.6g} N "
-                f"(moment residual {moment:.3g} N m, bending residual {consistency:.3g} m)"
-            )
+        consistency = np.abs(bending + matrix @ force).max()
+        size = np.abs(bending).max() + 1e-9 * np.abs(matrix).max() * self.load
+        floor = self.moment_floor(total, slope, _size(centre, tilt * self.z, bending))
+        return (not free or moment <= floor) and consistency <= 1e-9 * size
 
     def solution(self, centre, tilt, bending, azimuth, model) -> AxialSolution:
         """The :class:`AxialSolution` at ``delta_0`` [m], ``gamma`` [rad], bending [m]."""
         offset = centre + tilt * self.z + bending
         force, lateral_force, slope, total = self.forces(offset)
-        if abs(force.sum() - self.load) > self.force_floor(total) + _round_off(slope, offset):
+        size = _size(centre, tilt * self.z, bending)
+        if abs(force.sum() - self.load) > self.force_floor(total) + _round_off(slope, size):
             raise ConvergenceError(
                 f"axial balance: force residual {force.sum() - self.load:.3g} N for "
                 f"{self.load:.6g} N"
@@ -742,10 +770,18 @@ class _Balance:
         )
 
 
-def _round_off(slope: FloatArray, offset: FloatArray) -> float:
-    """Force a few ulps of the pin's offsets explain [N] (where one ulp of the offset moves
-    the resultant by more than the tolerance: the planar balance's round-off criterion)."""
-    return 4 * _EPS * float(np.abs(slope).sum()) * float(np.abs(offset).max())
+def _size(*terms: ArrayLike) -> float:
+    """The largest magnitude among the terms summed into the pin's offsets [m]: what their
+    round-off is in proportion to."""
+    return max(float(np.max(np.abs(term))) for term in terms)
+
+
+def _round_off(slope: FloatArray, size: float) -> float:
+    """Force [N] (moment [N m], for ``slope`` ``dF_i/ds_i z_i``) that a few ulps of the
+    pin's offsets explain, offsets summed from terms up to ``size`` [m]: where one ulp
+    moves the resultant by more than the tolerance (the planar balance's round-off
+    criterion)."""
+    return 4 * _EPS * float(np.abs(slope).sum()) * size
 
 
 def _bracket(
