@@ -22,7 +22,7 @@ from jointwear.materials import (
     merge_material,
 )
 from jointwear.parameter_sets import get_parameter_set
-from jointwear.sweep import expand_sweep
+from jointwear.workflows.sweep import expand_sweep
 
 REQUIRED = {
     "ptfe",

@@ -258,16 +258,16 @@ def _paper(
     json_: bool,
 ) -> None:
     """``calibrate --paper-row``: fit the paper's metrics of one table row."""
-    from jointwear.calibration import config_value
     from jointwear.config import parse_override
     from jointwear.measurement.calibrate import key_unit, parse_fit
-    from jointwear.paper.calibration import (
+    from jointwear.paper.cases import PAPER_ROWS
+    from jointwear.paper.protocol import (
         CALIBRATION_PARAMETERS,
         calibrate_paper_row,
         row_config,
     )
-    from jointwear.paper.cases import PAPER_ROWS
     from jointwear.simulation import Simulation
+    from jointwear.workflows.parameter_fit import config_value
 
     if measured or case:
         raise ConfigError("--paper-row: fits the paper's table, not measured files; drop them")

@@ -60,8 +60,8 @@ def life(
     the rank correlation of the life with each input.
     """
     from jointwear.io import atomic_path, check_out, check_tree
-    from jointwear.life import life_plan, parse_distribution, plot_life, run_life, shown
     from jointwear.resources import check_case_count, parse_time_limit
+    from jointwear.workflows.life import life_plan, parse_distribution, plot_life, run_life, shown
 
     seconds = parse_time_limit(time_limit)
     check_case_count(cases, "--cases")

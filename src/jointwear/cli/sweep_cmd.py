@@ -14,7 +14,7 @@ from jointwear.cli.run_cmd import ProgressBar, QuietOpt
 from jointwear.errors import ConfigError
 
 if TYPE_CHECKING:
-    from jointwear.sweep import SweepPlan
+    from jointwear.workflows.sweep import SweepPlan
 
 SweepArg = Annotated[
     Path | None,
@@ -105,7 +105,7 @@ def sweep(
 ) -> None:
     """Run a parameter sweep (grid, zipped lists, random samples) and collect the metrics."""
     from jointwear.resources import parse_time_limit
-    from jointwear.sweep import load_plan, load_sweep, run_sweep
+    from jointwear.workflows.sweep import load_plan, load_sweep, run_sweep
 
     seconds = parse_time_limit(time_limit)
     if workers is not None and workers < 1:
@@ -141,7 +141,7 @@ def sweep(
             )
     except KeyboardInterrupt as exc:
         from jointwear.interrupts import with_resume
-        from jointwear.sweep import PLAN_FILE
+        from jointwear.workflows.sweep import PLAN_FILE
 
         if not (out / PLAN_FILE).is_file():
             raise

@@ -8,8 +8,8 @@ from typing import Any
 import numpy as np
 
 from jointwear.io import atomic_write
-from jointwear.paper.calibration import CALIBRATION_CASE
 from jointwear.paper.cases import DISPLAY_UNITS, PAPER_ROWS, deviation
+from jointwear.paper.protocol import CALIBRATION_CASE
 from jointwear.plots import depth_unit, new_figure, polar_magnification, save_figure
 
 __all__ = ["figures", "write_report"]

@@ -21,12 +21,12 @@ import numpy as np
 
 from jointwear.config import Config
 from jointwear.io import json_ready, write_json
-from jointwear.paper.calibration import (
+from jointwear.paper.cases import PAPER_ROWS, case_config, case_names, deviation, shown
+from jointwear.paper.protocol import (
     CALIBRATION_CASE,
     CALIBRATION_PARAMETERS,
     calibrate_paper_row,
 )
-from jointwear.paper.cases import PAPER_ROWS, case_config, case_names, deviation, shown
 
 __all__ = [
     "FEEDBACK_CLEARANCES",

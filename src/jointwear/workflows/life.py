@@ -5,7 +5,7 @@ that scatter: wear coefficients differ by +-40-60 % between nominally equal test
 (Pödra & Andersson 1999 [1]_), clearances by their tolerance, loads by the duty. A life
 is therefore a distribution. :func:`run_life` draws ``cases`` samples of the inputs
 (the sweep's ``[sample]`` distributions), runs each case to its first limit (local
-processes or a Dask cluster, as :func:`~jointwear.sweep.run_sweep`), and
+processes or a Dask cluster, as :func:`~jointwear.workflows.sweep.run_sweep`), and
 :func:`life_statistics` reports the median and the 5 % / 95 % lives, with the
 sensitivity of the life to each input (Spearman rank correlation).
 
@@ -35,7 +35,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from jointwear.config import Config, parse_override
 from jointwear.errors import ConfigError
-from jointwear.sweep import SweepPlan, SweepResult, expand_sweep, limit_counts, run_sweep
+from jointwear.workflows.sweep import SweepPlan, SweepResult, expand_sweep, limit_counts, run_sweep
 
 __all__ = [
     "LifeResult",
@@ -178,7 +178,7 @@ def case_lives(records: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
     Parameters
     ----------
     records : sequence of mapping
-        The sweep's case records (:func:`~jointwear.sweep.run_case`).
+        The sweep's case records (:func:`~jointwear.workflows.sweep.run_case`).
 
     Returns
     -------
@@ -238,7 +238,7 @@ def life_statistics(
         ``life_revolutions`` and ``life_hours`` (each ``{"p5", "median", "p95"}`` of
         :func:`life_quantiles`: ``{"value", "lower_bound"}``), ``sensitivity`` (key ->
         Spearman rho of life and input, ``None`` where undefined), the material limits
-        (:func:`~jointwear.sweep.limit_counts`) and ``lives`` (:func:`case_lives`).
+        (:func:`~jointwear.workflows.sweep.limit_counts`) and ``lives`` (:func:`case_lives`).
     """
     lives = case_lives(records)
     ok = [i for i, life in enumerate(lives) if life["status"] == "ok"]
@@ -315,7 +315,7 @@ def run_life(plan: SweepPlan, out: str | Path, **sweep_options: Any) -> LifeResu
     out : path-like
         Output directory (the sweep's files and ``life.json``).
     **sweep_options
-        Passed to :func:`~jointwear.sweep.run_sweep` (``workers``, ``scheduler``, ...).
+        Passed to :func:`~jointwear.workflows.sweep.run_sweep` (``workers``, ``scheduler``, ...).
     """
     from jointwear.io import write_json
 

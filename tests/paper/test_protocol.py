@@ -7,7 +7,7 @@ import pytest
 from jointwear.config import Config
 from jointwear.errors import ConfigError
 from jointwear.measurement.calibrate import resolve_parameter
-from jointwear.paper.calibration import (
+from jointwear.paper.protocol import (
     CALIBRATION_CASE,
     CALIBRATION_PARAMETERS,
     calibrate_paper_row,
@@ -20,7 +20,7 @@ def test_paper_row_is_the_reproduction_protocol(
     paper_config: Config, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Config, targets and parameters of the reproduction's calibration (and of other rows)."""
-    import jointwear.paper.calibration as protocol
+    import jointwear.paper.protocol as protocol
 
     calls: list[tuple] = []
 

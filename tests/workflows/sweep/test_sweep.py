@@ -15,7 +15,7 @@ import xarray as xr
 from jointwear import load_config
 from jointwear.cli import main
 from jointwear.errors import ConfigError, DataError
-from jointwear.sweep import (
+from jointwear.workflows.sweep import (
     CASES_CSV,
     DATASET_FILE,
     METRICS,
@@ -28,7 +28,7 @@ from jointwear.sweep import (
 )
 from tests.conftest import strict_json
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[3]
 PAPER = REPO / "tests" / "data" / "paper_joint.toml"
 #: a coarse mesh: NLCP in its mesh-independent form (the paper's needs 1 degree nodes)
 TINY = """
@@ -332,7 +332,7 @@ def test_failed_cases_are_recorded_not_fatal(tmp_path):
 
 
 def test_resume_skips_finished_cases(serial, tmp_path, monkeypatch):
-    import jointwear.sweep as sweep_module
+    import jointwear.workflows.sweep as sweep_module
 
     plan, reference = serial
     out = tmp_path / "out"
@@ -519,7 +519,7 @@ def test_cli_sweep_on_a_dask_scheduler(tmp_path, capsys):
     ],
 )
 def test_default_workers_pay_for_their_start(case_seconds, remaining, cpus, method, workers):
-    from jointwear.sweep import WORKER_START, default_workers
+    from jointwear.workflows.sweep import WORKER_START, default_workers
 
     assert default_workers(case_seconds, remaining, cpus, method) == workers
     if workers > 1:  # parallel: the estimated time beats running here
@@ -550,8 +550,8 @@ def test_cases_carry_the_checks_of_run(tmp_path, capsys):
     function), as values, ratios to the limits and the exceeded checks, and the sweep
     counts the cases that exceed a limit."""
     from jointwear.simulation import Simulation
-    from jointwear.sweep import CHECK_COLUMNS
     from jointwear.tribology.metrics import engineering_checks
+    from jointwear.workflows.sweep import CHECK_COLUMNS
 
     path = write_sweep(
         tmp_path,
@@ -603,8 +603,8 @@ def test_cases_carry_the_checks_of_run(tmp_path, capsys):
 
 
 def test_every_check_with_a_limit_has_its_columns():
-    from jointwear.sweep import CASE_RESULTS, CHECK_COLUMNS
     from jointwear.tribology.metrics import CHECKS
+    from jointwear.workflows.sweep import CASE_RESULTS, CHECK_COLUMNS
 
     assert set(CHECK_COLUMNS) == {name for name, check in CHECKS.items() if check.limit_key}
     for check, column in CHECK_COLUMNS.items():

@@ -14,12 +14,12 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from jointwear.calibration import CalibrationResult, Parameter, calibrate_metrics
 from jointwear.config import Config
 from jointwear.errors import ConfigError
 from jointwear.measurement.calibrate import DEFAULT_BOUNDS
 from jointwear.paper.cases import PAPER_ROWS, case_config, case_names
 from jointwear.registry import suggest
+from jointwear.workflows.parameter_fit import CalibrationResult, Parameter, calibrate_metrics
 
 __all__ = [
     "CALIBRATION_CASE",

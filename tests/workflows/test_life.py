@@ -12,7 +12,7 @@ from scipy.stats import norm
 from jointwear.cli import main
 from jointwear.config import Config
 from jointwear.errors import ConfigError
-from jointwear.life import life_plan, life_quantiles, parse_distribution, run_life
+from jointwear.workflows.life import life_plan, life_quantiles, parse_distribution, run_life
 from tests.conftest import strict_json
 
 KD = "materials.bushing.wear_coefficient"
