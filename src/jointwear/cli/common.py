@@ -10,14 +10,14 @@ from typing import Annotated, Any
 import typer
 from rich.console import Console
 
-from jointwear.config import Config, load_config
-from jointwear.errors import ConfigError
+from jointwear.config import Config
 
 __all__ = [
     "ConfigArg",
     "DebugOpt",
     "JsonOpt",
     "MaxMemoryOpt",
+    "QuietOpt",
     "SetOpt",
     "TimeLimitOpt",
     "UnitsOpt",
@@ -65,6 +65,7 @@ UnitsOpt = Annotated[
     typer.Option("--units", help="Length unit of columns without one (default m), e.g. mm."),
 ]
 DebugOpt = Annotated[bool, typer.Option("--debug", help="Show tracebacks.")]
+QuietOpt = Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")]
 MaxMemoryOpt = Annotated[
     str | None,
     typer.Option(
@@ -93,9 +94,9 @@ def _root(debug: DebugOpt = False) -> None:
 
 def load(config: Path, overrides: list[str] | None) -> Config:
     """Load a config file with ``--set`` overrides (errors name the file or key)."""
-    if not config.exists():
-        raise ConfigError(f"{config}: file not found")
-    return load_config(config, overrides or [])
+    from jointwear.workflows.inputs import load_config_file
+
+    return load_config_file(config, overrides)
 
 
 def emit_json(data: dict[str, Any]) -> None:

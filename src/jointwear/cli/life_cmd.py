@@ -12,6 +12,7 @@ from jointwear.cli.common import (
     ConfigArg,
     JsonOpt,
     MaxMemoryOpt,
+    QuietOpt,
     SetOpt,
     TimeLimitOpt,
     app,
@@ -19,7 +20,7 @@ from jointwear.cli.common import (
     emit_json,
     load,
 )
-from jointwear.cli.run_cmd import ProgressBar, QuietOpt
+from jointwear.cli.progress import ProgressBar
 from jointwear.cli.sweep_cmd import SchedulerOpt, WorkersOpt, limited
 from jointwear.errors import ConfigError
 

@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from jointwear.cli.common import JsonOpt, SetOpt, app, console, emit_json
-from jointwear.cli.run_cmd import ProgressBar
+from jointwear.cli.progress import ProgressBar
 from jointwear.config import parse_override
 
 

@@ -9,8 +9,16 @@ from typing import TYPE_CHECKING, Annotated
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, MaxMemoryOpt, TimeLimitOpt, app, console, emit_json
-from jointwear.cli.run_cmd import ProgressBar, QuietOpt
+from jointwear.cli.common import (
+    JsonOpt,
+    MaxMemoryOpt,
+    QuietOpt,
+    TimeLimitOpt,
+    app,
+    console,
+    emit_json,
+)
+from jointwear.cli.progress import ProgressBar
 from jointwear.errors import ConfigError
 
 if TYPE_CHECKING:
