@@ -25,7 +25,7 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -43,8 +43,11 @@ __all__ = [
     "life_plan",
     "life_quantiles",
     "life_statistics",
+    "life_study",
     "parse_distribution",
+    "plot_life",
     "run_life",
+    "shown",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -336,6 +339,90 @@ def run_life(plan: SweepPlan, out: str | Path, **sweep_options: Any) -> LifeResu
     }
     write_json(Path(out) / "life.json", {**statistics, "runtime_s": result.runtime})
     return LifeResult(result, statistics, lives, censored, inputs)
+
+
+#: what a life study writes into its folder (files, then folders)
+LIFE_FILES = ("life.json", "life.png", "cases.csv", "sweep.nc")
+LIFE_DIRS = ("cases",)
+
+
+def life_study(
+    config: Path,
+    samples: Sequence[str],
+    cases: int = 100,
+    *,
+    out: Path | None = None,
+    seed: int | None = None,
+    overrides: Sequence[str] = (),
+    scheduler: str | None = None,
+    workers: int | None = None,
+    max_memory: str | None = None,
+    time_limit: float | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> LifeResult:
+    """The life distribution of a joint under uncertain inputs (``jointwear life``).
+
+    Checks the options, the folder and the config, draws the cases
+    (:func:`life_plan`), runs them (:func:`run_life`) and writes ``life.json``,
+    ``life.png``, ``cases.csv``, ``sweep.nc`` and ``cases/`` into ``out``.
+
+    Parameters
+    ----------
+    config : Path
+        The joint's config file; its ``[life]`` limits end each case.
+    samples : sequence of str
+        The uncertain inputs, ``KEY=NAME(param=value, ...)`` (:func:`parse_distribution`).
+    cases : int
+        Monte Carlo cases [-].
+    out : Path
+        Output directory (required).
+    seed : int, optional
+        Seed of the draws.
+    overrides : sequence of str
+        ``section.key=VALUE`` overrides of the config.
+    scheduler : str, optional
+        Address of a dask.distributed scheduler.
+    workers : int, optional
+        Local worker processes.
+    max_memory : str, optional
+        The memory budget of the cases running at once, e.g. ``"16 GiB"``.
+    time_limit : float, optional
+        Stop with :class:`~jointwear.errors.TimeLimitError` after this wall-clock
+        time [s], checked between cases.
+    progress : callable, optional
+        ``progress(cases_done, cases_total)`` [-].
+
+    Returns
+    -------
+    LifeResult
+        The cases and their life distribution.
+
+    Raises
+    ------
+    ConfigError
+        Too many or too few cases, no ``out``, a bad config or distribution, too
+        little memory.
+    """
+    from jointwear.io import atomic_path, check_out, check_tree
+    from jointwear.resources import check_case_count
+    from jointwear.workflows.inputs import load_config_file
+    from jointwear.workflows.sweep import checked_progress
+
+    check_case_count(cases, "--cases")
+    if out is None:
+        raise ConfigError("--out: missing; the life study needs a directory for its cases")
+    out = check_out(out, files=LIFE_FILES, dirs=LIFE_DIRS)
+    check_tree(out, LIFE_DIRS)
+    base = load_config_file(config, overrides)
+    tables = dict(parse_distribution(text) for text in samples)
+    plan = life_plan(base, tables, cases, seed)
+    checked = checked_progress(
+        plan, progress, workers=workers, max_memory=max_memory, time_limit=time_limit
+    )
+    result = run_life(plan, out, scheduler=scheduler, workers=workers, progress=checked)
+    with atomic_path(out / "life.png") as tmp:
+        plot_life(result).savefig(tmp, format="png", dpi=120)
+    return result
 
 
 def shown(quantile: Mapping[str, Any]) -> str:

@@ -14,6 +14,7 @@ from jointwear.workflows.sweep import (
     CASES_CSV,
     DATASET_FILE,
     PLAN_FILE,
+    expand_sweep,
     load_plan,
     load_sweep,
     run_sweep,
@@ -130,3 +131,62 @@ def test_sweep_cases_checkpoint_and_resume_mid_case(tmp_path):
     resumed = run_sweep(load_plan(out), out, workers=1, resume=True)
     assert comparable(resumed.records) == comparable(reference.records)
     assert not (out / "cases" / "case-0000").exists()  # checkpoints removed when done
+
+
+def test_the_largest_case_sets_the_memory_a_sweep_needs(base):
+    """A budget the base case fits but a swept finer mesh does not refuses the sweep."""
+    from jointwear.resources import check_sweep
+    from jointwear.workflows.sweep import checked_progress
+
+    plan = expand_sweep({"grid": {"contact.nodes": [60, 720]}}, base)
+    small, large = (check_sweep(2, plan.config(c), "cases", "1 TiB", 1) for c in plan.cases)
+    assert small < large
+    budget = f"{(small + large) / 2:.0f} B"
+    with pytest.raises(ConfigError, match="contact.nodes"):
+        checked_progress(plan, workers=1, max_memory=budget)
+    same_size = expand_sweep({"grid": {"joint.clearance": ["0.05 mm", "0.1 mm"]}}, base)
+    checked_progress(same_size, workers=1, max_memory=budget)
+
+
+def test_the_progress_stops_at_the_time_limit_naming_the_resume(base):
+    from jointwear.errors import TimeLimitError
+    from jointwear.workflows.sweep import checked_progress
+
+    plan = expand_sweep({"grid": {"joint.clearance": ["0.05 mm", "0.1 mm"]}}, base)
+    seen = []
+    progress = checked_progress(
+        plan, lambda done, total: seen.append(done), time_limit=0.0, resume="go on"
+    )
+    progress(2, 2)  # finished: nothing to stop
+    with pytest.raises(TimeLimitError, match=r"after 1 of 2 cases; continue with `go on`"):
+        progress(1, 2)
+    assert seen == [2, 1]
+
+
+@pytest.mark.parametrize(
+    ("arguments", "message"),
+    [
+        ({"workers": 0}, "--workers: must be >= 1"),
+        ({"workers": 2, "scheduler": "tcp://127.0.0.1:9"}, "--workers: a dask cluster"),
+        ({"sweep_file": "sweep", "resume": "out"}, "--resume: give either SWEEP_FILE"),
+        ({"resume": "out", "out": "other"}, "--out: a resumed sweep writes"),
+        ({}, "SWEEP_FILE: missing"),
+        ({"sweep_file": "sweep"}, "--out: missing"),
+    ],
+)
+def test_sweep_to_folder_refuses_conflicting_options(tmp_path, arguments, message):
+    from jointwear.workflows.sweep import sweep_to_folder
+
+    paths = {
+        "sweep": write_sweep(tmp_path, '[grid]\n"joint.clearance" = [1e-4]'),
+        "out": tmp_path / "out",
+        "other": tmp_path / "other",
+    }
+    arguments = {
+        key: paths[value] if key in ("sweep_file", "resume", "out") else value
+        for key, value in arguments.items()
+    }
+    with pytest.raises(ConfigError, match=message):
+        sweep_to_folder(**arguments)
+    assert not (tmp_path / "out").exists()
+    assert not (tmp_path / "other").exists()

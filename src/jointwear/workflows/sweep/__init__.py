@@ -35,7 +35,7 @@ cluster, writes one record per case atomically as it finishes
 :mod:`~jointwear.workflows.sweep.keys`         the swept keys: their fields, units, values
 :mod:`~jointwear.workflows.sweep.sampling`     the ``[sample]`` distributions
 :mod:`~jointwear.workflows.sweep.case`         one case: its run, record and material checks
-:mod:`~jointwear.workflows.sweep.execution`    :func:`run_sweep`: every case, resume, outputs
+:mod:`~jointwear.workflows.sweep.execution`    :func:`run_sweep`, :func:`sweep_to_folder`
 :mod:`~jointwear.workflows.sweep.local`        cases here or on a pool of local processes
 :mod:`~jointwear.workflows.sweep.cluster`      cases on a dask.distributed cluster
 :mod:`~jointwear.workflows.sweep.outputs`      ``cases.csv`` and ``sweep.nc``
@@ -52,7 +52,12 @@ from jointwear.workflows.sweep.case import (
     limit_counts,
     run_case,
 )
-from jointwear.workflows.sweep.execution import SweepResult, run_sweep
+from jointwear.workflows.sweep.execution import (
+    SweepResult,
+    checked_progress,
+    run_sweep,
+    sweep_to_folder,
+)
 from jointwear.workflows.sweep.local import WORKER_START, default_workers
 from jointwear.workflows.sweep.outputs import CASES_CSV, DATASET_FILE
 from jointwear.workflows.sweep.plan import (
@@ -78,6 +83,7 @@ __all__ = [
     "SweepPlan",
     "SweepResult",
     "case_checks",
+    "checked_progress",
     "default_workers",
     "expand_sweep",
     "limit_counts",
@@ -85,4 +91,5 @@ __all__ = [
     "load_sweep",
     "run_case",
     "run_sweep",
+    "sweep_to_folder",
 ]

@@ -23,10 +23,24 @@ from jointwear.workflows.sweep.outputs import (
 )
 from jointwear.workflows.sweep.plan import PLAN_FILE, Case, SweepPlan
 
-__all__ = ["CASES_DIR", "SweepResult", "run_sweep"]
+__all__ = [
+    "CASES_DIR",
+    "SIZING_KEYS",
+    "SweepResult",
+    "checked_progress",
+    "run_sweep",
+    "sweep_to_folder",
+]
 
 #: one record per case (``case-NNNN.json``) and each running case's checkpoints
 CASES_DIR = "cases"
+#: config keys that set the memory of a case
+SIZING_KEYS = {
+    "contact.nodes",
+    "simulation.steps_per_revolution",
+    "simulation.saved_profiles",
+    "mechanism.clearance_joint",
+}
 
 
 @dataclass
@@ -209,3 +223,147 @@ def _task(plan: SweepPlan, case: Case, cases_dir: Path) -> dict[str, Any]:
     if config.simulation.checkpoint_every > 0:
         checkpoint = str((cases_dir / case.name).resolve())
     return {"case": case.name, "config": config.to_toml(), "checkpoint": checkpoint}
+
+
+def sweep_to_folder(
+    sweep_file: Path | None = None,
+    out: Path | None = None,
+    *,
+    resume: Path | None = None,
+    scheduler: str | None = None,
+    workers: int | None = None,
+    max_memory: str | None = None,
+    time_limit: float | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> SweepResult:
+    """Run a sweep file into a folder, or continue the sweep in a folder (``jointwear sweep``).
+
+    The options, the sweep file (every case expanded and checked) and the memory of
+    the largest case are checked before a case runs.
+
+    Parameters
+    ----------
+    sweep_file : Path, optional
+        The sweep file (TOML); omitted with ``resume``.
+    out : Path, optional
+        Output directory (needed without ``resume``).
+    resume : Path, optional
+        The folder of an unfinished sweep: its finished cases are kept, the rest run.
+    scheduler : str, optional
+        Address of a dask.distributed scheduler (``tcp://host:port``).
+    workers : int, optional
+        Local worker processes (see :func:`run_sweep`).
+    max_memory : str, optional
+        Refuse a sweep whose running cases would need more memory than this, e.g.
+        ``"16 GiB"``.
+    time_limit : float, optional
+        Stop with :class:`~jointwear.errors.TimeLimitError` after this wall-clock
+        time [s], checked between cases.
+    progress : callable, optional
+        ``progress(cases_done, cases_total)`` [-].
+
+    Returns
+    -------
+    SweepResult
+        The records of every case, in case order.
+
+    Raises
+    ------
+    ConfigError
+        Conflicting options, a bad sweep file, too little memory.
+    DataError
+        ``resume`` names no sweep folder.
+    """
+    from jointwear.interrupts import with_resume
+    from jointwear.workflows.sweep.plan import load_plan, load_sweep
+
+    if workers is not None and workers < 1:
+        raise ConfigError(f"--workers: must be >= 1, got {workers}")
+    if scheduler is not None and workers is not None:
+        raise ConfigError("--workers: a dask cluster has its own workers; drop --workers")
+    if resume is not None:
+        if sweep_file is not None:
+            raise ConfigError(
+                f"--resume: give either SWEEP_FILE ({sweep_file}) or --resume DIR, not both"
+            )
+        if out is not None and out.resolve() != resume.resolve():
+            raise ConfigError("--out: a resumed sweep writes into its --resume directory")
+        plan = load_plan(resume)
+        out = resume
+    else:
+        if sweep_file is None:
+            raise ConfigError("SWEEP_FILE: missing; give a sweep file or --resume DIR")
+        if out is None:
+            raise ConfigError("--out: missing; the sweep needs a directory for its results")
+        if out.exists() and not out.is_dir():
+            raise ConfigError(f"--out: {out} exists and is not a directory")
+        plan = load_sweep(sweep_file)
+    try:
+        return run_sweep(
+            plan,
+            out,
+            scheduler=scheduler,
+            workers=workers,
+            resume=resume is not None,
+            progress=checked_progress(
+                plan,
+                progress,
+                workers=workers,
+                max_memory=max_memory,
+                time_limit=time_limit,
+                resume=f"jointwear sweep --resume {out}",
+            ),
+        )
+    except KeyboardInterrupt as exc:
+        if not (out / PLAN_FILE).is_file():
+            raise
+        raise with_resume(exc, f"jointwear sweep --resume {out}") from None  # cases are kept
+
+
+def checked_progress(
+    plan: SweepPlan,
+    progress: Callable[[int, int], None] | None = None,
+    *,
+    workers: int | None = None,
+    max_memory: str | None = None,
+    time_limit: float | None = None,
+    resume: str | None = None,
+) -> Callable[[int, int], None]:
+    """Check that the plan's cases fit in memory, then a progress callback that stops
+    at the time limit.
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The sweep (or life study) about to run.
+    progress : callable, optional
+        ``progress(cases_done, cases_total)`` [-], called before the limit is checked.
+    workers : int, optional
+        Cases running at once [-]; default the CPUs available (at most one per case).
+    max_memory : str, optional
+        The memory budget, e.g. ``"16 GiB"`` (default: :mod:`jointwear.resources`'s).
+    time_limit : float, optional
+        Wall-clock limit [s].
+    resume : str, optional
+        The command that continues the job, named when the limit stops it.
+
+    Raises
+    ------
+    ConfigError
+        The largest case times the cases running at once exceed the memory budget.
+    """
+    from jointwear.resources import Deadline, available_cpus, check_sweep, run_memory
+
+    parallel = workers or min(available_cpus(), max(1, len(plan.cases)))
+    largest = plan.base
+    if SIZING_KEYS & set(plan.keys):  # the cases differ in size: the largest counts
+        configs = [plan.config(case) for case in plan.cases if case.invalid is None]
+        largest = max(
+            configs, key=lambda c: sum(size for *_, size in run_memory(c)), default=plan.base
+        )
+    check_sweep(len(plan.cases), largest, f"{plan.source}: cases", max_memory, parallel)
+    return Deadline(time_limit, "cases", resume).watching(progress or _no_progress)
+
+
+def _no_progress(done: int, total: int) -> None:
+    """No progress report."""
