@@ -76,7 +76,7 @@ _SUBMODULES = {
             "workflows",
         )
     },
-    "calibration": "jointwear.workflows.parameter_fit",
+    "calibration": "jointwear.workflows.calibration",
     "life": "jointwear.workflows.life",
     "sweep": "jointwear.workflows.sweep",
 }
