@@ -555,9 +555,6 @@ def reproduce(
         (:func:`compile_kernels`, ``None`` if no case needed them), timed apart from
         every case.
     """
-    from jointwear.contact.kernel import compiled_available
-    from jointwear.simulation import compiled_kernel
-
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
@@ -566,12 +563,7 @@ def reproduce(
     names = cases or case_names()
     if with_sensitivity is None:
         with_sensitivity = calibrate and cases is None
-    # the one-time compile before anything is timed; only if a case will use the kernels
-    # (a run of one-revolution cases never loads numba)
-    compile_s = None
-    compiled = [compiled_kernel(case_config(name, overrides)) is not False for name in names]
-    if (with_sensitivity or any(compiled)) and compiled_available():
-        compile_s = compile_kernels(case_config(CALIBRATION_CASE, overrides))
+    compile_s = _compile_first(names, overrides, with_sensitivity)
     calibration = None
     if calibrate:
         calibration = calibrate_paper_row(overrides=overrides)
@@ -579,37 +571,24 @@ def reproduce(
     summaries, results = run_cases(names, overrides, progress)
     for name, result in results.items():
         summaries[name]["checks"] = material_checks(result)
-    datasets = {name: result.dataset for name, result in results.items()}
     for name, result in results.items():
         result.to_netcdf(out / "results" / f"{name}.nc")
     if progress is not None:
         progress("done", len(names), len(names))
-    trends = check_trends(summaries)
-    variants = []
+    variants, feedback = [], None
     if with_sensitivity:
-        default = variant_record(
-            "**default** (relative rotation, E, pulling spring, K of eq. 2)",
-            {},
-            {} if calibration is None else calibration.values,
-            summaries,
-        )
+        fitted = {} if calibration is None else calibration.values
+        default = variant_record(DEFAULT_READING, {}, fitted, summaries)
         variants = [default, *sensitivity(overrides_in, names)]
-    feedback = feedback_study(overrides) if with_sensitivity else None
+        feedback = feedback_study(overrides)
     from jointwear.paper.report import figures, write_report
 
+    datasets = {name: result.dataset for name, result in results.items()}
     figure_paths = figures(datasets, out / "figures")
     report = {
-        "calibration": None
-        if calibration is None
-        else {
-            "case": CALIBRATION_CASE,
-            "values": calibration.values,
-            "residuals": calibration.residuals.tolist(),
-            "labels": calibration.labels,
-            "evaluations": calibration.evaluations,
-        },
+        "calibration": None if calibration is None else _calibration_record(calibration),
         "cases": summaries,
-        "trends": trends,
+        "trends": check_trends(summaries),
         "sensitivity": variants,
         "feedback": feedback,
         "compile_s": compile_s,
@@ -620,3 +599,32 @@ def reproduce(
     write_report(report, out / "report.md", figure_paths)
     write_json(out / "report.json", json_ready(report))
     return report
+
+
+#: the label of the default reading in the sensitivity table
+DEFAULT_READING = "**default** (relative rotation, E, pulling spring, K of eq. 2)"
+
+
+def _compile_first(
+    names: list[str], overrides: dict[str, Any], with_sensitivity: bool
+) -> float | None:
+    """The one-time compile of the kernels before anything is timed [s], if a case will use
+    them (a run of one-revolution cases never loads numba); ``None`` otherwise."""
+    from jointwear.contact.kernel import compiled_available
+    from jointwear.simulation import compiled_kernel
+
+    compiled = [compiled_kernel(case_config(name, overrides)) is not False for name in names]
+    if (with_sensitivity or any(compiled)) and compiled_available():
+        return compile_kernels(case_config(CALIBRATION_CASE, overrides))
+    return None
+
+
+def _calibration_record(calibration: Any) -> dict[str, Any]:
+    """The report's record of the calibration on :data:`CALIBRATION_CASE`."""
+    return {
+        "case": CALIBRATION_CASE,
+        "values": calibration.values,
+        "residuals": calibration.residuals.tolist(),
+        "labels": calibration.labels,
+        "evaluations": calibration.evaluations,
+    }
