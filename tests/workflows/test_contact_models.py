@@ -46,3 +46,16 @@ def test_the_reference_joins_the_models_and_deviates_from_itself_by_nothing(
 def test_unknown_names_are_refused_before_any_solve(paper_config_path, options, message):
     with pytest.raises(ConfigError, match=message):
         compare_contact_models(paper_config_path, "100 N", **options)
+
+
+def test_one_load_is_carried_along_its_direction(paper_config_path):
+    """The pressure's resultant balances the load along it and nothing sideways."""
+    from jointwear.workflows.contact_models import contact_on_unworn_bushing
+
+    done = contact_on_unworn_bushing(paper_config_path, "0.3 kN", "30 deg", model="winkler")
+    assert done.load == pytest.approx(300.0)
+    assert done.summary["contact_model"] == "winkler"
+    assert done.summary["resultant_normal_n"] == pytest.approx(300.0, rel=1e-6)
+    assert abs(done.summary["resultant_tangential_n"]) < 1e-6 * 300.0
+    with pytest.raises(ConfigError, match="--load: must be >= 0"):
+        contact_on_unworn_bushing(paper_config_path, "-1 N")

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import platform
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -38,6 +38,7 @@ __all__ = [
     "eq2_stiffness_over_pi",
     "feedback_study",
     "reproduce",
+    "reproduce_to_folder",
     "run_cases",
     "sensitivity",
     "variant_record",
@@ -628,3 +629,68 @@ def _calibration_record(calibration: Any) -> dict[str, Any]:
         "labels": calibration.labels,
         "evaluations": calibration.evaluations,
     }
+
+
+#: what ``jointwear reproduce`` writes into its folder (files, then folders)
+REPORT_FILES = ("report.md", "report.json")
+REPORT_DIRS = ("figures", "results")
+
+
+def reproduce_to_folder(
+    out: Path,
+    *,
+    cases: Sequence[str] | None = None,
+    calibrate: bool = True,
+    overrides: Sequence[str] = (),
+    progress: Callable[[str, int, int], None] | None = None,
+) -> tuple[dict[str, Any], Path]:
+    """``jointwear reproduce``: :func:`reproduce` into a folder that appears when complete.
+
+    Parameters
+    ----------
+    out : Path
+        Folder for ``report.md``, ``report.json``, ``figures/`` and ``results/``.
+    cases : sequence of str, optional
+        Run only these paper cases (default all, with the sensitivity study).
+    calibrate : bool
+        Calibrate the undisclosed parameters on the calibration row first.
+    overrides : sequence of str
+        ``section.key=VALUE`` overrides of every case.
+    progress : callable, optional
+        ``progress(case, done, total)``.
+
+    Returns
+    -------
+    report : dict
+        What :func:`reproduce` returns.
+    folder : Path
+        Where the report is.
+
+    Raises
+    ------
+    ConfigError
+        An unknown case (with a suggestion), a bad override or folder.
+    """
+    from jointwear.config import parse_override
+    from jointwear.errors import ConfigError
+    from jointwear.io import check_out, check_tree, staged_output
+    from jointwear.registry import suggest
+
+    out = check_out(out, files=REPORT_FILES, dirs=REPORT_DIRS)
+    check_tree(out, REPORT_DIRS)
+    if cases:
+        known = case_names()
+        for name in cases:
+            if name not in known:
+                raise ConfigError(f"--case: unknown paper case {name!r}{suggest(name, known)}")
+    changes = dict(parse_override(text) for text in overrides)
+    # the folder appears when complete
+    with staged_output(out, files=REPORT_FILES, dirs=REPORT_DIRS) as staging:
+        report = reproduce(
+            staging,
+            progress=progress,
+            calibrate=calibrate,
+            cases=None if cases is None else list(cases),
+            overrides=changes,
+        )
+    return report, out

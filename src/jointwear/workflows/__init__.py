@@ -14,14 +14,18 @@
                                                 every calibration uses
 :mod:`jointwear.workflows.measured`             a measured bushing's wear (``measure``), a
                                                 run against it (``compare``)
-:mod:`jointwear.workflows.contact_models`       every contact model against a reference
-                                                (``compare-models``)
+:mod:`jointwear.workflows.contact_models`       one load on the unworn bushing
+                                                (``contact``), every contact model against a
+                                                reference (``compare-models``)
+:mod:`jointwear.workflows.dynamics`             the load cycle of each joint, its CSV files
+                                                (``dynamics``)
 :mod:`jointwear.workflows.inputs`               config files and option texts with units
 ==============================================  ===========================================
 
 The command line (:mod:`jointwear.cli`) parses the options, calls one function of
 these modules and prints what it returns; the paper's row calibration
-(``calibrate --paper-row``) is :func:`jointwear.paper.protocol.paper_row_calibration`.
+(``calibrate --paper-row``) is :func:`jointwear.paper.protocol.paper_row_calibration` and
+``reproduce`` is :func:`jointwear.paper.reproduce.reproduce_to_folder`.
 Nothing is imported here: ``import jointwear.workflows.run`` loads what a run needs,
 and no more.
 """

@@ -1,5 +1,7 @@
-"""Every contact model against the references over a load range (``jointwear compare-models``).
+"""Contact models: one load on the unworn bushing (``jointwear contact``), and every model
+against the references over a load range (``jointwear compare-models``).
 
+:func:`contact_on_unworn_bushing` solves one load with the config's contact model.
 :func:`compare_contact_models` solves one load at a time on the unworn bushing with
 each model (:func:`~jointwear.references.compare.compare_models`), measures each
 model's contact half-angle, peak pressure and approach from a reference (the finite
@@ -16,7 +18,13 @@ from typing import Any
 
 from jointwear.errors import ConfigError
 
-__all__ = ["PLOT_FILES", "ComparedModels", "compare_contact_models"]
+__all__ = [
+    "PLOT_FILES",
+    "ComparedModels",
+    "OneLoad",
+    "compare_contact_models",
+    "contact_on_unworn_bushing",
+]
 
 #: the p(theta) plot ``compare-models --out`` writes
 PLOT_FILES = ("compare_models_pressure.png", "compare_models_pressure.svg")
@@ -144,3 +152,87 @@ def compare_contact_models(
         )
         summary["calibration"] = {name: fit.to_json() for name, fit in fits.items()}
     return ComparedModels(summary, comparison, reference, fits, plots)
+
+
+@dataclass(frozen=True)
+class OneLoad:
+    """Outcome of :func:`contact_on_unworn_bushing`.
+
+    Attributes
+    ----------
+    summary : dict
+        The ``jointwear contact --json`` object.
+    load : float
+        The load [N].
+    """
+
+    summary: dict[str, Any]
+    load: float
+
+
+def contact_on_unworn_bushing(
+    config: Path,
+    load: str = "200 N",
+    azimuth: str = "0 deg",
+    *,
+    model: str | None = None,
+    overrides: Sequence[str] = (),
+) -> OneLoad:
+    """The pressure distribution of one load on the unworn bushing.
+
+    There is no contour to update, so a model that solves circles is as good as any
+    here (a run with contour update refuses it).
+
+    Parameters
+    ----------
+    config : Path
+        The joint's config file.
+    load : str
+        The joint load with its unit, e.g. ``"200 N"``.
+    azimuth : str
+        The load's direction in the bushing frame, e.g. ``"0 deg"``.
+    model : str, optional
+        Contact model (instead of the config's ``contact.model``).
+    overrides : sequence of str
+        ``section.key=VALUE`` overrides of the config.
+
+    Returns
+    -------
+    OneLoad
+        The contact's summary (penetration, contact angles, peak pressure, resultants)
+        and the load [N].
+
+    Raises
+    ------
+    ConfigError
+        A bad config, unit or model, or a negative load.
+    """
+    from jointwear.contact import ContactParameters, solve
+    from jointwear.geometry import BushingContour, Pin
+    from jointwear.units import to_angle, to_si
+    from jointwear.workflows.inputs import load_config_file
+
+    changes = [*overrides, "simulation.update_contour=false"]
+    if model is not None:
+        changes.append(f"contact.model={model}")
+    cfg = load_config_file(config, changes)
+    force = to_si(load, "force", "--load")
+    angle = to_angle(azimuth, "--azimuth")
+    if force < 0:
+        raise ConfigError("--load: must be >= 0 (use --azimuth for the direction)")
+    params = ContactParameters.from_config(cfg)
+    contour = BushingContour.circle(
+        cfg.joint.bushing_radius, cfg.contact.nodes, cfg.joint.axial_length
+    )
+    result = solve(
+        contour,
+        Pin(cfg.joint.pin_radius),
+        [force],
+        [angle],
+        cfg.contact.model,
+        params,
+        balance=cfg.contact.balance,
+        tolerance=cfg.contact.tolerance,
+        max_iterations=cfg.contact.max_iterations,
+    )
+    return OneLoad(result.summary(0), force)
