@@ -1,4 +1,4 @@
-"""Shared pieces of the CLI: the app, consoles, common options, output helpers."""
+"""Shared pieces of the CLI: the app, consoles, common options, JSON output."""
 
 from __future__ import annotations
 
@@ -9,8 +9,6 @@ from typing import Annotated, Any
 
 import typer
 from rich.console import Console
-
-from jointwear.config import Config
 
 __all__ = [
     "ConfigArg",
@@ -25,7 +23,6 @@ __all__ = [
     "console",
     "emit_json",
     "err_console",
-    "load",
 ]
 
 app = typer.Typer(
@@ -90,13 +87,6 @@ TimeLimitOpt = Annotated[
 @app.callback()
 def _root(debug: DebugOpt = False) -> None:
     """Wear of planar revolute joints with clearance."""
-
-
-def load(config: Path, overrides: list[str] | None) -> Config:
-    """Load a config file with ``--set`` overrides (errors name the file or key)."""
-    from jointwear.workflows.inputs import load_config_file
-
-    return load_config_file(config, overrides)
 
 
 def emit_json(data: dict[str, Any]) -> None:
