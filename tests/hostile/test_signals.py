@@ -22,9 +22,9 @@ import pytest
 
 from jointwear import Simulation, load_config
 from jointwear.checkpoint import CHECKPOINT_CONFIG, CHECKPOINT_STATE, Checkpointer, read_state
-from jointwear.cli.run_cmd import add_checks
 from jointwear.interrupts import Interrupted
 from jointwear.results import read_result
+from jointwear.workflows.run import add_checks
 from tests.hostile.harness import PAPER, REPO, SMALL, Bad, run_cli, snapshot
 
 #: the signal tests are free-form (real processes); no table cases
@@ -308,7 +308,7 @@ def test_a_signal_swallowed_by_python_still_stops_the_work(tmp_path):
     """A signal whose exception Python drops (a weakref callback) stops at the next step."""
     import weakref
 
-    from jointwear.cli.run_cmd import ProgressBar
+    from jointwear.cli.progress import ProgressBar
     from jointwear.interrupts import handling_signals
     from jointwear.io import staged_output
 
