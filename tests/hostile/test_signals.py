@@ -31,8 +31,12 @@ from tests.hostile.harness import PAPER, REPO, SMALL, Bad, run_cli, snapshot
 CASES: list[Bad] = []
 
 UPDATE_CONFIG = REPO / "examples" / "paper" / "fig14_nlcp_update.toml"
+#: a run that only a signal ends: every revolution updates the contour (without updates the
+#: run would jump straight to its life limit, in about a second)
 ENDLESS = [
     *SMALL,
+    "--set",
+    "simulation.update_contour=true",
     "--set",
     "simulation.revolutions=100000000",
     "--set",
@@ -114,7 +118,7 @@ def test_signal_mid_run_exits_with_one_line_and_writes_nothing(tmp_path, signum,
 
 def test_ctrl_c_during_imports_prints_no_traceback(tmp_path):
     """Ctrl-C while the command line is still importing numpy & co.: `interrupted`, 130."""
-    process = jointwear("run", str(PAPER), "--out", str(tmp_path / "out"))
+    process = jointwear("run", str(PAPER), *ENDLESS, "--out", str(tmp_path / "out"))
     wait_for(lambda: handler_installed(process.pid), process, "the signal handler")
     process.send_signal(signal.SIGINT)
     returncode, stdout, stderr = finish(process)
