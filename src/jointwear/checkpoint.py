@@ -272,11 +272,13 @@ def check_state(state: SimulationState, config: Config, path: str | Path) -> Non
         return DataError(f"{path}: inconsistent checkpoint ({reason})")
 
     nodes = config.contact.nodes
+    # (a run along the pin keeps a map: a row of nodes per slice)
+    shape = (nodes,) if config.joint.axial_slices == 1 else (config.joint.axial_slices, nodes)
     if not 0 <= state.revolution <= config.simulation.revolutions:
         raise bad(f"revolution {state.revolution} outside 0..{config.simulation.revolutions}")
     for name in _NODE_ARRAYS:
         value = getattr(state, name)
-        if value is not None and np.shape(value) != (nodes,):
+        if value is not None and np.shape(value) != shape:
             raise bad(f"{name} has shape {np.shape(value)}, the config has {nodes} nodes")
     for spec in dataclasses.fields(state):
         value = getattr(state, spec.name)
@@ -302,7 +304,7 @@ def check_state(state: SimulationState, config: Config, path: str | Path) -> Non
     if saved and (np.any(np.diff(saved) <= 0) or saved[-1] > state.revolution):
         raise bad(f"saved profiles do not run forward to {state.revolution}")
     for revolution, profile in state.profiles.items():
-        if np.shape(profile) != (nodes,) or not np.all(np.isfinite(profile)):
+        if np.shape(profile) != shape or not np.all(np.isfinite(profile)):
             raise bad(f"the profile of revolution {revolution} is not {nodes} finite values")
 
 

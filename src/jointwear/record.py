@@ -88,7 +88,8 @@ class MetricsRow(Deferred):
     @classmethod
     def resolve(cls, items: list[MetricsRow]) -> list[dict[str, Any]]:
         first = items[0]
-        if not all(i.joint is first.joint and i.depth.shape == first.depth.shape for i in items):
+        same = all(i.joint is first.joint and i.depth.shape == first.depth.shape for i in items)
+        if not same or first.depth.ndim != 1:  # (a map along the pin: row by row)
             rows = [evaluate_metrics(i.depth, i.joint) for i in items]
             names = ("revolution", *rows[0], "contact_iterations")
             columns = [[row[name] for row in rows] for name in names[1:-1]]

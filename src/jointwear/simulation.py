@@ -25,7 +25,8 @@ from numpy.typing import NDArray
 from jointwear import coupling
 from jointwear.config import Config
 from jointwear.contact import ContactSolution
-from jointwear.contact.solver import ContactSolver, WarmStart
+from jointwear.contact.sliced import solver_of
+from jointwear.contact.solver import WarmStart
 from jointwear.errors import ConfigError
 from jointwear.geometry.contour import BushingContour
 from jointwear.record import ContactSnapshot, RunRecord, UpdateRecorder
@@ -87,7 +88,7 @@ class Simulation:
         self.contact_model = config.contact.model if contact_model is None else contact_model
         # the fused kernel accumulates Archard's wear inside the contact solve
         archard = wear_law in (None, "archard") and config.wear.law == "archard"
-        self.solver = ContactSolver.from_config(config, self.contact_model, fused_archard=archard)
+        self.solver = solver_of(config, self.contact_model, fused_archard=archard)
         self.law, self.pin = self.solver.law, self.solver.pin
         self.parameters = self.solver.parameters
         if joint is not None and joint not in config.joints:
@@ -119,15 +120,14 @@ class Simulation:
         return self.load.sliding_distance
 
     def initial_contour(self) -> BushingContour:
-        """The unworn bushing."""
-        joint, nodes = self.config.joint, self.config.contact.nodes
-        return BushingContour.circle(joint.bushing_radius, nodes, joint.axial_length)
+        """The unworn bushing (its slices along the pin, ``joint.axial_slices > 1``)."""
+        return self.solver.initial_contour()
 
     def initial_state(self) -> SimulationState:
         """State before the first revolution."""
-        nodes = self.config.contact.nodes
-        pin = None if self.pin_wear_coefficient is None else np.zeros(nodes)
-        return SimulationState(revolution=0, wear_depth=np.zeros(nodes), pin_wear_depth=pin)
+        shape = self.solver.depth_shape  # (nodes,), or (slices, nodes) along the pin
+        pin = None if self.pin_wear_coefficient is None else np.zeros(shape)
+        return SimulationState(revolution=0, wear_depth=np.zeros(shape), pin_wear_depth=pin)
 
     def contact(
         self, contour: BushingContour, state: SimulationState | None = None
@@ -328,8 +328,4 @@ class Simulation:
         return warm._asdict()
 
     def _contour(self, wear_depth: FloatArray) -> BushingContour:
-        joint = self.config.joint
-        # built anew from the depth at every update (as a resumed run rebuilds it), never
-        # carried over: ``R + (h + dh)`` and ``(R + h) + dh`` differ in the last bits
-        depth = np.asarray(wear_depth, dtype=float)
-        return BushingContour._of_depth(joint.bushing_radius, depth, joint.axial_length)
+        return self.solver.contour(wear_depth)

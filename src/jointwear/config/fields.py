@@ -24,6 +24,7 @@ __all__ = [
     "KIND_OF",
     "MAX_COUNT",
     "MAX_INTEGRATOR_STEPS",
+    "MAX_SLICES",
     "Acceleration",
     "AngularVelocity",
     "Density",
@@ -47,6 +48,8 @@ __all__ = [
 
 #: largest count of revolutions, updates or checkpoints a config can ask for
 MAX_COUNT = 10**9
+#: most axial slices of a joint (each slice holds a contour of ``contact.nodes`` nodes)
+MAX_SLICES = 1000
 #: most steps the contact-impact integrator may be forced to take by dynamics.max_step
 MAX_INTEGRATOR_STEPS = 10**7
 

@@ -17,6 +17,7 @@ from jointwear.config.choices import MODEL_CHOICE, NLCP_STIFFNESS, PAPER_SPRING_
 from jointwear.config.fields import MAX_INTEGRATOR_STEPS, Section, one_of
 from jointwear.config.mechanisms import DYNAMIC_TYPES, MechanismConfig
 from jointwear.config.parameter_sets import PARAMETER_SETS
+from jointwear.config.pin import PinConfig, check_along_the_pin
 from jointwear.config.sections import (
     ContactConfig,
     DynamicsConfig,
@@ -46,6 +47,7 @@ class ConfigSchema(Section):
     simulation: SimulationConfig = SimulationConfig()
     wear: WearConfig = WearConfig()
     life: LifeConfig = LifeConfig()
+    pin: PinConfig = PinConfig()
 
     @field_validator("parameter_set")
     @classmethod
@@ -78,6 +80,11 @@ class ConfigSchema(Section):
         if contact.model == "nlcp" and contact.nlcp_variant == "paper":
             node = self.joint.bushing_radius * 2.0 * math.pi / contact.nodes
             PAPER_SPRING_AREA(self.spring_area, node * self.joint.axial_length, contact.nodes)
+        return self
+
+    @model_validator(mode="after")
+    def _along_the_pin_fits(self) -> ConfigSchema:
+        check_along_the_pin(self)
         return self
 
     @model_validator(mode="after")

@@ -16,6 +16,7 @@ from jointwear import materials
 from jointwear.config.choices import CONTACT_MODEL, DYNAMICS_MODEL, WEAR_LAW, SlidingModel
 from jointwear.config.fields import (
     MAX_COUNT,
+    MAX_SLICES,
     Density,
     Length,
     NonNegLength,
@@ -49,6 +50,14 @@ class JointConfig(Section):
     clearance: Length
     axial_length: Length
     bushing_thickness: Length
+    #: along the pin (docs/along-the-pin.md): slices, an imposed tilt and its plane, and
+    #: the axial position of the load's line of action (0: the mid-plane)
+    axial_slices: Annotated[int, Field(ge=1, le=MAX_SLICES)] = 1
+    misalignment: Annotated[float, si("angle"), Field(ge=0, lt=0.1)] = 0.0
+    misalignment_angle: Annotated[
+        Annotated[float, Field(ge=-4 * math.pi, le=4 * math.pi)] | None, si("angle")
+    ] = None
+    load_offset: Annotated[float, si("length")] = 0.0
 
     @property
     def bushing_radius(self) -> float:

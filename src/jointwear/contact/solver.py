@@ -192,6 +192,24 @@ class ContactSolver:
             compiled=compiled_kernel(config),
         )
 
+    @property
+    def depth_shape(self) -> tuple[int]:
+        """Shape of the run's wear depth: one value per node."""
+        return (self.nodes,)
+
+    def contour(self, wear_depth: FloatArray) -> BushingContour:
+        """The bushing contour worn by ``wear_depth`` [m]."""
+        # built anew from the depth at every update (as a resumed run rebuilds it), never
+        # carried over: ``R + (h + dh)`` and ``(R + h) + dh`` differ in the last bits
+        depth = np.asarray(wear_depth, dtype=float)
+        radius, length = self.parameters.bushing_radius, self.parameters.axial_length
+        return BushingContour._of_depth(radius, depth, length)
+
+    def initial_contour(self) -> BushingContour:
+        """The unworn bushing."""
+        radius, length = self.parameters.bushing_radius, self.parameters.axial_length
+        return BushingContour.circle(radius, self.nodes, length)
+
     def solve(
         self,
         contour: BushingContour,

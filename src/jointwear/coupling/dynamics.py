@@ -261,9 +261,12 @@ def worn_cycle(config: Config, joint: str | None, wear_depth: FloatArray) -> Loa
         The run's configuration.
     joint : str or None
         The clearance joint (``None``: the mechanism's first).
-    wear_depth : ndarray, shape (N,)
-        Wear depth of the bushing [m].
+    wear_depth : ndarray, shape (N,) or (slices, N)
+        Wear depth of the bushing [m]; a map along the pin is averaged over its slices
+        (the mechanism sees the joint's mean contour and gives its total load).
     """
+    if wear_depth.ndim == 2:
+        wear_depth = wear_depth.mean(axis=0)
     cycles = load_cycles(config, wear_depth=wear_depth)
     return cycles[joint] if joint is not None else next(iter(cycles.values()))
 

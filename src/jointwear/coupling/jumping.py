@@ -182,6 +182,8 @@ def jump_error(
     peak = float(np.max(np.abs(after)))
     if not peak > 0.0:
         return 0.0
+    # (a wear map along the pin counts as one profile of all its slices)
+    after, difference = after.ravel(), difference.ravel()
     area = float(np.dot(radius + 0.5 * after, after))
     errors = (
         float(np.max(np.abs(difference))) / peak,

@@ -18,6 +18,7 @@ import numpy as np
 
 from jointwear.coupling.dynamics import DYNAMICS_COLUMNS
 from jointwear.record import UPDATE_COLUMNS
+from jointwear.results.axial import axial_coordinates, axial_shape
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -152,17 +153,17 @@ def _wear_variables(record: RunRecord) -> dict[str, ResultVariable]:
     state, nodes = record.state, record.config.contact.nodes
     saved = state.saved_profiles
     revolutions = np.array(sorted(saved), dtype=np.float64)
-    profiles = np.array([saved[r] for r in revolutions]).reshape(len(revolutions), nodes)
-    wear_rate = state.wear_rate if state.wear_rate is not None else np.zeros(nodes)
+    # along the pin (joint.axial_slices > 1) every profile is a map over (z, theta)
+    shape, map_dims = axial_shape(record.config, nodes)
+    profiles = np.array([saved[r] for r in revolutions]).reshape(len(revolutions), *shape)
+    wear_rate = state.wear_rate if state.wear_rate is not None else np.zeros(shape)
     return {
         "wear_depth": _var(
-            ("revolution", "theta"), profiles, "m", "radial wear depth of the bushing"
+            ("revolution", *map_dims), profiles, "m", "radial wear depth of the bushing"
         ),
-        "wear_rate": _var(
-            ("theta",), wear_rate, "m", "wear depth per revolution at the last update"
-        ),
+        "wear_rate": _var(map_dims, wear_rate, "m", "wear depth per revolution at the last update"),
         "bushing_radius": _var(
-            ("theta",),
+            map_dims,
             record.config.joint.bushing_radius + state.wear_depth,
             "m",
             "final inner radius of the bushing",
@@ -199,6 +200,7 @@ def _cycle_coordinates(record: RunRecord) -> dict[str, ResultVariable]:
     cycle, nodes = record.cycle, record.config.contact.nodes
     revolutions = np.array(sorted(record.state.saved_profiles), dtype=np.float64)
     return {
+        **{name: _var(*spec) for name, spec in axial_coordinates(record.config).items()},
         "theta": _var(("theta",), 2 * np.pi * np.arange(nodes) / nodes, "rad", "bushing angle"),
         "revolution": _var(("revolution",), revolutions, "1", REVOLUTIONS_DONE),
         "step": _var(("step",), np.arange(cycle.steps), "1", "time step of the revolution"),

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+from jointwear.results.axial import axial_summary
 from jointwear.state import revolution_number
 from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS, engineering_checks
 
@@ -56,6 +57,8 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
             "runtime_s": float(dataset.attrs.get("runtime_s", math.nan)),
         }
     )
+    if "z" in dataset["wear_depth"].dims:  # along the pin (a planar run has no z)
+        out.update(axial_summary(dataset["wear_depth"].values[-1], dataset["z"].values))
     return out
 
 

@@ -182,15 +182,18 @@ def evaluate_metrics(wear_depth: ArrayLike, joint: JointGeometry) -> dict[str, f
 
     Parameters
     ----------
-    wear_depth : array_like, shape (N,)
-        Radial wear depth at the nodes [m].
+    wear_depth : array_like, shape (N,) or (slices, N)
+        Radial wear depth at the nodes [m] (a map along the pin: every slice's row).
     joint : JointGeometry
         Radius, clearance, axial length, wall thickness, density, width threshold.
     """
     depth = np.asarray(wear_depth, dtype=float)
     peak = float(depth.max())
+    # a map along the pin (slices, nodes): the width of the slice with the deepest wear,
+    # the area the mean of the slices' (so that the volume is the area times the length)
+    deepest = depth if depth.ndim == 1 else depth[np.unravel_index(depth.argmax(), depth.shape)[0]]
     return _metrics(
-        peak, _width(depth, peak, joint.width_threshold),
+        peak, _width(deepest, peak, joint.width_threshold),
         worn_area(joint.bushing_radius, depth), joint,
     )  # fmt: skip
 
