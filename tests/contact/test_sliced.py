@@ -1,0 +1,159 @@
+"""Whole runs along the pin (``joint.axial_slices > 1``) against closed forms and the
+planar joint."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import jointwear as jw
+from jointwear.contact import ContactParameters, contact_law
+from jointwear.contact.axial import AxialSlices
+from jointwear.contact.sliced import SlicedSolver, solver_of
+from jointwear.contact.solver import ContactSolver
+
+
+def swing(**extra):
+    """A pin swinging under a fixed 200 N load in the bushing (one worn spot, under the
+    load line): 8 steps, 72 nodes, the paper's joint."""
+    overrides = {
+        "mechanism": {
+            "type": "oscillating",
+            "load": "200 N",
+            "load_angle": "-90 deg",
+            "amplitude": "25 deg",
+            "frequency": "1 Hz",
+        },
+        "contact.model": "asymmetric-winkler",
+        "contact.nodes": 72,
+        "contact.spring_area": None,
+        "simulation.steps_per_revolution": 8,
+        "simulation.revolutions": 1,
+        "simulation.update_contour": True,
+        **extra,
+    }
+    return jw.load_config(overrides=overrides)
+
+
+def winkler_offset(config) -> float:
+    """The mid-plane approach of a pin on a linear foundation without clearance,
+    ``delta_0 = W / (k R (pi/2) L)`` [m], ``k`` the law's pressure per penetration."""
+    parameters = ContactParameters.from_sections(config.joint, config.materials, config.contact)
+    law = contact_law(config.contact.model, parameters)
+    stiffness = float(law.pressure(np.array([1e-9]))[0] / 1e-9)
+    joint = config.joint
+    return 200.0 / (stiffness * joint.bushing_radius * joint.axial_length * np.pi / 2)
+
+
+def edge_ratio(result) -> float:
+    """Peak wear of the last slice over the first's."""
+    peaks = result.wear_depth.max(axis=1)
+    return float(peaks[-1] / peaks[0])
+
+
+def test_one_slice_is_the_planar_solver():
+    config = swing()
+    assert type(solver_of(config, "asymmetric-winkler", fused_archard=True)) is ContactSolver
+    sliced = solver_of(
+        config.replace({"joint.axial_slices": 3}), "asymmetric-winkler", fused_archard=True
+    )
+    assert isinstance(sliced, SlicedSolver)
+
+
+@pytest.mark.parametrize("update_every", [1, "adaptive"])
+def test_aligned_slices_wear_as_the_planar_joint(update_every):
+    # an aligned rigid pin loads every slice with W/N and the planar pressure: the whole
+    # run's wear, each saved profile and the worn volume are the planar joint's
+    extra = {"simulation.revolutions": 100, "simulation.update_every": update_every}
+    planar = jw.Simulation(swing(**extra)).run()
+    sliced = jw.Simulation(swing(**extra, **{"joint.axial_slices": 4})).run()
+    reference = planar.dataset["wear_depth"].values
+    maps = sliced.dataset["wear_depth"].values
+    assert maps.shape == (reference.shape[0], 4, 72)
+    scale = reference.max()
+    assert scale > 0
+    assert np.abs(maps - reference[:, None, :]).max() <= 1e-9 * scale
+    for key in ("peak_wear_depth_m", "wear_volume_m3", "wear_width_deg"):
+        assert sliced.summary()[key] == pytest.approx(planar.summary()[key], rel=1e-9)
+    assert sliced.summary()["edge_to_mid_wear_ratio"] == pytest.approx(1.0, rel=1e-9)
+    # slices worn alike: the deepest is said to be the one nearest the mid-plane
+    assert abs(sliced.summary()["peak_wear_z_m"]) == pytest.approx(0.25 * 0.02 / 2)
+
+
+#: a linear foundation without clearance spreads the contact to the quarter circle
+QUARTER_CIRCLE = pytest.mark.filterwarnings(
+    "ignore:contact.model:jointwear.errors.ContactModelWarning"
+)
+
+
+@QUARTER_CIRCLE
+def test_imposed_tilt_on_a_winkler_foundation_wears_the_edges_in_proportion():
+    # rigid pin, tilt gamma imposed in the load plane, linear foundation, clearance ~0:
+    # every slice's line load is k R (pi/2) (delta_0 + gamma z), and so is the wear
+    # under the load line; edge to edge (delta_0 + gamma L/2) / (delta_0 - gamma L/2)
+    count, tilt = 80, 4e-5
+    config = swing(
+        **{"joint.clearance": "1e-9 m", "joint.axial_slices": count, "joint.misalignment": tilt}
+    )
+    centre, edge = winkler_offset(config), 0.5 * config.joint.axial_length
+    measured = edge_ratio(jw.Simulation(config).run())
+    continuous = (centre + tilt * edge) / (centre - tilt * edge)
+    assert measured == pytest.approx(continuous, rel=1e-2)
+    # at the edge slices' centres the closed form holds to the pin's curvature
+    z = AxialSlices(config.joint.axial_length, count).centres[-1]
+    assert measured == pytest.approx((centre + tilt * z) / (centre - tilt * z), rel=1e-3)
+
+
+@QUARTER_CIRCLE
+def test_a_load_off_the_mid_plane_wears_the_ends_as_a_rigid_pin_on_a_foundation():
+    # a self-aligning pin under a load at z = a on a linear foundation: the line load is
+    # linear in z with the load's moment, ends in the ratio (1 + 6a/L) / (1 - 6a/L)
+    count, offset = 40, 0.5e-3
+    config = swing(
+        **{"joint.clearance": "1e-9 m", "joint.axial_slices": count, "joint.load_offset": offset}
+    )
+    length = config.joint.axial_length
+    measured = edge_ratio(jw.Simulation(config).run())
+    q = 6 * offset / length
+    assert measured == pytest.approx((1 + q) / (1 - q), rel=1e-2)
+    # the midpoint rule's moment of inertia of the slices: q N / (N + 1) at their centres
+    q_slices = q * count / (count + 1)
+    assert measured == pytest.approx((1 + q_slices) / (1 - q_slices), rel=1e-3)
+
+
+def test_a_misaligned_joint_wears_out_at_an_edge_and_sooner():
+    extra = {
+        "joint.axial_slices": 5,
+        "simulation.revolutions": 10**6,
+        "simulation.update_every": "adaptive",
+        "life.peak_wear_depth": "5 um",
+    }
+    aligned = jw.Simulation(swing(**extra)).run().summary()
+    misaligned_run = jw.Simulation(swing(**extra, **{"joint.misalignment": 1e-3})).run()
+    misaligned = misaligned_run.summary()
+    assert aligned["stopped_by"] == misaligned["stopped_by"] == "peak_wear_depth"
+    assert misaligned["life_revolutions"] < aligned["life_revolutions"]
+    centres = AxialSlices(0.02, 5).centres
+    assert misaligned["peak_wear_z_m"] in (centres[0], centres[-1])
+    assert misaligned["edge_to_mid_wear_ratio"] > 1.0
+    deepest = np.unravel_index(np.argmax(misaligned_run.wear_depth), (5, 72))[0]
+    assert deepest in (0, 4)
+
+
+def test_a_bending_pin_in_a_clevis_loads_both_edges_more_than_the_middle():
+    # a stiff (bronze-like) wall under a long pin held at its ends: the pin bows away
+    # from the middle of the bushing, whose ends then carry more
+    config = swing(
+        **{
+            "joint.axial_slices": 9,
+            "materials.bushing.youngs_modulus": "110 GPa",
+            "pin": {"model": "beam", "support": "clevis", "forks": ["-15 mm", "15 mm"]},
+            "mechanism.load": "5 kN",
+        }
+    )
+    result = jw.Simulation(config).run()
+    peaks = result.wear_depth.max(axis=1)
+    assert peaks[0] > peaks[4]
+    assert peaks[-1] > peaks[4]
+    assert peaks[0] == pytest.approx(peaks[-1], rel=1e-6)  # symmetric supports
+    assert result.summary()["edge_to_mid_wear_ratio"] > 1.0
