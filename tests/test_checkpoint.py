@@ -325,3 +325,27 @@ def test_sigkill_then_resume_gives_the_uninterrupted_numbers(tmp_path, capsys):
         dataset["update_revolution"].values, reference.dataset["update_revolution"].values
     )
     print(f"killed after revolution {killed_at.revolution}")
+
+
+@pytest.mark.parametrize("update_every", [1, "adaptive"])
+def test_a_run_along_the_pin_resumes_bitwise(tmp_path, update_every):
+    # the wear map (slices, nodes), its saved maps and rates through a checkpoint
+    config = load_config(
+        UPDATE_CONFIG,
+        {
+            **SMALL,
+            "simulation.steps_per_revolution": 12,
+            "simulation.revolutions": 30,
+            "simulation.update_every": update_every,
+            "simulation.checkpoint_every": 4,
+            "joint.axial_slices": 3,
+            "joint.misalignment": "0.02 deg",
+        },
+    )
+    reference = Simulation(config).run()
+    assert reference.dataset["wear_depth"].dims == ("revolution", "z", "theta")
+    interrupted_run(config, tmp_path, 9)
+    resumed_config, state, saver = load_checkpoint(tmp_path)
+    assert state.wear_depth.shape == (3, 60)
+    resumed = Simulation(resumed_config).run(state=state, on_step=saver)
+    assert_same_dataset(reference.dataset, resumed.dataset)
