@@ -10,7 +10,7 @@ import jointwear as jw
 from jointwear.contact import ContactParameters, contact_law
 from jointwear.contact.axial import AxialSlices
 from jointwear.contact.sliced import SlicedSolver, solver_of
-from jointwear.contact.solver import ContactSolver
+from jointwear.contact.solver import ContactSolver, WarmStart
 
 
 def swing(**extra):
@@ -157,3 +157,46 @@ def test_a_bending_pin_in_a_clevis_loads_both_edges_more_than_the_middle():
     assert peaks[-1] > peaks[4]
     assert peaks[0] == pytest.approx(peaks[-1], rel=1e-6)  # symmetric supports
     assert result.summary()["edge_to_mid_wear_ratio"] > 1.0
+
+
+@pytest.mark.parametrize(
+    "extra",
+    [
+        {"joint.misalignment": 2e-4},
+        {"joint.load_offset": 2e-3},
+        {"joint.misalignment": 2e-4, "joint.misalignment_angle": "30 deg"},
+        {"contact.model": "nlcp", "contact.nlcp_variant": "mesh-independent"},
+    ],
+)
+def test_the_compiled_balance_is_the_axial_balance(extra):
+    # warm-started from a perturbed balance, on slices worn differently: the compiled
+    # balance of every step gives solve_axial's pressure, forces and Archard's wear
+    config = jw.load_config(
+        overrides={
+            "simulation.steps_per_revolution": 30,
+            "contact.nodes": 90,
+            "contact.spring_area": None,
+            "simulation.update_contour": True,
+            "joint.axial_slices": 7,
+            **extra,
+        }
+    )
+    simulation = jw.Simulation(config)
+    solver, cycle, sliding = simulation.solver, simulation.load_cycle, simulation.sliding_distance
+    theta = solver.initial_contour().theta
+    depth = np.linspace(0.5, 2.0, 7)[:, None] * 2e-6 * np.cos(theta - 1.0).clip(0)
+    contour = solver.contour(depth)
+    solver.planar.compiled = False
+    reference = solver.solve(contour, cycle)
+    solver.planar.compiled = None
+    start = solver.warm_start(reference, contour, cycle.azimuth)
+    warm = WarmStart(np.asarray(start.warm_offset) * (1 + 1e-3), None, None)
+    compiled = solver.solve(contour, cycle, warm=warm)
+    peak = reference.slice_pressure.max()
+    assert np.abs(compiled.slice_pressure - reference.slice_pressure).max() <= 1e-12 * peak
+    assert np.abs(compiled.slice_force - reference.slice_force).max() <= 1e-10
+    fused = solver.solve(contour, cycle, warm=warm, sliding=sliding)
+    assert fused.slice_pressure is None
+    wear = solver.wear_per_revolution(fused, simulation.wear_law, sliding)
+    expected = solver.wear_per_revolution(reference, simulation.wear_law, sliding)
+    assert np.abs(wear - expected).max() <= 1e-12 * expected.max()

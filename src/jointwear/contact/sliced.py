@@ -88,12 +88,16 @@ class SlicedSolution(ContactSolution):
         Pin centre along the load at the mid-plane ``delta_0`` [m].
     tilt : ndarray, shape (M,)
         Pin tilt in the load plane ``gamma`` [rad].
+    slice_wear : ndarray, shape (N, nodes) or None
+        Archard's wear of the revolution on every slice, added up by the compiled
+        balance inside the loop [m]; such a solution has no pressure (``None``).
     """
 
     slice_pressure: FloatArray = None  # type: ignore[assignment]
     slice_force: FloatArray = None  # type: ignore[assignment]
     centre_offset: FloatArray = None  # type: ignore[assignment]
     tilt: FloatArray = None  # type: ignore[assignment]
+    slice_wear: FloatArray | None = None
 
 
 class SlicedSolver:
@@ -194,55 +198,163 @@ class SlicedSolver:
     ) -> SlicedSolution:
         """Every step of ``cycle`` balanced on the slices of ``contour`` (the parameters
         of :meth:`jointwear.contact.solver.ContactSolver.solve`; a worn pin is refused by
-        the configuration, the warm start is not needed by the axial balance)."""
+        the configuration).
+
+        A warm-started solve of a rigid pin under a power law goes through the compiled
+        balance (:mod:`jointwear.contact._sliced_kernel`), which inside the loop with
+        Archard's law (``sliding`` given) adds up each slice's wear without assembling
+        the pressure; a load it does not balance, a cold start, a bending pin and any other
+        law are balanced by :func:`~jointwear.contact.axial.solve_axial` step by step.
+        """
         if facing is not None:
             raise ConfigError(
                 "materials.pin.wear_coefficient: a wearing pin needs joint.axial_slices = 1"
             )
-        contours = contour.contours
-        balances = [
-            solve_axial(
-                contours,
-                self.slices,
-                self.pin,
-                float(load),
-                float(azimuth),
-                self.slice_law,
-                load_offset=self.load_offset,
-                misalignment=self._misalignment(float(azimuth)),
-                compliance=self.matrix,
-                tolerance=self.planar.tolerance,
-                max_penetration=self.parameters.bushing_thickness,
-            )
-            for load, azimuth in zip(cycle.load, cycle.azimuth, strict=True)
-        ]
-        return self._solution(contour, np.asarray(cycle.azimuth, dtype=float), balances)
+        guess = None if warm is None else np.asarray(warm.guess(ahead), dtype=float)
+        if self._compiles and guess is not None and guess.shape == (cycle.steps, 2):
+            return self._compiled(contour, cycle, guess, sliding)
+        balances = [self._balance(contour, load, azimuth) for load, azimuth in _loads(cycle)]
+        pressure = np.stack([b.pressure for b in balances], axis=1)
+        state = np.array([[b.centre_offset, b.tilt] for b in balances])
+        return self._solution(
+            contour,
+            cycle,
+            state,
+            pressure=pressure,
+            force=np.stack([b.force for b in balances]),
+            penetration=np.array([b.penetration.max() for b in balances]),
+            iterations=np.array([b.evaluations for b in balances], dtype=np.int64),
+        )
+
+    @property
+    def _compiles(self) -> bool:
+        """Whether the compiled balance serves this run's warm solves."""
+        law = self.slice_law
+        return (
+            self.planar.compiled is not False
+            and self.matrix is None
+            and self.play == 0
+            and not law.symmetric
+            and hasattr(law, "coefficient")
+            and hasattr(law, "exponent")
+        )
+
+    def _balance(self, contour: SlicedContour, load: float, azimuth: float) -> AxialSolution:
+        """One load balanced on the slices by :func:`solve_axial`."""
+        return solve_axial(
+            contour.contours,
+            self.slices,
+            self.pin,
+            load,
+            azimuth,
+            self.slice_law,
+            load_offset=self.load_offset,
+            misalignment=self._misalignment(azimuth),
+            compliance=self.matrix,
+            tolerance=self.planar.tolerance,
+            max_penetration=self.parameters.bushing_thickness,
+        )
+
+    def _tilts(self, azimuth: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """The imposed tilt along and across each load [rad]."""
+        if self.misalignment_plane is None:
+            return np.full(azimuth.size, self.misalignment), np.zeros(azimuth.size)
+        relative = self.misalignment_plane - azimuth
+        return self.misalignment * np.cos(relative), self.misalignment * np.sin(relative)
+
+    def _areas(self, contour: SlicedContour) -> FloatArray:
+        """Every node's spring area [m^2], shape (N, nodes) (:class:`SliceContact`'s)."""
+        radius, width = contour.radius, self.slices.width
+        if self.slice_law.force_area is None:
+            return radius * contour.dtheta * width
+        share = self.slice_law.force_area * width / self.slices.length
+        return np.full(radius.shape, share)
+
+    def _compiled(
+        self,
+        contour: SlicedContour,
+        cycle: LoadCycle,
+        guess: FloatArray,
+        sliding: FloatArray | None,
+    ) -> SlicedSolution:
+        """The compiled balance of every step from ``guess`` (``(delta_0, gamma)`` per step
+        [m, rad]); the loads it leaves are balanced by :func:`solve_axial`."""
+        from jointwear.contact import _sliced_kernel as kernel  # (numba: loaded when used)
+
+        load, azimuth = (np.ascontiguousarray(a, dtype=float) for a in (cycle.load, cycle.azimuth))
+        along, across = self._tilts(azimuth)
+        law = np.array([self.pin.radius, self.slice_law.coefficient, self.slice_law.exponent])
+        gap, area = contour.radius - self.pin.radius, self._areas(contour)
+        theta, z = contour.theta, self.slices.centres
+        state = np.array(guess, dtype=float)
+        status = np.zeros(load.size, dtype=np.int64)
+        evaluations = np.zeros(load.size, dtype=np.int64)
+        free = self.misalignment == 0
+        kernel.balance(load, azimuth, along, across, free, self.load_offset, z, gap, area,
+                       np.cos(theta), np.sin(theta), law, self.planar.tolerance,
+                       self.planar.max_iterations, state, status, evaluations)  # fmt: skip
+        for k in np.flatnonzero(status != kernel.CONVERGED):
+            balanced = self._balance(contour, float(load[k]), float(azimuth[k]))
+            state[k] = balanced.centre_offset, balanced.tilt
+            evaluations[k] += balanced.evaluations
+        fused = sliding is not None and self.planar.wear_coefficient is not None
+        wear = np.zeros(self.depth_shape)
+        pressure = np.zeros((0, 0, 0)) if fused else np.zeros((z.size, load.size, theta.size))
+        coefficient = self.planar.wear_coefficient if fused else 0.0
+        kernel.settle(load, azimuth, along, across, z, gap, area, np.cos(theta), np.sin(theta),
+                      law, state, np.zeros(load.size) if sliding is None else sliding,
+                      coefficient, wear, pressure)  # fmt: skip
+        if fused:
+            return self._solution(contour, cycle, state, iterations=evaluations, wear=wear)
+        cosine = np.cos(theta[None, :] - azimuth[:, None])
+        force = np.einsum("ikj,ij,kj->ki", pressure, area, cosine)
+        return self._solution(contour, cycle, state, pressure=pressure, force=force,
+                              iterations=evaluations)  # fmt: skip
 
     def _solution(
-        self, contour: SlicedContour, azimuth: FloatArray, balances: list[AxialSolution]
+        self,
+        contour: SlicedContour,
+        cycle: LoadCycle,
+        state: FloatArray,
+        *,
+        pressure: FloatArray | None = None,
+        force: FloatArray | None = None,
+        penetration: FloatArray | None = None,
+        iterations: FloatArray,
+        wear: FloatArray | None = None,
     ) -> SlicedSolution:
-        """The :class:`SlicedSolution` of a revolution's balances (module notes)."""
-        pressure = np.stack([b.pressure for b in balances], axis=1)
-        force = np.stack([b.force for b in balances])
-        centre = np.array([b.centre_offset for b in balances])
-        left, right = _half_angles(pressure, contour.theta, azimuth)
-        springs = (pressure > 0).sum(axis=2).max(axis=0)
+        """The :class:`SlicedSolution` of a revolution's balances (module notes); a fused
+        revolution (``wear`` given) has no pressure."""
+        azimuth = np.asarray(cycle.azimuth, dtype=float)
+        centre = state[:, 0]
+        steps = azimuth.size
+        if pressure is None:
+            left = right = np.zeros(steps)
+            springs = np.zeros(steps, dtype=np.int64)
+            mean = None
+        else:
+            left, right = _half_angles(pressure, contour.theta, azimuth)
+            springs = (pressure > 0).sum(axis=2).max(axis=0)
+            mean = pressure.mean(axis=0)
+        if penetration is None:
+            penetration = np.full(steps, np.nan)
         return SlicedSolution(
-            pressure=pressure.mean(axis=0),
+            pressure=mean,
             eccentricity=np.column_stack([centre * np.cos(azimuth), centre * np.sin(azimuth)]),
-            penetration=np.array([b.penetration.max() for b in balances]),
-            normal_force=force.sum(axis=1),
-            tangential_force=np.array([b.lateral_force.sum() for b in balances]),
+            penetration=penetration,
+            normal_force=np.full(steps, np.nan) if force is None else force.sum(axis=1),
+            tangential_force=np.zeros(steps),
             half_angle_left=left,
             half_angle_right=right,
             springs_left=springs // 2,
             springs_right=springs - springs // 2,
-            iterations=np.array([b.evaluations for b in balances], dtype=np.int64),
+            iterations=iterations,
             model=self.slice_law.name,
             slice_pressure=pressure,
             slice_force=force,
             centre_offset=centre,
-            tilt=np.array([b.tilt for b in balances]),
+            tilt=state[:, 1],
+            slice_wear=wear,
         )
 
     def wear_per_revolution(
@@ -253,6 +365,8 @@ class SlicedSolver:
     ) -> FloatArray:
         """The wear map of one revolution [m], shape ``(N, nodes)``: the run's wear law on
         each slice's pressure (``wear_law(pressure [Pa], sliding [m]) -> depth [m]``)."""
+        if solution.slice_wear is not None:  # Archard's, added up by the compiled balance
+            return solution.slice_wear
         return np.stack([wear_law(p, sliding) for p in solution.slice_pressure])
 
     def warm_start(
@@ -263,11 +377,16 @@ class SlicedSolver:
         previous_offset: FloatArray | None = None,
         interval: int = 1,
     ) -> WarmStart:
-        """The state's record of the last solve: the mid-plane offsets [m] (the axial
-        balance brackets its own start)."""
-        offset = np.array(solution.centre_offset)
+        """Where the next solve starts: each step's ``(delta_0, gamma)`` [m, rad] and
+        their change per revolution since ``previous_offset``, ``interval`` revolutions
+        before (:class:`~jointwear.contact.solver.WarmStart`)."""
+        offset = np.column_stack([solution.centre_offset, solution.tilt])
+        slope = None
+        if previous_offset is not None and previous_offset.shape == offset.shape and interval > 0:
+            slope = (offset - previous_offset) / interval
+            slope.setflags(write=False)
         offset.setflags(write=False)
-        return WarmStart(offset, None, None)
+        return WarmStart(offset, slope, None)
 
 
 def _half_angles(
@@ -289,3 +408,8 @@ def _half_angles(
     left = np.where(loaded, relative, 0.0).max(axis=1, initial=0.0)
     right = -np.where(loaded, relative, 0.0).min(axis=1, initial=0.0)
     return left, right
+
+
+def _loads(cycle: LoadCycle):
+    """``(load [N], azimuth [rad])`` of every step as floats."""
+    return zip(cycle.load.tolist(), cycle.azimuth.tolist(), strict=True)
