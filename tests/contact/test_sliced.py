@@ -60,13 +60,18 @@ def test_one_slice_is_the_planar_solver():
     assert isinstance(sliced, SlicedSolver)
 
 
-@pytest.mark.parametrize("update_every", [1, "adaptive"])
-def test_aligned_slices_wear_as_the_planar_joint(update_every):
+@pytest.mark.parametrize(
+    ("update_every", "compiled"), [(1, None), ("adaptive", None), ("adaptive", False)]
+)
+def test_aligned_slices_wear_as_the_planar_joint(update_every, compiled):
     # an aligned rigid pin loads every slice with W/N and the planar pressure: the whole
-    # run's wear, each saved profile and the worn volume are the planar joint's
+    # run's wear, each saved profile and the worn volume are the planar joint's, by the
+    # compiled balance (None: where it serves) and by solve_axial alone (False)
     extra = {"simulation.revolutions": 100, "simulation.update_every": update_every}
     planar = jw.Simulation(swing(**extra)).run()
-    sliced = jw.Simulation(swing(**extra, **{"joint.axial_slices": 4})).run()
+    simulation = jw.Simulation(swing(**extra, **{"joint.axial_slices": 4}))
+    simulation.solver.planar.compiled = compiled
+    sliced = simulation.run()
     reference = planar.dataset["wear_depth"].values
     maps = sliced.dataset["wear_depth"].values
     assert maps.shape == (reference.shape[0], 4, 72)
@@ -191,10 +196,11 @@ def test_the_compiled_balance_is_the_axial_balance(extra):
     solver.planar.compiled = None
     start = solver.warm_start(reference, contour, cycle.azimuth)
     warm = WarmStart(np.asarray(start.warm_offset) * (1 + 1e-3), None, None)
-    compiled = solver.solve(contour, cycle, warm=warm)
     peak = reference.slice_pressure.max()
-    assert np.abs(compiled.slice_pressure - reference.slice_pressure).max() <= 1e-12 * peak
-    assert np.abs(compiled.slice_force - reference.slice_force).max() <= 1e-10
+    for compiled in (solver.solve(contour, cycle, warm=warm), solver.solve(contour, cycle)):
+        # (warm, and cold: each load from the last one's approach)
+        assert np.abs(compiled.slice_pressure - reference.slice_pressure).max() <= 1e-12 * peak
+        assert np.abs(compiled.slice_force - reference.slice_force).max() <= 1e-10
     fused = solver.solve(contour, cycle, warm=warm, sliding=sliding)
     assert fused.slice_pressure is None
     wear = solver.wear_per_revolution(fused, simulation.wear_law, sliding)

@@ -11,6 +11,15 @@ the axial balance's (the force's ``max(tolerance, 8 eps sum|f|)`` or the few ulp
 offsets that explain a residual; the moment's the same at the half-length). A load that
 does not converge here is flagged (``status``) and balanced by ``solve_axial``.
 
+What differs from ``solve_axial`` is the arithmetic: the slices share the load's
+direction, so ``cos`` and ``sin`` of every node's angle from the load are computed once
+per load; only a window of nodes is visited, those that the pin, a little further in
+than its warm start, could touch on any slice (the smallest gap of every node over the
+slices against the deepest slice's offset; the window is widened and the load solved
+again where the balance goes beyond it); arrays are repeated three times so that a
+window never wraps; and the pressure of the balanced load is kept from its last evaluation, to
+be added to the wear (``K_d p ds``) or written out.
+
 Imported by :mod:`jointwear.contact.sliced` on first use only (loading numba costs a few
 tenths of a second).
 """
@@ -25,129 +34,194 @@ from numba import njit
 #: ``status`` of a load
 CONVERGED, NOT_CONVERGED = 0, 1
 _EPS = 2.220446049250313e-16
-_FLAGS = {"cache": True, "error_model": "numpy"}
+#: the window holds the nodes the pin could touch this much further in than its start [-]
+_REACH = 1e-2
+_FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
 
 
 @njit(inline="always", **_FLAGS)
-def _pressure(depth, coefficient, exponent):
-    if exponent == 1.0:
-        return coefficient * depth
-    if exponent == 1.5:
-        return coefficient * depth * math.sqrt(depth)
-    return coefficient * depth**exponent
-
-
-@njit(inline="always", **_FLAGS)
-def _derivative(depth, coefficient, exponent):
-    if exponent == 1.0:
-        return coefficient
-    if exponent == 1.5:
-        return 1.5 * coefficient * math.sqrt(depth)
-    return coefficient * exponent * depth ** (exponent - 1.0)
-
-
-@njit(inline="always", **_FLAGS)
-def _depth(s, t, c, sn, gap, rp):
-    """Penetration of a node [m] and the pin across its ray [m] (``pin_penetration``)."""
-    across = t * c - s * sn
-    lateral = min(across * across, rp * rp)
-    return s * c + t * sn - gap - lateral / (math.sqrt(rp * rp - lateral) + rp), across
-
-
-@njit(**_FLAGS)
-def _evaluate(centre, tilt, tilt_across, z, gap, area, cos_t, sin_t, cpsi, spsi, law, sums):
-    """``sums`` = (sum F, sum F z, sum k, sum k z, sum k z^2, sum |f|, sum |k|, sum |k z|)."""
-    rp, coefficient, exponent = law[0], law[1], law[2]
-    sums[:] = 0.0
+def _window(centre, tilt, tilt_across, z, gap_min, cos_e, sin_e, cpsi, spsi, nodes, reach):
+    """First node and width of the window of a load (indices into the padded arrays)."""
+    deepest = -1e300
     for i in range(z.size):
-        s, t = centre + tilt * z[i], tilt_across * z[i]
-        force, slope, total = 0.0, 0.0, 0.0
-        for j in range(cos_t.size):
-            c = cos_t[j] * cpsi + sin_t[j] * spsi
-            sn = sin_t[j] * cpsi - cos_t[j] * spsi
-            if s * c + t * sn <= gap[i, j]:  # (the pin's curvature only deepens the gap)
-                continue
-            depth, across = _depth(s, t, c, sn, gap[i, j], rp)
-            if depth <= 0.0:
-                continue
-            f = _pressure(depth, coefficient, exponent) * area[i, j]
-            lateral = min(across * across, rp * rp * (1.0 - _EPS))
-            ray = c + sn * across / math.sqrt(rp * rp - lateral)
-            force += f * c
-            total += abs(f)
-            slope += _derivative(depth, coefficient, exponent) * area[i, j] * c * ray
-        sums[0] += force
-        sums[1] += force * z[i]
-        sums[2] += slope
-        sums[3] += slope * z[i]
-        sums[4] += slope * z[i] * z[i]
-        sums[5] += total
-        sums[6] += abs(slope)
-        sums[7] += abs(slope * z[i])
+        deepest = max(deepest, centre + tilt * z[i])
+    deepest = abs(deepest) * (1.0 + reach) + reach * abs(tilt_across) * np.abs(z).max()
+    side = abs(tilt_across) * np.abs(z).max()
+    centre_node = math.floor(math.atan2(spsi, cpsi) / (2 * math.pi) * nodes + 0.5) % nodes
+    low, high = centre_node + nodes, centre_node + nodes
+    # counter-clockwise, then clockwise: the outermost node that can touch (a window of
+    # at most a turn, which a lateral tilt may need beyond the quarter circles)
+    for step in range(1, (nodes - 1) // 2 + 1):
+        j = centre_node + nodes + step
+        c = cos_e[j] * cpsi + sin_e[j] * spsi
+        sn = sin_e[j] * cpsi - cos_e[j] * spsi
+        if deepest * c + side * abs(sn) > gap_min[j]:
+            high = j
+    for step in range(1, nodes // 2 + 1):
+        j = centre_node + nodes - step
+        c = cos_e[j] * cpsi + sin_e[j] * spsi
+        sn = sin_e[j] * cpsi - cos_e[j] * spsi
+        if deepest * c + side * abs(sn) > gap_min[j]:
+            low = j
+    return low, high - low + 1, deepest
+
+
+@njit(inline="always", **_FLAGS)
+def _linear(s, t, c, sn, gap, area, start, width, rp, coefficient, kept):
+    """One slice under ``p = c delta``: resultant along the load [N], ``dF/ds`` [N/m] and
+    ``sum |f|`` [N]; each node's pressure into ``kept`` [Pa]."""
+    force, slope, magnitude = 0.0, 0.0, 0.0
+    for jj in range(width):
+        across = t * c[jj] - s * sn[jj]
+        lateral = min(across * across, rp * rp * (1.0 - _EPS))
+        root = math.sqrt(rp * rp - lateral)
+        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - lateral / (root + rp)
+        p = coefficient * max(depth, 0.0)
+        kept[jj] = p
+        f = p * area[start + jj]
+        force += f * c[jj]
+        magnitude += f
+        dp = coefficient if depth > 0.0 else 0.0
+        slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * across / root)
+    return force, slope, magnitude
+
+
+@njit(inline="always", **_FLAGS)
+def _power(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent, kept):
+    """:func:`_linear` under ``p = c delta^n``."""
+    force, slope, magnitude = 0.0, 0.0, 0.0
+    for jj in range(width):
+        across = t * c[jj] - s * sn[jj]
+        lateral = min(across * across, rp * rp * (1.0 - _EPS))
+        root = math.sqrt(rp * rp - lateral)
+        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - lateral / (root + rp)
+        positive = max(depth, 0.0)
+        if exponent == 1.5:
+            p = coefficient * positive * math.sqrt(positive)
+            dp = 1.5 * coefficient * math.sqrt(positive)
+        else:
+            p = coefficient * positive**exponent
+            dp = 0.0
+            if depth > 0.0:
+                dp = coefficient * exponent * positive ** (exponent - 1.0)
+        kept[jj] = p
+        f = p * area[start + jj]
+        force += f * c[jj]
+        magnitude += f
+        slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * across / root)
+    return force, slope, magnitude
 
 
 @njit(**_FLAGS)
-def balance(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap, area, cos_t,
-            sin_t, law, tolerance, max_iterations, state, status, evaluations):  # fmt: skip
-    """Balance every load of a revolution; ``state[k] = (delta_0, gamma)`` holds the warm
-    start on entry and the balance on return [m, rad]."""
-    sums = np.zeros(8)
-    half = 0.5 * (z[-1] - z[0]) * z.size / max(z.size - 1, 1)
+def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap, area,
+               gap_min, cos_e, sin_e, law, tolerance, max_iterations, state, status,
+               evaluations, sliding, wear_coefficient, wear, pressure, cold):  # fmt: skip
+    """Balance every load of a revolution and settle it.
+
+    ``state[k] = (delta_0, gamma)`` holds the warm start on entry and the balance on
+    return [m, rad]; ``gap``, ``area`` [m, m^2] are (N, 3 nodes), each row three times, and
+    ``gap_min``, ``cos_e``, ``sin_e`` (3 nodes,) likewise. Where ``wear_coefficient > 0``
+    Archard's ``K_d p ds`` of every balanced load is added to ``wear`` (N, 3 nodes; the
+    caller folds the thirds), else its pressure is written to ``pressure`` (N, M, nodes).
+    ``cold``: no warm start; each load starts from the last one's approach (the first
+    from a touch), doubled until the slices carry the load, then Newton's method from
+    that side (the resultant grows and is convex in the offset).
+    """
+    rp, coefficient, exponent = law[0], law[1], law[2]
+    count, nodes = z.size, gap.shape[1] // 3
+    half = 0.5 * (z[-1] - z[0]) * count / max(count - 1, 1)
     extent = np.abs(z).max()
+    c = np.empty(nodes)
+    sn = np.empty(nodes)
+    kept = np.empty((count, nodes))  # the last evaluation's pressure of the window
+    approach = 1e-9 * rp
     for k in range(load.size):
         cpsi, spsi = math.cos(azimuth[k]), math.sin(azimuth[k])
+        base = gap_min[math.floor(math.atan2(spsi, cpsi) / (2 * math.pi) * nodes + 0.5) % nodes]
+        if cold:
+            state[k, 0] = base + approach
+            state[k, 1] = state[k - 1, 1] if k > 0 and free else 0.0
+        pushing = cold
         centre = state[k, 0]
         tilt = state[k, 1] if free else tilt_along[k]
+        across_tilt = tilt_across[k]
         status[k] = NOT_CONVERGED
-        for iteration in range(max_iterations):
-            _evaluate(centre, tilt, tilt_across[k], z, gap, area, cos_t, sin_t, cpsi, spsi,
-                      law, sums)  # fmt: skip
-            evaluations[k] = iteration + 1
+        reach = _REACH
+        start, width, covered = _window(centre, tilt, across_tilt, z, gap_min, cos_e, sin_e,
+                                        cpsi, spsi, nodes, reach)  # fmt: skip
+        for jj in range(width):
+            c[jj] = cos_e[start + jj] * cpsi + sin_e[start + jj] * spsi
+            sn[jj] = sin_e[start + jj] * cpsi - cos_e[start + jj] * spsi
+        used = 0
+        while used < max_iterations:
+            used += 1
+            force_sum, moment_sum, k0, k1, k2, total, k_abs, kz_abs = (0.0,) * 8
+            for i in range(count):
+                s, t = centre + tilt * z[i], across_tilt * z[i]
+                row, areas, out = gap[i], area[i], kept[i]
+                if exponent == 1.0:
+                    force, slope, magnitude = _linear(s, t, c, sn, row, areas, start, width, rp,
+                                                      coefficient, out)  # fmt: skip
+                else:
+                    force, slope, magnitude = _power(s, t, c, sn, row, areas, start, width, rp,
+                                                     coefficient, exponent, out)  # fmt: skip
+                force_sum += force
+                moment_sum += force * z[i]
+                k0 += slope
+                k1 += slope * z[i]
+                k2 += slope * z[i] * z[i]
+                total += magnitude
+                k_abs += abs(slope)
+                kz_abs += abs(slope * z[i])
             size = max(abs(centre), abs(tilt) * extent)
-            floor = max(tolerance, 8.0 * _EPS * sums[5])
-            residual = sums[0] - load[k]
-            moment = sums[1] - load[k] * load_offset
-            force_ok = abs(residual) <= floor + 4.0 * _EPS * sums[6] * size
-            moment_ok = abs(moment) <= floor * half + 4.0 * _EPS * sums[7] * size
+            floor = max(tolerance, 8.0 * _EPS * total)
+            residual = force_sum - load[k]
+            moment = moment_sum - load[k] * load_offset
+            force_ok = abs(residual) <= floor + 4.0 * _EPS * k_abs * size
+            moment_ok = abs(moment) <= floor * half + 4.0 * _EPS * kz_abs * size
+            if residual < 0.0 and (pushing or not k0 > 0.0):
+                # short of the load (or out of contact): twice as far in
+                centre = base + 2.0 * max(centre - base, 1e-9 * rp)
+                continue
+            pushing = False
             if force_ok and (not free or moment_ok):
-                status[k] = CONVERGED
-                break
+                deepest = -1e300
+                for i in range(count):
+                    deepest = max(deepest, centre + tilt * z[i])
+                if deepest <= covered:
+                    status[k] = CONVERGED
+                    break
+                # beyond the window: widen it about the balance found and go on
+                reach *= 4.0
+                start, width, covered = _window(centre, tilt, across_tilt, z, gap_min, cos_e,
+                                                sin_e, cpsi, spsi, nodes, reach)  # fmt: skip
+                for jj in range(width):
+                    c[jj] = cos_e[start + jj] * cpsi + sin_e[start + jj] * spsi
+                    sn[jj] = sin_e[start + jj] * cpsi - cos_e[start + jj] * spsi
+                continue
             if free:
-                det = sums[2] * sums[4] - sums[3] * sums[3]
+                det = k0 * k2 - k1 * k1
                 if not det > 0.0:
                     break
-                centre -= (sums[4] * residual - sums[3] * moment) / det
-                tilt -= (sums[2] * moment - sums[3] * residual) / det
+                centre -= (k2 * residual - k1 * moment) / det
+                tilt -= (k0 * moment - k1 * residual) / det
             else:
-                if not sums[2] > 0.0:
+                if not k0 > 0.0:
                     break
-                centre -= residual / sums[2]
+                centre -= residual / k0
             if not (math.isfinite(centre) and math.isfinite(tilt)):
                 break
+        evaluations[k] = used
         state[k, 0], state[k, 1] = centre, tilt
-
-
-@njit(**_FLAGS)
-def settle(load, azimuth, tilt_along, tilt_across, z, gap, area, cos_t, sin_t, law, state,
-           sliding, wear_coefficient, wear, pressure):  # fmt: skip
-    """From balanced ``state``: Archard's wear ``K_d p ds`` added to ``wear`` (N, nodes)
-    where ``wear_coefficient > 0``, else every pressure into ``pressure`` (N, M, nodes)."""
-    rp, coefficient, exponent = law[0], law[1], law[2]
-    for k in range(load.size):
-        cpsi, spsi = math.cos(azimuth[k]), math.sin(azimuth[k])
-        factor = wear_coefficient * sliding[k]
-        for i in range(z.size):
-            s, t = state[k, 0] + state[k, 1] * z[i], tilt_across[k] * z[i]
-            for j in range(cos_t.size):
-                c = cos_t[j] * cpsi + sin_t[j] * spsi
-                sn = sin_t[j] * cpsi - cos_t[j] * spsi
-                if s * c + t * sn <= gap[i, j]:
-                    continue
-                depth, _ = _depth(s, t, c, sn, gap[i, j], rp)
-                if depth <= 0.0:
-                    continue
-                p = _pressure(depth, coefficient, exponent)
-                if wear_coefficient > 0.0:
-                    wear[i, j] += factor * p
-                else:
-                    pressure[i, k, j] = p
+        approach = max(centre - base, 1e-9 * rp)
+        if status[k] != CONVERGED:
+            continue
+        if wear_coefficient > 0.0:
+            factor = wear_coefficient * sliding[k]
+            for i in range(count):
+                for jj in range(width):
+                    wear[i, start + jj] += factor * kept[i, jj]
+        else:
+            for i in range(count):
+                for jj in range(width):
+                    pressure[i, k, (start + jj) % nodes] = kept[i, jj]

@@ -200,18 +200,21 @@ class SlicedSolver:
         of :meth:`jointwear.contact.solver.ContactSolver.solve`; a worn pin is refused by
         the configuration).
 
-        A warm-started solve of a rigid pin under a power law goes through the compiled
-        balance (:mod:`jointwear.contact._sliced_kernel`), which inside the loop with
-        Archard's law (``sliding`` given) adds up each slice's wear without assembling
-        the pressure; a load it does not balance, a cold start, a bending pin and any other
-        law are balanced by :func:`~jointwear.contact.axial.solve_axial` step by step.
+        A rigid pin under a power law goes through the compiled balance
+        (:mod:`jointwear.contact._sliced_kernel`, warm from the last solve or cold), which
+        inside the loop with Archard's law (``sliding`` given) adds up each slice's wear
+        without assembling the pressure; a load it does not balance, a bending pin and
+        any other law are balanced by :func:`~jointwear.contact.axial.solve_axial` step
+        by step.
         """
         if facing is not None:
             raise ConfigError(
                 "materials.pin.wear_coefficient: a wearing pin needs joint.axial_slices = 1"
             )
         guess = None if warm is None else np.asarray(warm.guess(ahead), dtype=float)
-        if self._compiles and guess is not None and guess.shape == (cycle.steps, 2):
+        if guess is not None and guess.shape != (cycle.steps, 2):
+            guess = None  # (a state of another cycle)
+        if self._compiles:
             return self._compiled(contour, cycle, guess, sliding)
         balances = [self._balance(contour, load, azimuth) for load, azimuth in _loads(cycle)]
         pressure = np.stack([b.pressure for b in balances], axis=1)
@@ -274,11 +277,11 @@ class SlicedSolver:
         self,
         contour: SlicedContour,
         cycle: LoadCycle,
-        guess: FloatArray,
+        guess: FloatArray | None,
         sliding: FloatArray | None,
     ) -> SlicedSolution:
         """The compiled balance of every step from ``guess`` (``(delta_0, gamma)`` per step
-        [m, rad]); the loads it leaves are balanced by :func:`solve_axial`."""
+        [m, rad]; ``None``: a cold start); the loads it leaves go to :func:`solve_axial`."""
         from jointwear.contact import _sliced_kernel as kernel  # (numba: loaded when used)
 
         load, azimuth = (np.ascontiguousarray(a, dtype=float) for a in (cycle.load, cycle.azimuth))
@@ -286,24 +289,30 @@ class SlicedSolver:
         law = np.array([self.pin.radius, self.slice_law.coefficient, self.slice_law.exponent])
         gap, area = contour.radius - self.pin.radius, self._areas(contour)
         theta, z = contour.theta, self.slices.centres
-        state = np.array(guess, dtype=float)
+        count, nodes = gap.shape
+        state = np.zeros((load.size, 2)) if guess is None else np.array(guess, dtype=float)
         status = np.zeros(load.size, dtype=np.int64)
         evaluations = np.zeros(load.size, dtype=np.int64)
-        free = self.misalignment == 0
-        kernel.balance(load, azimuth, along, across, free, self.load_offset, z, gap, area,
-                       np.cos(theta), np.sin(theta), law, self.planar.tolerance,
-                       self.planar.max_iterations, state, status, evaluations)  # fmt: skip
+        fused = sliding is not None and self.planar.wear_coefficient is not None
+        wear = np.zeros((count, 3 * nodes))
+        pressure = np.zeros((0, 0, 0)) if fused else np.zeros((count, load.size, nodes))
+        kernel.revolution(
+            load, azimuth, along, across, self.misalignment == 0, self.load_offset, z,
+            np.tile(gap, 3), np.tile(area, 3), np.tile(gap.min(axis=0), 3),
+            np.tile(np.cos(theta), 3), np.tile(np.sin(theta), 3), law,
+            self.planar.tolerance, self.planar.max_iterations, state, status, evaluations,
+            np.zeros(load.size) if sliding is None else np.asarray(sliding, dtype=float),
+            self.planar.wear_coefficient if fused else 0.0, wear, pressure, guess is None,
+        )  # fmt: skip
+        wear = wear[:, :nodes] + wear[:, nodes : 2 * nodes] + wear[:, 2 * nodes :]
         for k in np.flatnonzero(status != kernel.CONVERGED):
             balanced = self._balance(contour, float(load[k]), float(azimuth[k]))
             state[k] = balanced.centre_offset, balanced.tilt
             evaluations[k] += balanced.evaluations
-        fused = sliding is not None and self.planar.wear_coefficient is not None
-        wear = np.zeros(self.depth_shape)
-        pressure = np.zeros((0, 0, 0)) if fused else np.zeros((z.size, load.size, theta.size))
-        coefficient = self.planar.wear_coefficient if fused else 0.0
-        kernel.settle(load, azimuth, along, across, z, gap, area, np.cos(theta), np.sin(theta),
-                      law, state, np.zeros(load.size) if sliding is None else sliding,
-                      coefficient, wear, pressure)  # fmt: skip
+            if fused:
+                wear += self.planar.wear_coefficient * sliding[k] * balanced.pressure
+            else:
+                pressure[:, k] = balanced.pressure
         if fused:
             return self._solution(contour, cycle, state, iterations=evaluations, wear=wear)
         cosine = np.cos(theta[None, :] - azimuth[:, None])
