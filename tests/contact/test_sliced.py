@@ -164,13 +164,17 @@ def test_a_bending_pin_in_a_clevis_loads_both_edges_more_than_the_middle():
     assert result.summary()["edge_to_mid_wear_ratio"] > 1.0
 
 
+MESH_FREE = {"contact.model": "nlcp", "contact.nlcp_variant": "mesh-independent"}
+
+
 @pytest.mark.parametrize(
     "extra",
     [
         {"joint.misalignment": 2e-4},
         {"joint.load_offset": 2e-3},
         {"joint.misalignment": 2e-4, "joint.misalignment_angle": "30 deg"},
-        {"contact.model": "nlcp", "contact.nlcp_variant": "mesh-independent"},
+        MESH_FREE,
+        {**MESH_FREE, "contact.exponent": 1.3},
     ],
 )
 def test_the_compiled_balance_is_the_axial_balance(extra):

@@ -34,6 +34,8 @@ from numba import njit
 #: ``status`` of a load
 CONVERGED, NOT_CONVERGED = 0, 1
 _EPS = 2.220446049250313e-16
+#: up to this ``(y / R_p)^2`` the pin's curvature is taken from its series (:func:`_curvature`)
+_SERIES = 1e-4
 #: the window holds the nodes the pin could touch this much further in than its start [-]
 _REACH = 1e-2
 _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
@@ -67,48 +69,78 @@ def _window(centre, tilt, tilt_across, z, gap_min, cos_e, sin_e, cpsi, spsi, nod
 
 
 @njit(inline="always", **_FLAGS)
-def _linear(s, t, c, sn, gap, area, start, width, rp, coefficient, kept):
+def _curvature(across, rp, series):
+    """The pin's curvature term of a node's penetration, ``y^2 / (sqrt(R^2 - y^2) + R)``
+    [m], and ``y / sqrt(R^2 - y^2)`` [-] for the pin ``y`` [m] across the node's ray
+    (:func:`jointwear.geometry.contour.pin_penetration`); with ``series``
+    (``y^2 <= 1e-4 R^2`` on the whole slice) from their series to ``u^2``, ``u = y^2 /
+    R^2``, within ``u^3`` of each (no square root, no division)."""
+    lateral = min(across * across, rp * rp * (1.0 - _EPS))
+    if series:
+        u = lateral * (1.0 / (rp * rp))
+        return lateral * (0.5 / rp) * (1.0 + u * (0.25 + 0.125 * u)), (across / rp) * (
+            1.0 + u * (0.5 + 0.375 * u)
+        )
+    root = math.sqrt(rp * rp - lateral)
+    return lateral / (root + rp), across / root
+
+
+@njit(inline="always", **_FLAGS)
+def _linear(s, t, c, sn, gap, area, start, width, rp, coefficient, kept, series):
     """One slice under ``p = c delta``: resultant along the load [N], ``dF/ds`` [N/m] and
     ``sum |f|`` [N]; each node's pressure into ``kept`` [Pa]."""
     force, slope, magnitude = 0.0, 0.0, 0.0
     for jj in range(width):
         across = t * c[jj] - s * sn[jj]
-        lateral = min(across * across, rp * rp * (1.0 - _EPS))
-        root = math.sqrt(rp * rp - lateral)
-        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - lateral / (root + rp)
+        curvature, extra = _curvature(across, rp, series)
+        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
         p = coefficient * max(depth, 0.0)
         kept[jj] = p
         f = p * area[start + jj]
         force += f * c[jj]
         magnitude += f
         dp = coefficient if depth > 0.0 else 0.0
-        slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * across / root)
+        slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
     return force, slope, magnitude
 
 
 @njit(inline="always", **_FLAGS)
-def _power(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent, kept):
-    """:func:`_linear` under ``p = c delta^n``."""
+def _hertzian(s, t, c, sn, gap, area, start, width, rp, coefficient, kept, series):
+    """:func:`_linear` under ``p = c delta^1.5``."""
     force, slope, magnitude = 0.0, 0.0, 0.0
     for jj in range(width):
         across = t * c[jj] - s * sn[jj]
-        lateral = min(across * across, rp * rp * (1.0 - _EPS))
-        root = math.sqrt(rp * rp - lateral)
-        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - lateral / (root + rp)
+        curvature, extra = _curvature(across, rp, series)
+        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
         positive = max(depth, 0.0)
-        if exponent == 1.5:
-            p = coefficient * positive * math.sqrt(positive)
-            dp = 1.5 * coefficient * math.sqrt(positive)
-        else:
-            p = coefficient * positive**exponent
-            dp = 0.0
-            if depth > 0.0:
-                dp = coefficient * exponent * positive ** (exponent - 1.0)
+        half = math.sqrt(positive)
+        p = coefficient * positive * half
         kept[jj] = p
         f = p * area[start + jj]
         force += f * c[jj]
         magnitude += f
-        slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * across / root)
+        slope += 1.5 * coefficient * half * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
+    return force, slope, magnitude
+
+
+@njit(inline="always", **_FLAGS)
+def _power(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent, kept, series):
+    """:func:`_linear` under ``p = c delta^n``."""
+    force, slope, magnitude = 0.0, 0.0, 0.0
+    for jj in range(width):
+        across = t * c[jj] - s * sn[jj]
+        curvature, extra = _curvature(across, rp, series)
+        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
+        positive = max(depth, 0.0)
+        p = coefficient * positive**exponent
+        dp = 0.0
+        if depth > 0.0:
+            dp = coefficient * exponent * positive ** (exponent - 1.0)
+        kept[jj] = p
+        f = p * area[start + jj]
+        force += f * c[jj]
+        magnitude += f
+        slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
     return force, slope, magnitude
 
 
@@ -159,12 +191,17 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
             for i in range(count):
                 s, t = centre + tilt * z[i], across_tilt * z[i]
                 row, areas, out = gap[i], area[i], kept[i]
+                series = (abs(s) + abs(t)) ** 2 <= _SERIES * rp * rp
                 if exponent == 1.0:
-                    force, slope, magnitude = _linear(s, t, c, sn, row, areas, start, width, rp,
-                                                      coefficient, out)  # fmt: skip
+                    sums = _linear(s, t, c, sn, row, areas, start, width, rp, coefficient, out,
+                                   series)  # fmt: skip
+                elif exponent == 1.5:
+                    sums = _hertzian(s, t, c, sn, row, areas, start, width, rp, coefficient, out,
+                                     series)  # fmt: skip
                 else:
-                    force, slope, magnitude = _power(s, t, c, sn, row, areas, start, width, rp,
-                                                     coefficient, exponent, out)  # fmt: skip
+                    sums = _power(s, t, c, sn, row, areas, start, width, rp, coefficient,
+                                  exponent, out, series)  # fmt: skip
+                force, slope, magnitude = sums
                 force_sum += force
                 moment_sum += force * z[i]
                 k0 += slope

@@ -1,0 +1,121 @@
+"""Speed and memory of runs along the pin (``joint.axial_slices``) against the planar joint.
+
+Run from the repository root::
+
+    python benchmarks/bench_slices.py            # everything, ~6 minutes
+    python benchmarks/bench_slices.py --quick    # a smoke run, ~1 minute
+
+Prints one Markdown table: the median wall-clock of one contour update of the
+calibrated paper case (NLCP, 360 steps, 360 nodes; ``Simulation.step`` in the
+revolution loop, warm) for the planar joint and for ``N`` slices, its ratio to ``N``
+planar revolutions measured in the same run, a whole run of 20 slices over 15000
+revolutions updated every revolution, and the memory a revolution allocates per slice
+(tracemalloc peak). All BLAS/OpenMP pools are pinned to one thread.
+"""
+
+from __future__ import annotations
+
+import os
+
+for _name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ[_name] = "1"
+
+import argparse  # noqa: E402
+import sys  # noqa: E402
+import time  # noqa: E402
+import tracemalloc  # noqa: E402
+import warnings  # noqa: E402
+
+import numpy as np  # noqa: E402
+from benchlib import CALIBRATED, PAPER, Table, describe_machine, median  # noqa: E402
+
+from jointwear import Simulation, load_config  # noqa: E402
+
+#: the joint along the pin: a bore out of line by 0.2 mrad, or a load 2 mm off the
+#: mid-plane with the pin free to tilt
+CASES = {
+    "misaligned": {"joint.misalignment": 2e-4},
+    "load offset": {"joint.load_offset": 2e-3},
+}
+
+
+def config(slices: int, case: str, revolutions: int = 15000):
+    overrides = {
+        **CALIBRATED,
+        "simulation.revolutions": revolutions,
+        "simulation.update_every": 1,
+    }
+    if slices > 1:
+        overrides.update({"joint.axial_slices": slices, **CASES[case]})
+    return load_config(PAPER, overrides=overrides)
+
+
+def step_times(slices: int, case: str, repeat: int) -> list[float]:
+    """Wall-clock seconds of ``repeat`` warm contour updates in the loop."""
+    simulation = Simulation(config(slices, case))
+    state = simulation.initial_state()
+    simulation.load.resume(state)
+    for _ in range(3):  # (the cold first solve, the kernel loaded, warm starts set)
+        state = simulation.step(state)
+    times = []
+    for _ in range(repeat):
+        began = time.perf_counter()
+        state = simulation.step(state)
+        times.append(time.perf_counter() - began)
+    return times
+
+
+def allocated(slices: int, case: str) -> float:
+    """Peak bytes a warm contour update allocates (tracemalloc)."""
+    simulation = Simulation(config(slices, case))
+    state = simulation.initial_state()
+    simulation.load.resume(state)
+    for _ in range(3):
+        state = simulation.step(state)
+    tracemalloc.start()
+    simulation.step(state)
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    return float(peak)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="fewer repeats, a shorter run")
+    quick = parser.parse_args().quick
+    warnings.simplefilter("ignore")
+    repeat = 5 if quick else 30
+    table = Table("what", "measured", "against")
+    print(describe_machine(), file=sys.stderr)
+    planar = step_times(1, "misaligned", repeat * 4)
+    base = median(planar)
+    table.add("planar revolution (NLCP, 360 steps x 360 nodes)", f"{base * 1e3:.3f} ms", "")
+    for case in CASES:
+        for slices in (5, 20):
+            times = step_times(slices, case, repeat)
+            taken = median(times)
+            table.add(
+                f"{slices} slices, {case}, one revolution",
+                f"{taken * 1e3:.2f} ms",
+                f"{taken / (slices * base):.2f} x {slices} planar revolutions (target <= 1.2)",
+            )
+    revolutions = 1000 if quick else 15000
+    began = time.perf_counter()
+    result = Simulation(config(20, "misaligned", revolutions)).run()
+    took = time.perf_counter() - began
+    table.add(
+        f"20 slices x {revolutions} revolutions, misaligned, updated every revolution",
+        f"{took:.1f} s (peak wear {result.summary()['peak_wear_depth_m'] * 1e6:.2f} um)",
+        "15000 revolutions <= 60 s",
+    )
+    memory = {n: allocated(n, "misaligned") for n in (5, 10, 20)}
+    table.add(
+        "memory a revolution allocates, 5 / 10 / 20 slices",
+        " / ".join(f"{memory[n] / 2**20:.2f} MiB" for n in memory),
+        "per slice: " + " / ".join(f"{memory[n] / n / 2**10:.0f} KiB" for n in memory),
+    )
+    table.print(f"Along the pin ({describe_machine()})")
+
+
+if __name__ == "__main__":
+    main()
