@@ -7,10 +7,10 @@ Run from the repository root::
 
 Prints one Markdown table: the median wall-clock of one contour update of the
 calibrated paper case (NLCP, 360 steps, 360 nodes; ``Simulation.step`` in the
-revolution loop, warm) for the planar joint and for ``N`` slices, its ratio to ``N``
-planar revolutions measured in the same run, a whole run of 20 slices over 15000
-revolutions updated every revolution, and the memory a revolution allocates per slice
-(tracemalloc peak). All BLAS/OpenMP pools are pinned to one thread.
+revolution loop, warm, updated every revolution) for the planar joint and for ``N``
+slices, taking turns, and the median of their paired ratios over ``N``; a whole run of
+20 slices over 15000 revolutions updated every revolution; and the memory a revolution
+allocates per slice (tracemalloc peak). All BLAS/OpenMP pools are pinned to one thread.
 """
 
 from __future__ import annotations
@@ -26,8 +26,14 @@ import time  # noqa: E402
 import tracemalloc  # noqa: E402
 import warnings  # noqa: E402
 
-import numpy as np  # noqa: E402
-from benchlib import CALIBRATED, PAPER, Table, describe_machine, median  # noqa: E402
+from benchlib import (  # noqa: E402
+    CALIBRATED,
+    PAPER,
+    Table,
+    describe_machine,
+    median,
+    paired_ratio,
+)
 
 from jointwear import Simulation, load_config  # noqa: E402
 
@@ -50,28 +56,36 @@ def config(slices: int, case: str, revolutions: int = 15000):
     return load_config(PAPER, overrides=overrides)
 
 
-def step_times(slices: int, case: str, repeat: int) -> list[float]:
-    """Wall-clock seconds of ``repeat`` warm contour updates in the loop."""
-    simulation = Simulation(config(slices, case))
-    state = simulation.initial_state()
-    simulation.load.resume(state)
-    for _ in range(3):  # (the cold first solve, the kernel loaded, warm starts set)
-        state = simulation.step(state)
-    times = []
-    for _ in range(repeat):
-        began = time.perf_counter()
-        state = simulation.step(state)
-        times.append(time.perf_counter() - began)
-    return times
-
-
-def allocated(slices: int, case: str) -> float:
-    """Peak bytes a warm contour update allocates (tracemalloc)."""
+def warm(slices: int, case: str):
+    """A simulation and its state three contour updates in (the cold first solve done,
+    the kernel loaded, the warm starts set)."""
     simulation = Simulation(config(slices, case))
     state = simulation.initial_state()
     simulation.load.resume(state)
     for _ in range(3):
         state = simulation.step(state)
+    return simulation, state
+
+
+def paired_steps(slices: int, case: str, repeat: int) -> tuple[list[float], list[float]]:
+    """Wall-clock seconds of ``repeat`` warm contour updates of the planar joint and of
+    ``slices`` slices, taking turns (a loaded machine slows both alike)."""
+    planar, planar_state = warm(1, case)
+    sliced, sliced_state = warm(slices, case)
+    planar_times, sliced_times = [], []
+    for _ in range(repeat):
+        began = time.perf_counter()
+        planar_state = planar.step(planar_state)
+        planar_times.append(time.perf_counter() - began)
+        began = time.perf_counter()
+        sliced_state = sliced.step(sliced_state)
+        sliced_times.append(time.perf_counter() - began)
+    return planar_times, sliced_times
+
+
+def allocated(slices: int, case: str) -> float:
+    """Peak bytes a warm contour update allocates (tracemalloc)."""
+    simulation, state = warm(slices, case)
     tracemalloc.start()
     simulation.step(state)
     peak = tracemalloc.get_traced_memory()[1]
@@ -87,17 +101,14 @@ def main() -> None:
     repeat = 5 if quick else 30
     table = Table("what", "measured", "against")
     print(describe_machine(), file=sys.stderr)
-    planar = step_times(1, "misaligned", repeat * 4)
-    base = median(planar)
-    table.add("planar revolution (NLCP, 360 steps x 360 nodes)", f"{base * 1e3:.3f} ms", "")
     for case in CASES:
         for slices in (5, 20):
-            times = step_times(slices, case, repeat)
-            taken = median(times)
+            planar, sliced = paired_steps(slices, case, repeat)
+            ratio = paired_ratio(sliced, planar)
             table.add(
                 f"{slices} slices, {case}, one revolution",
-                f"{taken * 1e3:.2f} ms",
-                f"{taken / (slices * base):.2f} x {slices} planar revolutions (target <= 1.2)",
+                f"{median(sliced) * 1e3:.2f} ms (planar {median(planar) * 1e3:.3f} ms)",
+                f"{ratio / slices:.2f} x {slices} planar revolutions (target <= 1.2)",
             )
     revolutions = 1000 if quick else 15000
     began = time.perf_counter()

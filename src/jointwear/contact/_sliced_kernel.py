@@ -75,12 +75,13 @@ def _curvature(across, rp, series):
     (:func:`jointwear.geometry.contour.pin_penetration`); with ``series``
     (``y^2 <= 1e-4 R^2`` on the whole slice) from their series to ``u^2``, ``u = y^2 /
     R^2``, within ``u^3`` of each (no square root, no division)."""
-    lateral = min(across * across, rp * rp * (1.0 - _EPS))
     if series:
+        lateral = across * across
         u = lateral * (1.0 / (rp * rp))
         return lateral * (0.5 / rp) * (1.0 + u * (0.25 + 0.125 * u)), (across / rp) * (
             1.0 + u * (0.5 + 0.375 * u)
         )
+    lateral = min(across * across, rp * rp * (1.0 - _EPS))
     root = math.sqrt(rp * rp - lateral)
     return lateral / (root + rp), across / root
 
@@ -88,11 +89,25 @@ def _curvature(across, rp, series):
 @njit(inline="always", **_FLAGS)
 def _linear(s, t, c, sn, gap, area, start, width, rp, coefficient, kept, series):
     """One slice under ``p = c delta``: resultant along the load [N], ``dF/ds`` [N/m] and
-    ``sum |f|`` [N]; each node's pressure into ``kept`` [Pa]."""
+    ``sum |f|`` [N]; each node's pressure into ``kept`` [Pa]. (One loop for each branch of
+    :func:`_curvature`: a loop without branches is vectorised.)"""
     force, slope, magnitude = 0.0, 0.0, 0.0
+    if series:
+        for jj in range(width):
+            across = t * c[jj] - s * sn[jj]
+            curvature, extra = _curvature(across, rp, True)
+            depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
+            p = coefficient * max(depth, 0.0)
+            kept[jj] = p
+            f = p * area[start + jj]
+            force += f * c[jj]
+            magnitude += f
+            dp = coefficient if depth > 0.0 else 0.0
+            slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
+        return force, slope, magnitude
     for jj in range(width):
         across = t * c[jj] - s * sn[jj]
-        curvature, extra = _curvature(across, rp, series)
+        curvature, extra = _curvature(across, rp, False)
         depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
         p = coefficient * max(depth, 0.0)
         kept[jj] = p
@@ -108,9 +123,23 @@ def _linear(s, t, c, sn, gap, area, start, width, rp, coefficient, kept, series)
 def _hertzian(s, t, c, sn, gap, area, start, width, rp, coefficient, kept, series):
     """:func:`_linear` under ``p = c delta^1.5``."""
     force, slope, magnitude = 0.0, 0.0, 0.0
+    if series:
+        for jj in range(width):
+            across = t * c[jj] - s * sn[jj]
+            curvature, extra = _curvature(across, rp, True)
+            depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
+            positive = max(depth, 0.0)
+            half = math.sqrt(positive)
+            p = coefficient * positive * half
+            kept[jj] = p
+            f = p * area[start + jj]
+            force += f * c[jj]
+            magnitude += f
+            slope += 1.5 * coefficient * half * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
+        return force, slope, magnitude
     for jj in range(width):
         across = t * c[jj] - s * sn[jj]
-        curvature, extra = _curvature(across, rp, series)
+        curvature, extra = _curvature(across, rp, False)
         depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
         positive = max(depth, 0.0)
         half = math.sqrt(positive)
