@@ -311,6 +311,26 @@ CASES: list[Bad] = [
         ["life.wall_thickness", "must be below joint.bushing_thickness"],
     ),
     Bad(
+        "bending-pin-on-one-slice",
+        "config",
+        ["run", "{paper}", *SMALL, "--set", "pin.model=beam", "--set", "pin.forks=[-0.015, 0.015]"],
+        ["pin.model", 'a bending pin ("beam") needs joint.axial_slices >= 2'],
+    ),
+    Bad(
+        "load-offset-outside-the-bushing",
+        "config",
+        [
+            "run",
+            "{paper}",
+            *SMALL,
+            "--set",
+            "joint.axial_slices=5",
+            "--set",
+            "joint.load_offset=15 mm",
+        ],
+        ["joint.load_offset", "is outside the bushing"],
+    ),
+    Bad(
         "mechanism-type-unknown",
         "config",
         ["run", "{paper}", "--set", "mechanism.type=four-bars"],
