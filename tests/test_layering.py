@@ -67,7 +67,11 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     # record the loop fills
     ("schedule", ("jointwear.coupling", "jointwear.record")),
     # a record presented: Dataset, summary, files, plots, text
-    ("results", ("jointwear.results", "jointwear.plots", "jointwear.display")),
+    # (plots_axial: the wear maps of a result cut into slices along the pin)
+    (
+        "results",
+        ("jointwear.results", "jointwear.plots", "jointwear.plots_axial", "jointwear.display"),
+    ),
     # the one loop over revolutions returns its record presented (a WearResult); the
     # checkpoints save and resume that loop
     ("simulation", ("jointwear.simulation", "jointwear.checkpoint")),

@@ -18,6 +18,9 @@ worn bore under a fixed load, and :mod:`jointwear.references.validation` runs th
 wear simulation against it and against closed forms (the documentation's Validation
 page).
 
+Along the pin, :mod:`jointwear.references.axial_fem` solves the liner in 3-D under a
+tilted pin and measures what the slices of :mod:`jointwear.contact.axial` neglect.
+
 :mod:`jointwear.references.compare` tabulates every contact model against them
 and :mod:`jointwear.references.spring_fit` fits Winkler's and NLCP's spring constants
 to a reference.

@@ -83,7 +83,8 @@ __all__ = [
 FloatArray = NDArray[np.float64]
 
 
-def _skfem():
+def scikit_fem():
+    """The ``skfem`` module, or a :class:`ConfigError` naming the ``fem`` extra."""
     try:
         import skfem
     except ImportError as exc:  # pragma: no cover - optional dependency
@@ -243,7 +244,7 @@ def build_mesh(
     grading : float
         Ratio of the outermost to the innermost radial element size [-].
     """
-    skfem = _skfem()
+    skfem = scikit_fem()
     _check_mesh_inputs(circumferential, radial, youngs_modulus, poisson_ratio, thickness)
     wall = _WallGrid(
         contour,

@@ -342,6 +342,9 @@ def write_outputs(
 def plot_joints(dataset: Any, directory: Path, **options: Any) -> list[Path]:
     """Figures of a result; with several clearance joints, a folder per joint.
 
+    A result with slices along the pin (a dimension ``z``) also gets its wear maps
+    (:func:`~jointwear.plots_axial.plot_axial_result`).
+
     Parameters
     ----------
     dataset : xarray.Dataset
@@ -357,15 +360,18 @@ def plot_joints(dataset: Any, directory: Path, **options: Any) -> list[Path]:
         The files written.
     """
     from jointwear.plots import plot_result
+    from jointwear.plots_axial import plot_axial_result
     from jointwear.results import joint_datasets
 
+    # slices along the pin: the deepest slice's planar figures and the wear maps
+    draw = plot_axial_result if "z" in dataset.dims else plot_result
     joints = joint_datasets(dataset)
     if len(joints) == 1:
-        return plot_result(dataset, directory, **options)
+        return draw(dataset, directory, **options)
     return [
         path
         for joint, single in joints.items()
-        for path in plot_result(single, directory / joint, **options)
+        for path in draw(single, directory / joint, **options)
     ]
 
 
