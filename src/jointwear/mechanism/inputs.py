@@ -17,6 +17,7 @@ from jointwear.mechanism.impact.distributed import PressureLaw
 
 if TYPE_CHECKING:
     from jointwear.config import DynamicsConfig
+    from jointwear.mechanism.impact.film import FilmParameters
 
 __all__ = ["ElasticLaw", "JointGeometry", "MechanismInputs"]
 
@@ -92,6 +93,9 @@ class MechanismInputs:
     compiled : bool or None
         Whether contact–impact integrations may run the compiled right-hand side:
         ``None`` where it can, ``False`` never (the same bits either way).
+    film : FilmParameters, optional
+        The oil film of a lubricated joint in the contact–impact dynamics; ``None``:
+        a dry joint.
     """
 
     mechanism: Any
@@ -100,6 +104,7 @@ class MechanismInputs:
     dynamics: DynamicsConfig
     elastic: ElasticLaw | None = None
     compiled: bool | None = None
+    film: FilmParameters | None = None
 
     @property
     def clearance(self) -> float:

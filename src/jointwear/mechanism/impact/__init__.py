@@ -4,6 +4,8 @@
 :mod:`.force_laws`              point force laws (Hertz + hysteresis damping), friction
 :mod:`.distributed`             distributed laws: the bushing's springs on the pin
 :mod:`.joint_contact`           :class:`~.joint_contact.JointContact`: the joint's force
+:mod:`.film`                    the oil film's force of a lubricated joint, its parameters
+:mod:`.compiled_film`           the film's force compiled by numba (imported on first use)
 :mod:`.settings`                :class:`~.settings.ContactImpactSettings` (``[dynamics]``)
 :mod:`.integrator`              integration through the contact events
 :mod:`.revolution`              a settled, sampled revolution and its solution

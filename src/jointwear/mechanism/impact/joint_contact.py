@@ -5,7 +5,9 @@ r"""The contact force between pin and bushing for a relative state of the two bo
 and Coulomb friction to a clearance joint: for the pin-centre offset ``e``, its rate
 and the spin it gives the normal and friction force on each body. Every contact
 system (the slider-crank's, the four-bar's, the free pin's) evaluates it at every
-right-hand side call.
+right-hand side call. A lubricated joint adds the oil film's force
+(:mod:`jointwear.mechanism.impact.film`) to the contact force, in free flight and in
+contact.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from jointwear.mechanism.impact.distributed import (
     spring_gap,
     spring_resultant,
 )
+from jointwear.mechanism.impact.film import FilmParameters, joint_film_force
 from jointwear.mechanism.impact.force_laws import DISTRIBUTED_LAWS, hysteresis_factor
 
 if TYPE_CHECKING:
@@ -72,6 +75,12 @@ class JointContact:
         The pin (distributed laws).
     spring_law : PressureLaw, optional
         Node pressure law (distributed laws).
+    film : FilmParameters, optional
+        The oil film of a lubricated joint; ``None`` or ``"dry"``: none.
+    pin_radius : float, optional
+        Pin radius ``R`` of the film force [m] (needed with a film).
+    axial_length : float, optional
+        The joint's axial length [m]: the film's length unless ``film.length`` is given.
     """
 
     def __init__(
@@ -89,6 +98,9 @@ class JointContact:
         contour: BushingContour | None = None,
         pin: Pin | None = None,
         spring_law: PressureLaw | None = None,
+        film: FilmParameters | None = None,
+        pin_radius: float | None = None,
+        axial_length: float | None = None,
     ) -> None:
         self.force_law = force_law
         self.hysteresis = hysteresis_factor(force_law, restitution)
@@ -125,6 +137,23 @@ class JointContact:
         self.contour = contour
         self.pin = pin
         self.spring_law = spring_law
+        self.film = film if film is not None and film.active else None
+        #: ``(model code, R, L, c, mu, delta_1 / c)`` of :func:`joint_film_force`
+        self.film_arguments = (0.0, 0.0, 0.0, self.clearance, 0.0, 0.0)
+        if self.film is not None:
+            length = self.film.length if self.film.length is not None else axial_length
+            if pin_radius is None or length is None:
+                raise ConfigError(
+                    "lubrication.model: a lubricated joint needs the pin radius and the film length"
+                )
+            self.film_arguments = (
+                float(self.film.code),
+                float(pin_radius),
+                float(length),
+                self.clearance,
+                float(self.film.viscosity),
+                self.film.band(self.clearance) / self.clearance,
+            )
 
     def _springs(self, ex: float, ey: float) -> tuple[float, float, float]:
         """Elastic resultant ``(F_x, F_y)`` [N] and signed gap [m] of the distributed law.
@@ -155,6 +184,7 @@ class JointContact:
         joint: JointGeometry,
         friction_arm: float,
         contour: BushingContour | None = None,
+        film: FilmParameters | None = None,
     ) -> JointContact:
         """Contact model of a joint with the ``[dynamics]`` settings.
 
@@ -172,6 +202,8 @@ class JointContact:
         contour : BushingContour, optional
             Bushing contour for ``nlcp``/``winkler`` (default: the unworn circle with
             ``joint.nodes`` nodes), or the worn bushing of a point law.
+        film : FilmParameters, optional
+            The oil film of a lubricated joint (its force acts with the contact's).
         """
         extra: dict[str, Any] = {}
         if settings.force_law in DISTRIBUTED_LAWS:
@@ -197,6 +229,9 @@ class JointContact:
             friction_full_speed=settings.friction_velocity_full,
             friction_arm=friction_arm,
             impact_velocity_floor=settings.impact_velocity_floor,
+            film=film,
+            pin_radius=joint.pin_radius,
+            axial_length=joint.axial_length,
             **extra,
         )
 
@@ -293,8 +328,33 @@ class JointContact:
         return float(brentq(gap, 0.0, upper, xtol=1e-16, rtol=1e-14))
 
     # -------------------------------------------------------------- force
+    def film_force(
+        self, ex: float, ey: float, vx: float, vy: float, spin: float
+    ) -> tuple[float, float]:
+        """The oil film's force on the slider side (``D``), zero for a dry joint [N].
+
+        Parameters
+        ----------
+        ex, ey : float
+            ``e = C - D`` [m].
+        vx, vy : float
+            ``e'`` [m/s].
+        spin : float
+            Sum of the angular velocities of the two bodies [rad/s].
+        """
+        if self.film is None:
+            return 0.0, 0.0
+        return joint_film_force(ex, ey, vx, vy, spin, *self.film_arguments)
+
     def force(
-        self, ex: float, ey: float, vx: float, vy: float, spin: float, impact_velocity: float
+        self,
+        ex: float,
+        ey: float,
+        vx: float,
+        vy: float,
+        spin: float,
+        impact_velocity: float,
+        film_spin: float | None = None,
     ) -> tuple[float, float, float, float, float, float, float, float]:
         """Contact force on the slider side for a relative state.
 
@@ -309,13 +369,17 @@ class JointContact:
             [rad/s].
         impact_velocity : float
             Approach velocity ``delta'^-`` of the current contact [m/s].
+        film_spin : float, optional
+            Sum of the angular velocities of the two bodies, for the film's wedge
+            [rad/s]; default ``spin`` (the slider side does not turn).
 
         Returns
         -------
         tuple of float
             ``(J_x, J_y, F_N, F_T, n_x, n_y, penetration, slip)``: force on the
-            slider side [N], normal and friction components [N], unit normal [-],
-            largest penetration [m], slip velocity ``v_T`` [m/s].
+            slider side, the film's included [N], normal and friction components of
+            the contact [N], unit normal [-], largest penetration [m], slip velocity
+            ``v_T`` [m/s].
         """
         r = math.hypot(ex, ey)
         nx, ny = (ex / r, ey / r) if r > 0.0 else (1.0, 0.0)
@@ -330,7 +394,14 @@ class JointContact:
             delta = r - self.clearance_at(ex, ey)
             elastic = self.stiffness * delta**self.exponent if delta > 0.0 else 0.0
         slip = -ny * vx + nx * vy + self.friction_arm * spin
+        film_x = film_y = 0.0
+        if self.film is not None:
+            film_x, film_y = joint_film_force(
+                ex, ey, vx, vy, spin if film_spin is None else film_spin, *self.film_arguments
+            )
         if elastic <= 0.0:
+            if self.film is not None:
+                return film_x, film_y, 0.0, 0.0, nx, ny, delta, slip
             return 0.0, 0.0, 0.0, 0.0, nx, ny, delta, slip
         # a sample that the event search put just outside a contact has no approach
         # velocity (nan): the floor stands in for it
@@ -353,4 +424,6 @@ class JointContact:
                 )
         jx = normal * nx - tangential * ny
         jy = normal * ny + tangential * nx
+        if self.film is not None:
+            jx, jy = jx + film_x, jy + film_y
         return jx, jy, normal, tangential, nx, ny, delta, slip

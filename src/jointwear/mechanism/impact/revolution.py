@@ -62,6 +62,11 @@ class SampledRevolution:
         Start of the recorded revolution [s].
     runtime : float
         Wall-clock time of the integration [s].
+    peak_joint_force : float
+        Largest joint force ``|J|`` (contact, friction and film), samples and
+        penetration maxima [N].
+    max_offset : float
+        Largest pin-centre offset ``|e|``, samples and penetration maxima [m].
     """
 
     history: ContactHistory
@@ -75,6 +80,8 @@ class SampledRevolution:
     peak_load: float
     record_start: float
     runtime: float
+    peak_joint_force: float = math.nan
+    max_offset: float = math.nan
 
     def column(self, key: str) -> FloatArray:
         """One ``evaluate`` output over the ``N`` samples."""
@@ -150,7 +157,7 @@ def integrate_revolution(
             & (np.array(history.impact_times) < record_end)
         )
     )
-    max_penetration, peak_load = _peaks(system, history, records, record_start, record_end)
+    peaks = _peaks(system, history, records, record_start, record_end)
     return SampledRevolution(
         history=history,
         times=times,
@@ -159,10 +166,12 @@ def integrate_revolution(
         step_lost=_free_flight_steps(history, record_start, period, steps),
         impacts=impacts,
         free_flight_fraction=free / period,
-        max_penetration=max_penetration,
-        peak_load=peak_load,
+        max_penetration=peaks[0],
+        peak_load=peaks[1],
         record_start=record_start,
         runtime=runtime,
+        peak_joint_force=peaks[2],
+        max_offset=peaks[3],
     )
 
 
@@ -188,10 +197,11 @@ def _peaks(
     records: list[dict[str, Any]],
     record_start: float,
     record_end: float,
-) -> tuple[float, float]:
-    """Largest penetration [m] and normal force [N] of the recorded revolution.
+) -> tuple[float, float, float, float]:
+    """Largest penetration [m], normal force [N], joint force ``|J|`` [N] and offset
+    ``|e|`` [m] of the recorded revolution.
 
-    Impacts peak between the samples, near the penetration maxima: both are taken over
+    Impacts peak between the samples, near the penetration maxima: all are taken over
     the samples and the maxima.
     """
     peak_times = [t for t in history.peak_times if record_start <= t <= record_end]
@@ -202,17 +212,18 @@ def _peaks(
     ]
     sampled = np.array([r["penetration"] for r in records])
     max_penetration = float(max([*peaks, float(sampled.max())]))
-    peak_load = float(normal_max := np.max([r["normal_force"] for r in records]))
+    at_peaks: list[dict[str, Any]] = []
     if peak_times:
         peak_states, peak_index = history.state(peak_times)
-        peak_load = max(
-            normal_max,
-            *(
-                system.evaluate(t, y, history.segments[k].impact_velocity)["normal_force"]
-                for t, y, k in zip(peak_times, peak_states, peak_index, strict=True)
-            ),
-        )
-    return max_penetration, float(peak_load)
+        at_peaks = [
+            system.evaluate(t, y, history.segments[k].impact_velocity)
+            for t, y, k in zip(peak_times, peak_states, peak_index, strict=True)
+        ]
+    every = [*records, *at_peaks]
+    peak_load = max(r["normal_force"] for r in every)
+    joint_force = max(math.hypot(r["force_x"], r["force_y"]) for r in every)
+    offset = max(math.hypot(r["ex"], r["ey"]) for r in every)
+    return max_penetration, float(peak_load), float(joint_force), float(offset)
 
 
 @dataclass(frozen=True, eq=False)
@@ -255,6 +266,11 @@ class ContactImpactSolution:
         Start time of the recorded revolution [s].
     runtime : float
         Wall-clock time of the integration [s].
+    peak_joint_force : float
+        Largest joint force ``|J|`` in the recorded revolution (contact, friction and
+        the film of a lubricated joint) [N].
+    max_offset : float
+        Largest pin-centre offset ``|e|`` in the recorded revolution [m].
     """
 
     load: LoadCycle
@@ -271,6 +287,8 @@ class ContactImpactSolution:
     settings: ContactImpactSettings
     record_start: float
     runtime: float
+    peak_joint_force: float = math.nan
+    max_offset: float = math.nan
 
     @property
     def period(self) -> float:
@@ -278,8 +296,23 @@ class ContactImpactSolution:
         return 2.0 * math.pi / self.system.omega
 
     def summary(self) -> dict[str, Any]:
-        """Extra scalars reported by ``jointwear dynamics`` (SI, units in the keys)."""
+        """Extra scalars reported by ``jointwear dynamics`` (SI, units in the keys).
+
+        A lubricated joint adds its film model, the largest eccentricity ratio
+        ``max |e| / c``, the smallest film thickness ``c - max |e|`` (negative: the
+        solids touched) and the largest joint force, the film's included.
+        """
         mean = self.massless.mean_load if self.massless is not None else math.nan
+        film = getattr(self.system.contact, "film", None)
+        lubricated = {}
+        if film is not None:
+            clearance = self.system.contact.clearance
+            lubricated = {
+                "film_model": film.model,
+                "max_eccentricity_ratio": float(self.max_offset / clearance),
+                "min_film_thickness_m": float(clearance - self.max_offset),
+                "peak_joint_force_n": float(self.peak_joint_force),
+            }
         return {
             "force_law": self.settings.force_law,
             "restitution": self.settings.restitution,
@@ -296,6 +329,7 @@ class ContactImpactSolution:
             "revolutions_settle": int(self.settings.revolutions_settle),
             "rhs_evaluations": int(self.history.evaluations),
             "integration_runtime_s": float(self.runtime),
+            **lubricated,
         }
 
     def load_cycle(self) -> LoadCycle:
@@ -357,4 +391,6 @@ def sampled_solution(
         settings=settings,
         record_start=run.record_start,
         runtime=run.runtime,
+        peak_joint_force=run.peak_joint_force,
+        max_offset=run.max_offset,
     )

@@ -13,6 +13,10 @@ algorithm, :func:`hypot`), and the integrator takes the same steps.
 call costs a few microseconds of interpreter work, here a fraction of one. The
 parameters travel in one array (indices ``P_*``), and the wear profile of a worn
 bushing (empty for a circular one) in another, so a call passes five arguments.
+A lubricated joint adds the film's force
+(:func:`jointwear.mechanism.impact.film.joint_film_force`, compiled by
+:mod:`jointwear.mechanism.impact.compiled_film`) where ``P_FILM`` holds its model's code;
+a dry joint (code 0) runs the same expressions as before.
 """
 
 from __future__ import annotations
@@ -21,6 +25,8 @@ import math
 
 import numpy as np
 from numba import njit
+
+from jointwear.mechanism.impact.compiled_film import SOURCE_DIGEST, joint_film_force
 
 #: indices into the parameter array (``SliderCrankContactSystem._kernel_parameters``)
 (
@@ -44,10 +50,26 @@ from numba import njit
     P_V1,
     P_ARM,
     P_FLOOR,
-) = range(20)
-N_PARAMETERS = 20
+    P_FILM,
+    P_PIN_RADIUS,
+    P_FILM_LENGTH,
+    P_VISCOSITY,
+    P_FILM_BAND,
+) = range(25)
+N_PARAMETERS = 25
 
 _FLAGS = {"cache": True}
+
+
+def _with_film(function):
+    """``njit`` with the disk cache keyed also by the film force's source.
+
+    numba reloads a cached function while its own file is unchanged, even when a
+    function compiled into it (the film force, another file) has changed: the name of
+    the cache entry carries :data:`~jointwear.mechanism.impact.compiled_film.SOURCE_DIGEST`.
+    """
+    function.__qualname__ = f"{function.__qualname__}_film_{SOURCE_DIGEST}"
+    return njit(**_FLAGS)(function)
 
 
 @njit(**_FLAGS)
@@ -108,9 +130,10 @@ def clearance_at(ex, ey, clearance, wear):
     return clearance + (1.0 - fraction) * wear[index] + fraction * wear[index + 1]
 
 
-@njit(**_FLAGS)
+@_with_film
 def point_force(ex, ey, vx, vy, spin, impact_velocity, p, wear):
-    """Mirror of :meth:`JointContact.force` for the point laws."""
+    """Mirror of :meth:`JointContact.force` for the point laws (the slider does not turn:
+    the film's wedge sees the rod's spin)."""
     r = hypot(ex, ey)
     if r > 0.0:
         nx, ny = ex / r, ey / r
@@ -120,7 +143,16 @@ def point_force(ex, ey, vx, vy, spin, impact_velocity, p, wear):
     delta = r - clearance_at(ex, ey, p[P_CLEARANCE], wear)
     elastic = p[P_STIFFNESS] * delta ** p[P_EXPONENT] if delta > 0.0 else 0.0
     slip = -ny * vx + nx * vy + p[P_ARM] * spin
+    film = p[P_FILM]
+    film_x = film_y = 0.0
+    if film != 0.0:
+        film_x, film_y = joint_film_force(
+            ex, ey, vx, vy, spin, film, p[P_PIN_RADIUS], p[P_FILM_LENGTH], p[P_CLEARANCE],
+            p[P_VISCOSITY], p[P_FILM_BAND],
+        )  # fmt: skip
     if elastic <= 0.0:
+        if film != 0.0:
+            return film_x, film_y, 0.0, 0.0, nx, ny, delta, slip
         return 0.0, 0.0, 0.0, 0.0, nx, ny, delta, slip
     floor = p[P_FLOOR]
     approach = impact_velocity if impact_velocity > floor else floor
@@ -134,6 +166,8 @@ def point_force(ex, ey, vx, vy, spin, impact_velocity, p, wear):
             tangential = p[P_FRICTION] * s * s * (3.0 - 2.0 * s) * normal * math.copysign(1.0, slip)
     jx = normal * nx - tangential * ny
     jy = normal * ny + tangential * nx
+    if film != 0.0:
+        jx, jy = jx + film_x, jy + film_y
     return jx, jy, normal, tangential, nx, ny, delta, slip
 
 
@@ -145,7 +179,7 @@ def spring(x3, p):
     return -(p[P_PRELOAD] + p[P_SPRING_STIFFNESS] * (x3 - (p[P_ROD] - p[P_CRANK])))
 
 
-@njit(**_FLAGS)
+@_with_film
 def evaluate(t, y, impact_velocity, p, wear):
     """Mirror of :meth:`SliderCrankContactSystem.evaluate`, as a tuple.
 
@@ -183,7 +217,7 @@ def evaluate(t, y, impact_velocity, p, wear):
     return (theta_ddot, x3_ddot, jx, jy, normal, tangential, nx, ny, delta, slip, torque, ex, ey)
 
 
-@njit(**_FLAGS)
+@_with_film
 def rhs(t, y, impact_velocity, p, wear):
     """Mirror of :meth:`SliderCrankContactSystem.rhs`."""
     out = evaluate(t, y, impact_velocity, p, wear)

@@ -208,6 +208,11 @@ class SliderCrankContactSystem(ContactSystemBase):
             k.P_V1: c.v1,
             k.P_ARM: c.friction_arm,
             k.P_FLOOR: c.impact_velocity_floor,
+            k.P_FILM: c.film_arguments[0],
+            k.P_PIN_RADIUS: c.film_arguments[1],
+            k.P_FILM_LENGTH: c.film_arguments[2],
+            k.P_VISCOSITY: c.film_arguments[4],
+            k.P_FILM_BAND: c.film_arguments[5],
         }
         parameters = np.empty(k.N_PARAMETERS)
         for index, value in values.items():
@@ -385,7 +390,7 @@ def slider_crank_contact(
     Parameters
     ----------
     inputs : MechanismInputs
-        Uses ``mechanism.bushing_body``, the joint and its elastic law.
+        Uses ``mechanism.bushing_body``, the joint, its elastic law and its film.
     settings : ContactImpactSettings
         The ``[dynamics]`` settings of the contact–impact model.
     contour : BushingContour, optional
@@ -404,7 +409,7 @@ def slider_crank_contact(
     joint = inputs.joint
     # rho: from the rod-side joint centre C to the contact point
     arm = joint.pin_radius if inputs.mechanism.bushing_body == "slider" else (-joint.bushing_radius)
-    return JointContact.for_joint(settings, inputs.elastic, joint, arm, contour)
+    return JointContact.for_joint(settings, inputs.elastic, joint, arm, contour, inputs.film)
 
 
 def initial_state(system: SliderCrankContactSystem, steps: int) -> tuple[FloatArray, float]:
@@ -475,7 +480,8 @@ def solve_contact_impact(
     compiled : bool, optional
         Run the compiled right-hand side where it can (``True``) or the Python one
         (``False``); default: as ``inputs.compiled`` says
-        (:func:`jointwear.mechanism.stage.compiled_dynamics`). Both give the same bits.
+        (:func:`jointwear.mechanism.stage.compiled_dynamics`), and compiled wherever it
+        can for a lubricated joint. Both give the same bits for a dry joint.
 
     Returns
     -------
@@ -494,6 +500,9 @@ def solve_contact_impact(
     steps = inputs.steps
     contact = slider_crank_contact(inputs, settings, contour)
     choice = inputs.compiled if compiled is None else (None if compiled else False)
+    if compiled is None and contact.film is not None:
+        # the film's force in Python costs far more than loading the compiled kernel
+        choice = None
     system = SliderCrankContactSystem(mechanism, omega, contact, choice)
     y0, _ = initial_state(system, max(steps, 64))
     run = integrate_revolution(system, y0, settings, steps, dense=False)
