@@ -22,6 +22,7 @@ from jointwear.config.sections import (
     DynamicsConfig,
     JointConfig,
     LifeConfig,
+    LubricationConfig,
     MaterialsConfig,
     SimulationConfig,
     WearConfig,
@@ -46,6 +47,7 @@ class ConfigSchema(Section):
     simulation: SimulationConfig = SimulationConfig()
     wear: WearConfig = WearConfig()
     life: LifeConfig = LifeConfig()
+    lubrication: LubricationConfig = LubricationConfig()
 
     @field_validator("parameter_set")
     @classmethod
