@@ -57,7 +57,7 @@ base = "{PAPER}"
 MODE = """
 import json, statistics, sys, warnings
 warnings.simplefilter("ignore")
-from jointwear.sweep import load_sweep, run_sweep
+from jointwear.workflows.sweep import load_sweep, run_sweep
 mode, sweep, out = sys.argv[1:4]
 plan = load_sweep(sweep)
 cluster = client = None
@@ -86,7 +86,7 @@ CASE_WORK = """
 import json, statistics, sys, time, warnings
 warnings.simplefilter("ignore")
 from jointwear.simulation import Simulation
-from jointwear.sweep import load_sweep
+from jointwear.workflows.sweep import load_sweep
 plan = load_sweep(sys.argv[1])
 configs = [plan.config(case) for case in plan.cases[:16]]
 Simulation(configs[0]).run()  # the compiled kernel loaded

@@ -20,7 +20,7 @@ clearance will be, and hand jointwear one period of that joint's motion:
 5. ``jointwear.mechanism.LoadCycle.from_arrays(load, azimuth, relative_rotation,
    period=..., time=...)`` -> ``jointwear.Simulation(config, load_cycle=cycle).run()``.
 
-The same cycle written by :func:`jointwear.cli.dynamics_cmd.write_csv` is a
+The same cycle written by :func:`jointwear.workflows.dynamics.write_csv` is a
 load-history file (columns ``time [s], force_x [N], force_y [N], rotation [rad]``
 in the bushing frame, then diagnostics), which a configuration reads back with::
 
@@ -52,9 +52,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 import jointwear as jw
-from jointwear.cli.dynamics_cmd import write_csv
 from jointwear.mechanism import LoadCycle
 from jointwear.mechanism.stage import load_cycle
+from jointwear.workflows.dynamics import write_csv
 
 FloatArray = NDArray[np.float64]
 

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import signal
+import warnings
 from pathlib import Path
 from typing import Any
 
@@ -92,3 +94,19 @@ def pytest_collection_modifyitems(config, items) -> None:
         path = Path(str(item.fspath)).resolve().relative_to(tests)
         if path.parts[0] in UNIT_DIRECTORIES or path.as_posix() in UNIT_FILES:
             item.add_marker(pytest.mark.unit)
+
+
+@pytest.fixture(autouse=True)
+def signal_handlers_are_restored():
+    """A test leaves SIGINT/SIGTERM as it found them; a leak is restored and reported.
+
+    A child process inherits an ignored signal, and the command line keeps an inherited
+    ignore (``nohup``): one test leaving SIGINT ignored in a worker would silently
+    disable Ctrl-C in every later test's subprocess on that worker.
+    """
+    before = {each: signal.getsignal(each) for each in (signal.SIGINT, signal.SIGTERM)}
+    yield
+    for each, handler in before.items():
+        if signal.getsignal(each) is not handler:
+            signal.signal(each, handler)
+            warnings.warn(f"the test changed the {each.name} handler; restored", stacklevel=1)

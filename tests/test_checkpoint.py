@@ -25,10 +25,10 @@ from jointwear.checkpoint import (
     write_state,
 )
 from jointwear.cli import main
-from jointwear.cli.run_cmd import add_checks
 from jointwear.errors import DataError
 from jointwear.results import read_result
 from jointwear.state import Log
+from jointwear.workflows.run import add_checks
 
 REPO = Path(__file__).resolve().parents[1]
 UPDATE_CONFIG = REPO / "examples" / "paper" / "fig14_nlcp_update.toml"

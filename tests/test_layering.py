@@ -74,14 +74,13 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
     (
         "analyses",
         (
-            "jointwear.calibration",
             "jointwear.measurement",
             "jointwear.references.compare",
             "jointwear.references.spring_fit",
             # runs the simulation against the exact references (the Validation page)
             "jointwear.references.validation",
-            "jointwear.sweep",
-            "jointwear.life",
+            # a run to a folder, sweeps, life, calibration: many runs and their outputs
+            "jointwear.workflows",
         ),
     ),
     ("paper", ("jointwear.paper",)),

@@ -22,7 +22,7 @@ from jointwear.materials import (
     markdown,
     merge_material,
 )
-from jointwear.sweep import expand_sweep
+from jointwear.workflows.sweep import expand_sweep
 
 REQUIRED = {
     "ptfe",

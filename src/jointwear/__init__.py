@@ -53,25 +53,33 @@ _LAZY = {
     "load_config": ("jointwear.config", "load_config"),
     "read_result": ("jointwear.results", "read_wear_result"),
 }
-#: subpackages and modules reachable as attributes (``jointwear.plots``) without an import
-_SUBMODULES = (
-    "calibration",
-    "config",
-    "contact",
-    "errors",
-    "geometry",
-    "life",
-    "materials",
-    "measurement",
-    "mechanism",
-    "plots",
-    "references",
-    "results",
-    "simulation",
-    "sweep",
-    "tribology",
-    "units",
-)
+#: subpackages and modules reachable as attributes (``jointwear.plots``) without an import:
+#: attribute -> module (the workflows also by their short names, ``jointwear.life``)
+_SUBMODULES = {
+    **{
+        name: f"jointwear.{name}"
+        for name in (
+            "config",
+            "contact",
+            "errors",
+            "geometry",
+            "lubrication",
+            "materials",
+            "measurement",
+            "mechanism",
+            "plots",
+            "references",
+            "results",
+            "simulation",
+            "tribology",
+            "units",
+            "workflows",
+        )
+    },
+    "calibration": "jointwear.workflows.calibration",
+    "life": "jointwear.workflows.life",
+    "sweep": "jointwear.workflows.sweep",
+}
 #: the command line's and the package's own modules: reachable as attributes, not listed
 _INTERNAL = ("checkpoint", "cli", "display", "io", "paper", "resources")
 
@@ -176,7 +184,9 @@ def __getattr__(name: str) -> object:
     elif name in _LAZY:
         module, attribute = _LAZY[name]
         value = getattr(import_module(module), attribute)
-    elif name in _SUBMODULES or name in _INTERNAL:
+    elif name in _SUBMODULES:
+        value = import_module(_SUBMODULES[name])
+    elif name in _INTERNAL:
         value = import_module(f"jointwear.{name}")
     else:
         raise AttributeError(f"module 'jointwear' has no attribute {name!r}")

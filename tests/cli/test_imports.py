@@ -90,7 +90,7 @@ def test_writing_a_result_imports_xarray_but_no_plotting_or_compiler_library(
 def test_a_sweep_case_builds_no_dataset(paper_config_path, tmp_path):
     config = load_config(paper_config_path, {"simulation.revolutions": 3})
     code = (
-        "from jointwear.sweep import run_case\n"
+        "from jointwear.workflows.sweep import run_case\n"
         f"record = run_case({{'case': 'case-0000', 'config': {config.to_toml()!r}, "
         "'checkpoint': None})\n"
         "assert record['status'] == 'ok', record\n"

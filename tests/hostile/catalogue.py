@@ -244,7 +244,7 @@ OUTRO = """\
   `jointwear.results.read_result` (netCDF; content by
   `jointwear.results.check_result_content`), `jointwear.measurement.io.read_points` (CSV),
   `jointwear.checkpoint.read_state` and `check_state` (checkpoints),
-  `jointwear.sweep.load_sweep` (sweep files), `jointwear.config.read_toml` (TOML depth).
+  `jointwear.workflows.sweep.load_sweep` (sweep files), `jointwear.config.read_toml` (TOML depth).
 * Output: `jointwear.io.check_out` (before any work) and `jointwear.io.staged_output`
   (publishing); `jointwear.io.check_tree` for folders filled case by case.
 * Signals: `jointwear.interrupts` (installed by `python -m jointwear` and the console

@@ -182,9 +182,9 @@ def silent_server():
 
 def test_silent_scheduler_is_a_one_line_error(silent_server, tmp_path, capsys, monkeypatch):
     """A server that accepts and never answers: 'no dask scheduler answered ... within N s'."""
-    import jointwear.sweep
+    import jointwear.workflows.sweep.cluster
 
-    monkeypatch.setattr(jointwear.sweep, "CONNECT_TIMEOUT", 0.5)
+    monkeypatch.setattr(jointwear.workflows.sweep.cluster, "CONNECT_TIMEOUT", 0.5)
     (tmp_path / "s.toml").write_text(sweep_toml(GRID), encoding="utf-8")
     (tmp_path / "tiny.toml").write_text(PAPER.read_text(encoding="utf-8"), encoding="utf-8")
     out = tmp_path / "out"
@@ -200,7 +200,7 @@ def test_silent_scheduler_is_a_one_line_error(silent_server, tmp_path, capsys, m
 
 def test_a_server_that_is_no_scheduler_is_refused(tmp_path):
     """A TCP server that answers with something else than dask is refused by the probe."""
-    from jointwear.sweep import _probe
+    from jointwear.workflows.sweep.cluster import probe
 
     server = socket.socket()
     server.bind(("127.0.0.1", 0))
@@ -215,7 +215,7 @@ def test_a_server_that_is_no_scheduler_is_refused(tmp_path):
     address = f"tcp://127.0.0.1:{server.getsockname()[1]}"
     try:
         with pytest.raises(ConfigError, match="--scheduler: no dask scheduler answered"):
-            _probe(address, 2.0)
+            probe(address, 2.0)
     finally:
         server.close()
 

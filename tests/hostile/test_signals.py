@@ -8,6 +8,7 @@ exactly the numbers of an uninterrupted run.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import random
@@ -22,17 +23,21 @@ import pytest
 
 from jointwear import Simulation, load_config
 from jointwear.checkpoint import CHECKPOINT_CONFIG, CHECKPOINT_STATE, Checkpointer, read_state
-from jointwear.cli.run_cmd import add_checks
 from jointwear.interrupts import Interrupted
 from jointwear.results import read_result
+from jointwear.workflows.run import add_checks
 from tests.hostile.harness import PAPER, REPO, SMALL, Bad, run_cli, snapshot
 
 #: the signal tests are free-form (real processes); no table cases
 CASES: list[Bad] = []
 
 UPDATE_CONFIG = REPO / "examples" / "paper" / "fig14_nlcp_update.toml"
+#: a run that only a signal ends: every revolution updates the contour (without updates the
+#: run would jump straight to its life limit, in about a second)
 ENDLESS = [
     *SMALL,
+    "--set",
+    "simulation.update_contour=true",
     "--set",
     "simulation.revolutions=100000000",
     "--set",
@@ -47,6 +52,12 @@ RESUMABLE = {
 }
 
 
+def default_signals() -> None:
+    """In the child: SIGINT and SIGTERM as a shell starts a command (not inherited ignores)."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
 def jointwear(*args: str) -> subprocess.Popen:
     return subprocess.Popen(
         [sys.executable, "-m", "jointwear", *args],
@@ -54,6 +65,7 @@ def jointwear(*args: str) -> subprocess.Popen:
         stderr=subprocess.PIPE,
         text=True,
         env={**os.environ, "PYTHONPATH": str(REPO / "src")},
+        preexec_fn=default_signals,  # a test runner's worker may ignore SIGINT
     )
 
 
@@ -114,7 +126,7 @@ def test_signal_mid_run_exits_with_one_line_and_writes_nothing(tmp_path, signum,
 
 def test_ctrl_c_during_imports_prints_no_traceback(tmp_path):
     """Ctrl-C while the command line is still importing numpy & co.: `interrupted`, 130."""
-    process = jointwear("run", str(PAPER), "--out", str(tmp_path / "out"))
+    process = jointwear("run", str(PAPER), *ENDLESS, "--out", str(tmp_path / "out"))
     wait_for(lambda: handler_installed(process.pid), process, "the signal handler")
     process.send_signal(signal.SIGINT)
     returncode, stdout, stderr = finish(process)
@@ -304,41 +316,56 @@ def test_terminated_sweep_stops_its_running_cases(tmp_path):
     assert list((out / "cases").glob("*.json")) == []
 
 
+@contextlib.contextmanager
+def interactive_signals():
+    """SIGINT and SIGTERM as an interactive Python starts (a test runner's worker may ignore
+    SIGINT, and jointwear keeps an inherited ignore); the old handlers afterwards."""
+    previous = {each: signal.getsignal(each) for each in (signal.SIGINT, signal.SIGTERM)}
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    try:
+        yield
+    finally:
+        for each, handler in previous.items():
+            signal.signal(each, handler)
+
+
 def test_a_signal_swallowed_by_python_still_stops_the_work(tmp_path):
     """A signal whose exception Python drops (a weakref callback) stops at the next step."""
-    import weakref
+    with interactive_signals():
+        import weakref
 
-    from jointwear.cli.run_cmd import ProgressBar
-    from jointwear.interrupts import handling_signals
-    from jointwear.io import staged_output
+        from jointwear.cli.progress import ProgressBar
+        from jointwear.interrupts import handling_signals
+        from jointwear.io import staged_output
 
-    class Node:
-        pass
+        class Node:
+            pass
 
-    def swallowed(signum: int) -> None:
-        """Deliver ``signum`` inside a weakref callback, where Python drops the exception."""
+        def swallowed(signum: int) -> None:
+            """Deliver ``signum`` inside a weakref callback, where Python drops the exception."""
 
-        def callback(_: object) -> None:
-            signal.raise_signal(signum)
-            for _ in range(1000):  # the handler runs here, inside the callback
-                pass
+            def callback(_: object) -> None:
+                signal.raise_signal(signum)
+                for _ in range(1000):  # the handler runs here, inside the callback
+                    pass
 
-        node = Node()
-        ref = weakref.ref(node, callback)
-        del node
-        assert ref() is None
+            node = Node()
+            ref = weakref.ref(node, callback)
+            del node
+            assert ref() is None
 
-    with handling_signals():
-        swallowed(signal.SIGTERM)
-        with pytest.raises(Interrupted) as stopped:
-            ProgressBar("revolutions", quiet=True)(1, 10)
-        assert stopped.value.signum == signal.SIGTERM
+        with handling_signals():
+            swallowed(signal.SIGTERM)
+            with pytest.raises(Interrupted) as stopped:
+                ProgressBar("revolutions", quiet=True)(1, 10)
+            assert stopped.value.signum == signal.SIGTERM
 
-    def write_then_publish(out: Path) -> None:
-        with handling_signals(), staged_output(out) as staging:
-            (staging / "result.nc").write_text("complete")
-            swallowed(signal.SIGINT)
+        def write_then_publish(out: Path) -> None:
+            with handling_signals(), staged_output(out) as staging:
+                (staging / "result.nc").write_text("complete")
+                swallowed(signal.SIGINT)
 
-    with pytest.raises(Interrupted):
-        write_then_publish(tmp_path / "out")
-    assert list(tmp_path.iterdir()) == []  # nothing published, no staging left
+        with pytest.raises(Interrupted):
+            write_then_publish(tmp_path / "out")
+        assert list(tmp_path.iterdir()) == []  # nothing published, no staging left

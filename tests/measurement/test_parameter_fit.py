@@ -17,7 +17,6 @@ import numpy as np
 import pytest
 
 from jointwear import Simulation
-from jointwear.calibration import Parameter
 from jointwear.config import Config, load_config
 from jointwear.errors import ConfigError, DataError, FitMisfitWarning, WearThroughError
 from jointwear.measurement.parameter_fit import (
@@ -32,6 +31,7 @@ from jointwear.measurement.parameter_fit import (
     resolve_parameter,
 )
 from jointwear.measurement.synthetic import synthesize_measurement
+from jointwear.workflows.parameter_fit import Parameter
 
 KD = "materials.bushing.wear_coefficient"
 TRUE_KD = 3e-12  # [1/Pa]

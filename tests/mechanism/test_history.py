@@ -497,8 +497,8 @@ def test_example_load_history_runs(capsys: pytest.CaptureFixture[str]) -> None:
 )
 def test_every_mechanism_writes_what_reads_back(tmp_path: Path, example: str) -> None:
     """A mechanism's diagnostics must be known to the reader, or its CSV would not read back."""
-    from jointwear.cli.dynamics_cmd import write_csv
     from jointwear.mechanism.stage import load_cycles
+    from jointwear.workflows.dynamics import write_csv
 
     root = Path(__file__).resolve().parents[2] / "examples"
     for joint, cycle in load_cycles(load_config(root / example)).items():

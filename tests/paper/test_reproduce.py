@@ -11,8 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from jointwear.paper.calibration import CALIBRATION_CASE
 from jointwear.paper.cases import PAPER_ROWS, case_config, case_names
+from jointwear.paper.protocol import CALIBRATION_CASE
 from jointwear.paper.reproduce import check_trends, reproduce, run_cases
 
 REPO = Path(__file__).resolve().parents[2]

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -17,9 +16,7 @@ from jointwear.cli.common import (
     app,
     console,
     emit_json,
-    load,
 )
-from jointwear.errors import ConfigError
 
 CalConfigArg = Annotated[
     Path | None,
@@ -136,76 +133,52 @@ def calibrate(
     fits the contact laws to that exact reference over --loads.
     """
     if reference is not None:
-        _reference(reference, loads, config, measured, set_, json_)
+        from jointwear.workflows.calibration import calibrate_contact_laws
+
+        laws = calibrate_contact_laws(
+            reference, loads, config=config, overrides=set_ or [], measured=measured or []
+        )
+        print_contact_laws(laws, loads, json_)
         return
     if paper_row is not None:
-        _paper(paper_row, config, measured, case, fit, set_, json_)
+        from jointwear.paper.protocol import paper_row_calibration
+
+        summary = paper_row_calibration(
+            paper_row,
+            config=config,
+            overrides=set_ or [],
+            fit=fit or [],
+            measured=measured or [],
+            cases=case or [],
+        )
+        print_paper_row(summary, json_)
         return
+    from jointwear.workflows.calibration import calibrate_to_measurements
 
-    from jointwear.cli.compare_cmd import parse_align
-    from jointwear.measurement.compare import CIRCLE_FITS, PROFILE_CHOICES
-    from jointwear.measurement.io import length_unit_factor
-    from jointwear.measurement.parameter_fit import (
-        PARAMETER_ALIASES,
-        MeasuredCase,
-        calibrate_profiles,
-        parse_case,
-        parse_fit,
-    )
-    from jointwear.registry import suggest
-    from jointwear.resources import check_run
-    from jointwear.units import to_si
-
-    if config is None:
-        raise ConfigError("CONFIG: missing; give the config of the measured runs (or --paper-row)")
-    if config.suffix.lower() != ".toml" and config.suffix.lower() in {".csv", ".txt", ".dat"}:
-        raise ConfigError(f"CONFIG: {config} looks like a measurement; give the config first")
-    base = load(config, set_)
-    check_run(base, max_memory)  # every trial is a run of this size
-    if not fit:
-        raise ConfigError("--fit: name at least one parameter, e.g. --fit wear_coefficient")
-    parameters = [parse_fit(text, base) for text in fit]
-    keys = [p.key for p in parameters]
-    if len(set(keys)) != len(keys):
-        raise ConfigError("--fit: a parameter is named twice")
-    fit_name = circle_fit.replace("_", "-")
-    if fit_name not in CIRCLE_FITS:
-        raise ConfigError(
-            f"--circle-fit: unknown circle fit {circle_fit!r}{suggest(fit_name, CIRCLE_FITS)}"
-        )
-    if profile not in PROFILE_CHOICES:
-        raise ConfigError(
-            f"--profile: unknown method {profile!r}{suggest(profile, PROFILE_CHOICES)}"
-        )
-    alignment = parse_align(align)
-    noise_m = None
-    if noise is not None:
-        noise_m = to_si(noise, "length", "--noise")
-        if not noise_m > 0:
-            raise ConfigError(f"--noise: must be > 0, got {noise!r}")
-    if units is not None:
-        length_unit_factor(units, "--units")
-    specs: list[tuple[Path, dict[str, Any]]] = [(path, {}) for path in measured or []]
-    specs += [parse_case(text) for text in case or []]
-    if not specs:
-        raise ConfigError("MEASURED: give at least one measured file (or --case FILE:...)")
-    cases = [MeasuredCase.from_file(path, overrides, units, alignment) for path, overrides in specs]
-    seen: dict[str, int] = {}
-    for i, item in enumerate(cases):
-        # the same file (name) twice, e.g. with other settings: number the repeats
-        seen[item.name] = seen.get(item.name, 0) + 1
-        if seen[item.name] > 1:
-            cases[i] = MeasuredCase(
-                f"{item.name}#{seen[item.name]}", item.x, item.y, item.overrides, item.align
-            )
-    outcome = calibrate_profiles(
-        base, cases, parameters, fit=fit_name, profile=profile, noise=noise_m
+    outcome = calibrate_to_measurements(
+        config,
+        measured or [],
+        fit or [],
+        cases=case or [],
+        overrides=set_ or [],
+        units=units,
+        circle_fit=circle_fit,
+        noise=noise,
+        align=align,
+        profile=profile,
+        max_memory=max_memory,
     )
     summary = outcome.summary()
     if json_:
         emit_json(summary)
         return
-    title = f"calibrate: {config.name}, {len(cases)} case(s)"
+    print_measured(summary, f"calibrate: {config.name}, {len(summary['cases'])} case(s)")
+
+
+def print_measured(summary: dict[str, Any], title: str) -> None:
+    """The fitted parameters, their intervals, the residual and each case at the fit."""
+    from jointwear.measurement.parameter_fit import PARAMETER_ALIASES
+
     console.print(_parameter_table(summary["parameters"], title))
     short = {key: name for name, key in PARAMETER_ALIASES.items()}
     for key, item in summary["parameters"].items():
@@ -248,62 +221,16 @@ def calibrate(
             console.print(f"note: {key} ended at a bound; widen it (--fit {key}=LOWER..UPPER)")
 
 
-def _paper(
-    row: str,
-    config: Path | None,
-    measured: list[Path] | None,
-    case: list[str] | None,
-    fit: list[str] | None,
-    set_: list[str] | None,
-    json_: bool,
-) -> None:
-    """``calibrate --paper-row``: fit the paper's metrics of one table row."""
-    from jointwear.calibration import config_value
-    from jointwear.config import parse_override
-    from jointwear.measurement.parameter_fit import key_unit, parse_fit
-    from jointwear.paper.calibration import (
-        CALIBRATION_PARAMETERS,
-        calibrate_paper_row,
-        row_config,
-    )
+def print_paper_row(summary: dict[str, Any], json_: bool) -> None:
+    """The fitted parameters and the paper's metrics beside the calibrated model's."""
     from jointwear.paper.cases import PAPER_ROWS
-    from jointwear.simulation import Simulation
 
-    if measured or case:
-        raise ConfigError("--paper-row: fits the paper's table, not measured files; drop them")
-    if config is not None:
-        base = row_config(row, config=load(config, set_))
-    else:
-        base = row_config(row, dict(parse_override(text) for text in set_ or []))
-    parameters = [parse_fit(text, base) for text in fit] if fit else list(CALIBRATION_PARAMETERS)
-    result = calibrate_paper_row(row, parameters, config=base)
-    achieved = Simulation(result.config).run().summary()
-    paper = PAPER_ROWS[row]
-    targets = paper.targets
-    summary = {
-        "paper_row": row,
-        "parameters": {
-            p.key: {
-                "value": result.values[p.key],
-                "uncertainty": _finite(result.uncertainty[p.key]),
-                "unit": key_unit(p.key),
-                "initial": config_value(base, p.key),
-                "lower": p.lower,
-                "upper": p.upper,
-            }
-            for p in parameters
-        },
-        "rms_residual": result.rms_residual,
-        "residual_unit": "log(metric / paper)",
-        "evaluations": result.evaluations,
-        "targets": targets,
-        "achieved": {key: achieved[key] for key in targets},
-    }
     if json_:
         emit_json(summary)
         return
+    row, targets = summary["paper_row"], summary["targets"]
     console.print(_parameter_table(summary["parameters"], f"calibrate: paper row {row}"))
-    table = Table(title=f"{paper.table} row {row}: paper vs calibrated model")
+    table = Table(title=f"{PAPER_ROWS[row].table} row {row}: paper vs calibrated model")
     for column in ("metric", "paper", "model", "deviation"):
         table.add_column(column, justify="left" if column == "metric" else "right")
     for key, scale, unit in (
@@ -319,16 +246,28 @@ def _paper(
             f"{100 * (value / target - 1):+.3g} %",
         )
     console.print(table)
+    evaluations = summary["evaluations"]
     console.print(
-        f"{result.evaluations} evaluations; with as many metrics as parameters the fit is "
+        f"{evaluations} evaluations; with as many metrics as parameters the fit is "
         "exact and no uncertainty can be estimated"
-        if len(parameters) >= len(targets)
-        else f"{result.evaluations} evaluations"
+        if len(summary["parameters"]) >= len(targets)
+        else f"{evaluations} evaluations"
     )
 
 
-def _finite(value: float) -> float | None:
-    return value if math.isfinite(value) else None
+def print_contact_laws(laws: Any, loads: str, json_: bool) -> None:
+    """The contact laws fitted to a reference: values, uncertainties, equivalents."""
+    if json_:
+        emit_json(laws.summary())
+        return
+    console.print(f"contact laws fitted to {laws.reference} over {loads}:", markup=False)
+    for name, fit in laws.fits.items():
+        console.print(f"  {name} (rms residual {fit.rms_residual:.3g})", markup=False)
+        for key, value in fit.values.items():
+            console.print(f"    {key} = {value:.6g} ± {fit.uncertainty[key]:.2g}", markup=False)
+        for key, value in fit.equivalent.items():
+            text = value if isinstance(value, str) else f"{value:.6g}"
+            console.print(f"      {key} = {text}", markup=False)
 
 
 def _parameter_table(parameters: dict[str, dict[str, Any]], title: str) -> Table:
@@ -357,42 +296,3 @@ def _parameter_table(parameters: dict[str, dict[str, Any]], title: str) -> Table
             f"{show(item['lower'], 3)} … {show(item['upper'], 3)}",
         )
     return table
-
-
-def _reference(reference, loads, config, measured, set_, json_) -> None:
-    """``calibrate --reference``: Winkler's stiffness and NLCP's K, n fitted to a reference."""
-    from jointwear.cli.compare_models_cmd import parse_loads
-    from jointwear.config import load_config
-    from jointwear.contact import ContactParameters
-    from jointwear.references.spring_fit import calibrate_to_reference
-
-    if reference not in ("fem", "persson"):
-        from jointwear.registry import suggest
-
-        raise ConfigError(
-            f"--reference: unknown reference {reference!r}{suggest(reference, ['fem', 'persson'])}"
-        )
-    if measured:
-        raise ConfigError("--reference: fits the contact laws to a reference, not measured files")
-    cfg = load(config, set_) if config is not None else load_config(overrides=set_ or [])
-    force = parse_loads(loads)
-    fits = calibrate_to_reference(
-        ContactParameters.from_config(cfg), force, reference=reference, nodes=cfg.contact.nodes
-    )
-    if json_:
-        emit_json(
-            {
-                "reference": reference,
-                "loads_n": force,
-                "fits": {name: fit.to_json() for name, fit in fits.items()},
-            }
-        )
-        return
-    console.print(f"contact laws fitted to {reference} over {loads}:", markup=False)
-    for name, fit in fits.items():
-        console.print(f"  {name} (rms residual {fit.rms_residual:.3g})", markup=False)
-        for key, value in fit.values.items():
-            console.print(f"    {key} = {value:.6g} ± {fit.uncertainty[key]:.2g}", markup=False)
-        for key, value in fit.equivalent.items():
-            text = value if isinstance(value, str) else f"{value:.6g}"
-            console.print(f"      {key} = {text}", markup=False)

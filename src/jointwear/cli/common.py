@@ -1,4 +1,4 @@
-"""Shared pieces of the CLI: the app, consoles, common options, output helpers."""
+"""Shared pieces of the CLI: the app, consoles, common options, JSON output."""
 
 from __future__ import annotations
 
@@ -10,14 +10,12 @@ from typing import Annotated, Any
 import typer
 from rich.console import Console
 
-from jointwear.config import Config, load_config
-from jointwear.errors import ConfigError
-
 __all__ = [
     "ConfigArg",
     "DebugOpt",
     "JsonOpt",
     "MaxMemoryOpt",
+    "QuietOpt",
     "SetOpt",
     "TimeLimitOpt",
     "UnitsOpt",
@@ -25,7 +23,6 @@ __all__ = [
     "console",
     "emit_json",
     "err_console",
-    "load",
 ]
 
 app = typer.Typer(
@@ -65,6 +62,7 @@ UnitsOpt = Annotated[
     typer.Option("--units", help="Length unit of columns without one (default m), e.g. mm."),
 ]
 DebugOpt = Annotated[bool, typer.Option("--debug", help="Show tracebacks.")]
+QuietOpt = Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar.")]
 MaxMemoryOpt = Annotated[
     str | None,
     typer.Option(
@@ -89,13 +87,6 @@ TimeLimitOpt = Annotated[
 @app.callback()
 def _root(debug: DebugOpt = False) -> None:
     """Wear of planar revolute joints with clearance."""
-
-
-def load(config: Path, overrides: list[str] | None) -> Config:
-    """Load a config file with ``--set`` overrides (errors name the file or key)."""
-    if not config.exists():
-        raise ConfigError(f"{config}: file not found")
-    return load_config(config, overrides or [])
 
 
 def emit_json(data: dict[str, Any]) -> None:

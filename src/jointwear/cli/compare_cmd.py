@@ -6,7 +6,6 @@ import math
 from pathlib import Path
 from typing import Annotated, Any
 
-import numpy as np
 import typer
 from rich.table import Table
 
@@ -19,7 +18,6 @@ from jointwear.cli.common import (
     console,
     emit_json,
 )
-from jointwear.errors import ConfigError, DataError
 
 ResultArg = Annotated[
     Path,
@@ -71,57 +69,6 @@ RevolutionOpt = Annotated[
 ]
 
 
-def parse_align(text: str) -> str | float:
-    """``"best"`` or an angle with units (``"12 deg"``; a bare number is radians)."""
-    from jointwear.units import to_angle
-
-    if text.strip().lower() == "best":
-        return "best"
-    return to_angle(text, "--align")
-
-
-def simulated_profile(
-    dataset: Any, path: Path, revolution: int | None
-) -> tuple[np.ndarray, int | float]:
-    """The wear profile of a saved revolution (default the last) [m] and its revolution
-    (fractional for the last profile of a run a life limit ended)."""
-    from jointwear.state import revolution_number
-
-    revolutions = [revolution_number(r) for r in dataset["revolution"].values]
-    if revolution is None:
-        index = len(revolutions) - 1
-    elif revolution in revolutions:
-        index = revolutions.index(revolution)
-    else:
-        saved = ", ".join(str(r) for r in revolutions)
-        raise ConfigError(f"--revolution: {path} holds the profiles of revolutions {saved}")
-    depth = np.asarray(dataset["wear_depth"].values[index], dtype=float)
-    if depth.ndim != 1 or not np.all(np.isfinite(depth)):
-        raise DataError(f"{path}: the stored wear profile is not a finite 1-D array")
-    return depth, revolutions[index]
-
-
-#: what ``jointwear compare --out`` writes
-COMPARE_FILES = (
-    "comparison.json",
-    "profiles.csv",
-    "compare_polar.png",
-    "compare_polar.svg",
-    "compare_profile.png",
-    "compare_profile.svg",
-)
-
-
-def write_staged(out: Path, write: Any) -> list[Path]:
-    """Call ``write(staging_dir)``, then publish its files into ``out``: all or nothing."""
-    from jointwear.io import staged_output
-
-    with staged_output(out, files=COMPARE_FILES) as staging:
-        write(staging)
-        names = sorted(item.name for item in staging.iterdir())
-    return [out / name for name in names]
-
-
 @app.command()
 def compare(
     result: ResultArg,
@@ -150,107 +97,38 @@ def compare(
     measured profile rotated onto the simulated one (--align best, or a given
     offset): RMS error, peak, width, mass. Errors are measured minus simulated.
     """
-    from jointwear.io import check_out
-    from jointwear.measurement.compare import (
-        CIRCLE_FITS,
-        PROFILE_CHOICES,
-        compare_measurement,
-        plot_comparison,
-    )
-    from jointwear.measurement.io import length_unit_factor, read_points
-    from jointwear.registry import suggest
-    from jointwear.results import config_of, read_result, select_joint
-    from jointwear.units import BARE_LIMITS, to_si
+    from jointwear.workflows.measured import compare_run_to_measurement
 
-    # options first: a typo must not cost a circle fit, and must leave --out untouched
-    fit_name = fit.replace("_", "-")
-    if fit_name not in CIRCLE_FITS:
-        raise ConfigError(f"--fit: unknown circle fit {fit!r}{suggest(fit_name, CIRCLE_FITS)}")
-    if profile not in PROFILE_CHOICES:
-        raise ConfigError(
-            f"--profile: unknown method {profile!r}{suggest(profile, PROFILE_CHOICES)}"
-        )
-    if not 0 <= threshold < 1:
-        raise ConfigError(f"--threshold: must be in [0, 1), got {threshold:g}")
-    depth_floor = to_si(floor, "length", "--floor", bare_limit=BARE_LIMITS["length"][0])
-    if depth_floor < 0:
-        raise ConfigError(f"--floor: must be >= 0, got {floor!r}")
-    alignment = parse_align(align)
-    if units is not None:
-        length_unit_factor(units, "--units")
-    if out is not None:
-        out = check_out(out, files=COMPARE_FILES)
-
-    dataset = select_joint(read_result(result), joint)
-    config = config_of(dataset)
-    simulated, shown_revolution = simulated_profile(dataset, result, revolution)
-    if simulated.size != config.contact.nodes:
-        raise DataError(
-            f"{result}: the profile has {simulated.size} nodes, its config says "
-            f"{config.contact.nodes}"
-        )
-    x, y = read_points(measured, units)
-    radius = config.bushing_radius
-    comparison = compare_measurement(
-        simulated,
-        x,
-        y,
-        radius,
-        fit=fit_name,
-        axial_length=config.joint.axial_length,
-        density=config.materials.bushing.density,
+    done = compare_run_to_measurement(
+        result,
+        measured,
+        units=units,
+        fit=fit,
+        align=align,
+        out=out,
         threshold=threshold,
-        align=alignment,
-        floor=depth_floor,
+        floor=floor,
         profile=profile,
+        revolution=revolution,
+        joint=joint,
     )
-    summary = comparison.summary()
-    summary.update(
-        {
-            "result": str(result),
-            "measured": str(measured),
-            "revolution": shown_revolution,
-            "floor_m": depth_floor,
-        }
-    )
-
-    if out is not None:
-        from jointwear.io import json_ready, write_json
-
-        label = f"{measured.name} vs {result.name}"
-
-        def write(directory: Path) -> None:
-            plot_comparison(comparison, directory, x, y, label=label)
-            write_json(directory / "comparison.json", json_ready(summary))
-            _write_profiles(directory / "profiles.csv", comparison)
-
-        summary["files"] = [str(p) for p in write_staged(out, write)]
-
+    summary, comparison = done.summary, done.comparison
     if json_:
         emit_json(summary)
         return
     console.print(_table(summary, measured, result))
     noise = comparison.fit.rms_residual if comparison.fit is not None else math.nan
     measured_peak = comparison.measured_metrics.peak_depth
-    if fit_name == "robust" and threshold * measured_peak < 3 * noise and depth_floor < 3 * noise:
+    depth_floor = summary["floor_m"]
+    robust = fit.replace("_", "-") == "robust"
+    if robust and threshold * measured_peak < 3 * noise and depth_floor < 3 * noise:
         console.print(
             f"note: the width threshold ({threshold:g} of the peak) is below 3x the noise "
             f"({noise * 1e6:.2g} µm rms on the unworn arc); the measured width counts noise. "
             f'Try --floor "{3 * noise * 1e6:.2g} um".'
         )
-    if out is not None:
-        console.print(f"plots and data in {out}/")
-
-
-def _write_profiles(path: Path, comparison: Any) -> None:
-    from jointwear.io import atomic_write
-
-    with atomic_write(path, encoding="utf-8", newline="") as handle:
-        handle.write("theta [deg],simulated [m],measured [m],measured - simulated [m]\n")
-        for theta, sim, meas in zip(
-            np.degrees(comparison.theta), comparison.simulated, comparison.measured, strict=True
-        ):
-            handle.write(f"{theta:.6g},{sim:.10g},{meas:.10g},{meas - sim:.10g}\n")
+    if done.out is not None:
+        console.print(f"plots and data in {done.out}/")
 
 
 def _table(summary: dict[str, Any], measured: Path, result: Path) -> Table:

@@ -4,48 +4,15 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 from rich.markup import escape
 from rich.table import Table
 
-from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json, load
-from jointwear.errors import ConfigError
-from jointwear.units import to_si
+from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json
 
 _DEFAULT_LOADS = "50 N,100 N,200 N,400 N"
-
-
-def _split(values: list[str] | None) -> list[str]:
-    out: list[str] = []
-    for value in values or []:
-        out.extend(part.strip() for part in value.split(",") if part.strip())
-    return out
-
-
-def parse_loads(text: str) -> list[float]:
-    """Parse a ``--loads`` option: comma-separated forces with units (``"50 N,100 N"``).
-
-    Parameters
-    ----------
-    text : str
-        The option's text; each load a positive force with its unit.
-
-    Returns
-    -------
-    list of float
-        The loads [N].
-
-    Raises
-    ------
-    ConfigError
-        No load, a bad unit, or a load that is not positive and finite.
-    """
-    loads = [to_si(part, "force", "--loads") for part in _split([text])]
-    if not loads or any(not (math.isfinite(f) and f > 0) for f in loads):
-        raise ConfigError('--loads: give loads > 0, e.g. "50 N,100 N,200 N"')
-    return loads
 
 
 @app.command("compare-models")
@@ -84,65 +51,36 @@ def compare_models_command(
     json_: JsonOpt = False,
 ) -> None:
     """Contact half-angle, peak pressure and approach of every model over a load range."""
-    from jointwear.contact import CONTACT_MODELS, ContactParameters
-    from jointwear.io import check_out, staged_output
-    from jointwear.references.compare import DEFAULT_MODELS, METRICS, compare_models
-    from jointwear.registry import suggest
+    from jointwear.workflows.contact_models import compare_contact_models
 
-    names = ("compare_models_pressure.png", "compare_models_pressure.svg")
-    if out is not None:
-        out = check_out(out, files=names)
-    cfg = load(config, list(set_ or []))
-    force = parse_loads(loads)
-    names = _split(models) or list(DEFAULT_MODELS)
-    for name in names:
-        if name not in CONTACT_MODELS:
-            raise ConfigError(
-                f"--models: unknown contact model {name!r}{suggest(name, CONTACT_MODELS)}"
-            )
-    if reference not in CONTACT_MODELS:
-        raise ConfigError(
-            f"--reference: unknown contact model {reference!r}{suggest(reference, CONTACT_MODELS)}"
-        )
-    if reference not in names:
-        names.append(reference)
-    if target not in ("pressure", "metrics"):
-        raise ConfigError(f"--target: unknown {target!r}; choose 'pressure' or 'metrics'")
-    if calibrate and reference not in ("fem", "persson"):
-        raise ConfigError("--calibrate: the reference must be 'fem' or 'persson'")
-    params = ContactParameters.from_config(cfg)
-    options = {
-        "balance": cfg.contact.balance,
-        "tolerance": cfg.contact.tolerance,
-        "max_iterations": cfg.contact.max_iterations,
-    }
-    comparison = compare_models(params, force, names, cfg.contact.nodes, options)
-    result = comparison.to_json()
-    result["reference"] = reference
-    if comparison.errors:
-        result["errors"] = dict(comparison.errors)
-
-    plots: list[Path] = []
-    if out is not None:
-        from jointwear.references.compare import plot_pressure
-
-        with staged_output(out, files=names) as staging:
-            staged = plot_pressure(comparison, staging)
-        plots = [out / path.name for path in staged]
-        result["plots"] = [str(p) for p in plots]
-
-    fits = {}
-    if calibrate:
-        from jointwear.references.spring_fit import calibrate_to_reference
-
-        fits = calibrate_to_reference(
-            params, force, reference=reference, target=target, nodes=cfg.contact.nodes
-        )
-        result["calibration"] = {name: fit.to_json() for name, fit in fits.items()}
-
+    done = compare_contact_models(
+        config,
+        loads,
+        models=models,
+        reference=reference,
+        out=out,
+        calibrate=calibrate,
+        target=target,
+        overrides=set_ or [],
+    )
     if json_:
-        emit_json(result)
+        emit_json(done.summary)
         return
+    print_tables(done.comparison, reference)
+    for name, message in done.comparison.errors.items():
+        console.print(f"{name}: {message}", markup=False)
+    for path in done.plots:
+        console.print(f"plot: {path}", markup=False)
+    if done.fits:
+        console.print(
+            f"calibrated to {reference} ({target}) over {loads}:", markup=False, highlight=False
+        )
+        print_fits(done.fits)
+
+
+def print_tables(comparison: Any, reference: str) -> None:
+    """One table per metric: each model's value at each load, and its deviation."""
+    from jointwear.references.compare import METRICS
 
     deviation = comparison.deviation(reference)
     for key, (label, unit, scale) in METRICS.items():
@@ -163,18 +101,14 @@ def compare_models_command(
                 cells.append(text)
             table.add_row(name, *cells)
         console.print(table)
-    for name, message in comparison.errors.items():
-        console.print(f"{name}: {message}", markup=False)
-    for path in plots:
-        console.print(f"plot: {path}", markup=False)
-    if fits:
-        console.print(
-            f"calibrated to {reference} ({target}) over {loads}:", markup=False, highlight=False
-        )
-        for name, fit in fits.items():
-            console.print(f"  {name} (rms residual {fit.rms_residual:.3g})", markup=False)
-            for k, v in fit.values.items():
-                console.print(f"    {k} = {v:.6g} ± {fit.uncertainty[k]:.2g}", markup=False)
-            for k, v in fit.equivalent.items():
-                text = v if isinstance(v, str) else f"{v:.6g}"
-                console.print(f"      {k} = {text}", markup=False)
+
+
+def print_fits(fits: dict[str, Any]) -> None:
+    """The contact laws fitted to a reference: values, uncertainties, equivalents."""
+    for name, fit in fits.items():
+        console.print(f"  {name} (rms residual {fit.rms_residual:.3g})", markup=False)
+        for k, v in fit.values.items():
+            console.print(f"    {k} = {v:.6g} ± {fit.uncertainty[k]:.2g}", markup=False)
+        for k, v in fit.equivalent.items():
+            text = v if isinstance(v, str) else f"{v:.6g}"
+            console.print(f"      {k} = {text}", markup=False)

@@ -8,10 +8,8 @@ import typer
 from rich.markup import escape
 from rich.table import Table
 
-from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json, load
-from jointwear.contact import CONTACT_MODELS, MODEL_DESCRIPTIONS, ContactParameters, solve
-from jointwear.geometry import BushingContour, Pin
-from jointwear.units import to_angle, to_si
+from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json
+from jointwear.contact import CONTACT_MODELS, MODEL_DESCRIPTIONS
 
 
 @app.command()
@@ -28,34 +26,10 @@ def contact(
     json_: JsonOpt = False,
 ) -> None:
     """Pressure distribution for one load on the unworn bushing."""
-    # one load on the unworn bushing: there is no contour to update, so a model that
-    # solves circles is as good as any here (a run with contour update refuses it)
-    overrides = [*(set_ or []), "simulation.update_contour=false"]
-    if model is not None:
-        overrides.append(f"contact.model={model}")
-    cfg = load(config, overrides)
-    force = to_si(load_, "force", "--load")
-    angle = to_angle(azimuth, "--azimuth")
-    if force < 0:
-        from jointwear.errors import ConfigError
+    from jointwear.workflows.contact_models import contact_on_unworn_bushing
 
-        raise ConfigError("--load: must be >= 0 (use --azimuth for the direction)")
-    params = ContactParameters.from_config(cfg)
-    contour = BushingContour.circle(
-        cfg.joint.bushing_radius, cfg.contact.nodes, cfg.joint.axial_length
-    )
-    result = solve(
-        contour,
-        Pin(cfg.joint.pin_radius),
-        [force],
-        [angle],
-        cfg.contact.model,
-        params,
-        balance=cfg.contact.balance,
-        tolerance=cfg.contact.tolerance,
-        max_iterations=cfg.contact.max_iterations,
-    )
-    summary = result.summary(0)
+    done = contact_on_unworn_bushing(config, load_, azimuth, model=model, overrides=set_ or [])
+    summary, force = done.summary, done.load
     if json_:
         emit_json(summary)
         return

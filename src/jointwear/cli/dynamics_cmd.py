@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import csv
-import warnings
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -18,12 +16,7 @@ from jointwear.cli.common import (
     console,
     emit_json,
     err_console,
-    load,
 )
-from jointwear.errors import ConfigError, DataError
-from jointwear.io import atomic_write, os_reason
-from jointwear.mechanism import LoadCycle
-from jointwear.mechanism.stage import load_cycles
 
 CsvOpt = Annotated[
     Path | None,
@@ -44,37 +37,6 @@ StrictOpt = Annotated[
         "continuous-contact assumption fails (sets dynamics.strict = true).",
     ),
 ]
-
-
-def write_csv(path: Path, cycle: LoadCycle) -> None:
-    """Write the per-step arrays of ``cycle`` to ``path`` (atomically, full precision)."""
-    columns = cycle.columns()
-    rows = zip(*columns.values(), strict=True)
-    with atomic_write(path, encoding="utf-8", newline="") as handle:
-        writer = csv.writer(handle)
-        writer.writerow(columns)
-        writer.writerows([repr(float(value)) for value in row] for row in rows)
-
-
-def check_csv(path: Path) -> None:
-    """A --csv target must be absent or a regular file (not a link, folder or device)."""
-    if path.is_symlink() or (path.exists() and not path.is_file()):
-        kind = "a directory" if path.is_dir() and not path.is_symlink() else "not a regular file"
-        raise ConfigError(f"--csv: {path} is {kind}")
-    for parent in path.parents:  # created when missing; the first existing one is a folder
-        if parent.exists():
-            if not parent.is_dir():
-                raise ConfigError(f"--csv: {parent} is not a directory")
-            break
-
-
-def csv_paths(path: Path, joints: list[str]) -> dict[str, Path]:
-    """One CSV path per joint: ``path`` itself for a single joint."""
-    if len(joints) == 1:
-        return {joints[0]: path}
-    return {
-        joint: path.with_name(f"{path.stem}.{joint}{path.suffix or '.csv'}") for joint in joints
-    }
 
 
 def _rows(summary: dict[str, Any]) -> list[tuple[str, str]]:
@@ -135,31 +97,17 @@ def dynamics(
     strict: StrictOpt = False,
 ) -> None:
     """Load cycle of each clearance joint: load, its azimuth on the bushing, relative rotation."""
-    overrides = list(set_ or [])
-    if strict:
-        overrides.append("dynamics.strict=true")
-    if csv_path is not None:  # before anything is computed
-        check_csv(csv_path)
-    cfg = load(config, overrides)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        cycles = load_cycles(cfg)
-    # warnings go to stderr as one line each, so stdout stays a single JSON object
-    for warning in caught:
-        err_console.print(
-            f"warning: {warning.message}", markup=False, highlight=False, soft_wrap=True
-        )
-    if csv_path is not None:
-        paths = csv_paths(csv_path, list(cycles))
-        for path in paths.values():
-            check_csv(path)
-        try:
-            for joint, path in paths.items():
-                write_csv(path, cycles[joint])
-        except OSError as exc:
-            raise DataError(f"--csv: {exc.filename or csv_path}: {os_reason(exc)}") from None
-    context = {"clearance_m": cfg.joint.clearance}
-    summaries = {joint: {**cycle.summary(), **context} for joint, cycle in cycles.items()}
+    from jointwear.workflows.dynamics import joint_load_cycles
+
+    def show(messages: list[str]) -> None:
+        # warnings go to stderr as one line each, so stdout stays a single JSON object
+        for message in messages:
+            err_console.print(f"warning: {message}", markup=False, highlight=False, soft_wrap=True)
+
+    done = joint_load_cycles(
+        config, overrides=set_ or [], strict=strict, csv_path=csv_path, on_warnings=show
+    )
+    cfg, summaries = done.config, done.summaries
     first = next(iter(summaries.values()))
     if json_:
         emit_json({**first, "joints": summaries} if len(summaries) > 1 else first)

@@ -12,16 +12,15 @@ from jointwear.cli.common import (
     ConfigArg,
     JsonOpt,
     MaxMemoryOpt,
+    QuietOpt,
     SetOpt,
     TimeLimitOpt,
     app,
     console,
     emit_json,
-    load,
 )
-from jointwear.cli.run_cmd import ProgressBar, QuietOpt
-from jointwear.cli.sweep_cmd import SchedulerOpt, WorkersOpt, limited
-from jointwear.errors import ConfigError
+from jointwear.cli.progress import ProgressBar
+from jointwear.cli.sweep_cmd import SchedulerOpt, WorkersOpt
 
 SampleOpt = Annotated[
     list[str] | None,
@@ -59,35 +58,42 @@ def life(
     Each case draws the sampled inputs and runs to its first limit; the sensitivity is
     the rank correlation of the life with each input.
     """
-    from jointwear.io import atomic_path, check_out, check_tree
-    from jointwear.life import life_plan, parse_distribution, plot_life, run_life, shown
-    from jointwear.resources import check_case_count, parse_time_limit
+    from jointwear.resources import parse_time_limit
+    from jointwear.workflows.life import life_study
 
     seconds = parse_time_limit(time_limit)
-    check_case_count(cases, "--cases")
-    if out is None:
-        raise ConfigError("--out: missing; the life study needs a directory for its cases")
-    out = check_out(out, files=("life.json", "life.png", "cases.csv", "sweep.nc"), dirs=("cases",))
-    check_tree(out, ("cases",))
-    base = load(config, set_)
-    samples = dict(parse_distribution(text) for text in sample or [])
-    plan = life_plan(base, samples, cases, seed)
     with ProgressBar("cases", quiet=quiet, delay=0.0) as bar:
-        progress = limited(bar, plan, out, seconds, workers, max_memory, "life")
-        result = run_life(plan, out, scheduler=scheduler, workers=workers, progress=progress)
-    with atomic_path(out / "life.png") as tmp:
-        plot_life(result).savefig(tmp, format="png", dpi=120)
+        result = life_study(
+            config,
+            sample or [],
+            cases,
+            out=out,
+            seed=seed,
+            overrides=set_ or [],
+            scheduler=scheduler,
+            workers=workers,
+            max_memory=max_memory,
+            time_limit=seconds,
+            progress=bar,
+        )
     summary = result.summary()
     if json_:
         emit_json(summary)
         return
+    print_summary(summary, config.name, result.sweep.out)
+
+
+def print_summary(summary: dict, name: str, out: Path) -> None:
+    """The life quantiles, the censored cases, the material limits and the sensitivity."""
+    from jointwear.workflows.life import shown
+
     table = Table(
-        title=f"life of {config.name}: {summary['cases']} cases, "
+        title=f"life of {name}: {summary['cases']} cases, "
         f"{summary['censored']} without a limit reached, {summary['failed']} failed"
     )
     table.add_column("")
-    for name in ("p5", "median", "p95"):
-        table.add_column(name, justify="right")
+    for column in ("p5", "median", "p95"):
+        table.add_column(column, justify="right")
     for label, key in (("revolutions", "life_revolutions"), ("hours", "life_hours")):
         table.add_row(label, *(shown(summary[key][n]) for n in ("p5", "median", "p95")))
     console.print(table)

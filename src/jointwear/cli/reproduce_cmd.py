@@ -8,8 +8,7 @@ from typing import Annotated
 import typer
 
 from jointwear.cli.common import JsonOpt, SetOpt, app, console, emit_json
-from jointwear.cli.run_cmd import ProgressBar
-from jointwear.config import parse_override
+from jointwear.cli.progress import ProgressBar
 
 
 @app.command()
@@ -32,35 +31,16 @@ def reproduce(
     quiet: Annotated[bool, typer.Option("--quiet", "-q")] = False,
 ) -> None:
     """Run the paper's cases (Tables 3-5, Figs. 8-15) and write OUT/report.md."""
-    from jointwear.io import check_out, check_tree, staged_output
-    from jointwear.paper.cases import case_names
-    from jointwear.paper.reproduce import reproduce as run_reproduction
-
-    files, dirs = ("report.md", "report.json"), ("figures", "results")
-    out = check_out(out, files=files, dirs=dirs)
-    check_tree(out, dirs)
-
-    if case:
-        known = case_names()
-        for name in case:
-            if name not in known:
-                from jointwear.errors import ConfigError
-                from jointwear.registry import suggest
-
-                raise ConfigError(f"--case: unknown paper case {name!r}{suggest(name, known)}")
-    overrides = dict(parse_override(o) for o in (set_ or []))
+    from jointwear.paper.reproduce import reproduce_to_folder
 
     # a bar on a terminal, erased at the end: an error stays the only line on stderr
-    with (
-        ProgressBar("paper cases", quiet=quiet or json_, delay=0.0) as bar,
-        staged_output(out, files=files, dirs=dirs) as staging,  # appears when complete
-    ):
-        report = run_reproduction(
-            staging,
-            progress=lambda name, done, total: bar(done, total),
-            calibrate=calibrate,
+    with ProgressBar("paper cases", quiet=quiet or json_, delay=0.0) as bar:
+        report, out = reproduce_to_folder(
+            out,
             cases=case,
-            overrides=overrides,
+            calibrate=calibrate,
+            overrides=set_ or [],
+            progress=lambda name, done, total: bar(done, total),
         )
     if json_:
         emit_json(report)

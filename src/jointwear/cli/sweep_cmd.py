@@ -2,19 +2,22 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated
+from typing import Annotated
 
 import typer
 from rich.table import Table
 
-from jointwear.cli.common import JsonOpt, MaxMemoryOpt, TimeLimitOpt, app, console, emit_json
-from jointwear.cli.run_cmd import ProgressBar, QuietOpt
-from jointwear.errors import ConfigError
-
-if TYPE_CHECKING:
-    from jointwear.sweep import SweepPlan
+from jointwear.cli.common import (
+    JsonOpt,
+    MaxMemoryOpt,
+    QuietOpt,
+    TimeLimitOpt,
+    app,
+    console,
+    emit_json,
+)
+from jointwear.cli.progress import ProgressBar
 
 SweepArg = Annotated[
     Path | None,
@@ -54,39 +57,6 @@ SweepResumeOpt = Annotated[
 ]
 
 
-#: config keys that set the memory of a case
-SIZING_KEYS = {
-    "contact.nodes",
-    "simulation.steps_per_revolution",
-    "simulation.saved_profiles",
-    "mechanism.clearance_joint",
-}
-
-
-def limited(
-    bar: ProgressBar,
-    plan: SweepPlan,
-    out: Path,
-    seconds: float | None,
-    workers: int | None,
-    max_memory: str | None,
-    command: str,
-) -> Callable[[int, int], None]:
-    """Check the plan's memory, then a progress callback that stops at the time limit."""
-    from jointwear.resources import Deadline, available_cpus, check_sweep, run_memory
-
-    parallel = workers or min(available_cpus(), max(1, len(plan.cases)))
-    largest = plan.base
-    if SIZING_KEYS & set(plan.keys):  # the cases differ in size: the largest counts
-        configs = [plan.config(case) for case in plan.cases if case.invalid is None]
-        largest = max(
-            configs, key=lambda c: sum(size for *_, size in run_memory(c)), default=plan.base
-        )
-    check_sweep(len(plan.cases), largest, f"{plan.source}: cases", max_memory, parallel)
-    resume = f"jointwear sweep --resume {out}" if command == "sweep" else None
-    return Deadline(seconds, "cases", resume).watching(bar)
-
-
 #: failed cases listed in the human-readable summary
 SHOWN_FAILURES = 10
 
@@ -105,51 +75,29 @@ def sweep(
 ) -> None:
     """Run a parameter sweep (grid, zipped lists, random samples) and collect the metrics."""
     from jointwear.resources import parse_time_limit
-    from jointwear.sweep import load_plan, load_sweep, run_sweep
+    from jointwear.workflows.sweep import sweep_to_folder
 
     seconds = parse_time_limit(time_limit)
-    if workers is not None and workers < 1:
-        raise ConfigError(f"--workers: must be >= 1, got {workers}")
-    if scheduler is not None and workers is not None:
-        raise ConfigError("--workers: a dask cluster has its own workers; drop --workers")
-    if resume is not None:
-        if sweep_file is not None:
-            raise ConfigError(
-                f"--resume: give either SWEEP_FILE ({sweep_file}) or --resume DIR, not both"
-            )
-        if out is not None and out.resolve() != resume.resolve():
-            raise ConfigError("--out: a resumed sweep writes into its --resume directory")
-        plan = load_plan(resume)
-        out = resume
-    else:
-        if sweep_file is None:
-            raise ConfigError("SWEEP_FILE: missing; give a sweep file or --resume DIR")
-        if out is None:
-            raise ConfigError("--out: missing; the sweep needs a directory for its results")
-        if out.exists() and not out.is_dir():
-            raise ConfigError(f"--out: {out} exists and is not a directory")
-        plan = load_sweep(sweep_file)
-    try:
-        with ProgressBar("cases", quiet=quiet, delay=0.0) as bar:
-            result = run_sweep(
-                plan,
-                out,
-                scheduler=scheduler,
-                workers=workers,
-                resume=resume is not None,
-                progress=limited(bar, plan, out, seconds, workers, max_memory, "sweep"),
-            )
-    except KeyboardInterrupt as exc:
-        from jointwear.interrupts import with_resume
-        from jointwear.sweep import PLAN_FILE
-
-        if not (out / PLAN_FILE).is_file():
-            raise
-        raise with_resume(exc, f"jointwear sweep --resume {out}") from None  # cases are kept
+    with ProgressBar("cases", quiet=quiet, delay=0.0) as bar:
+        result = sweep_to_folder(
+            sweep_file,
+            out,
+            resume=resume,
+            scheduler=scheduler,
+            workers=workers,
+            max_memory=max_memory,
+            time_limit=seconds,
+            progress=bar,
+        )
     summary = result.summary()
     if json_:
         emit_json(summary)
         return
+    print_summary(summary, result.records, resume if resume is not None else out)
+
+
+def print_summary(summary: dict, records: list[dict], out: Path) -> None:
+    """The sweep's counts, the cases beyond a material limit and the failed cases."""
     counts = f"{summary['ok']} ok, {summary['failed']} failed"
     if summary["errors"]:
         counts += f", {summary['errors']} internal errors"
@@ -165,7 +113,7 @@ def sweep(
             f"{summary['limits_exceeded']} cases exceed a material limit ({which}); "
             "see exceeded_limits and the *_ratio columns"
         )
-    failures = [r for r in result.records if r["status"] != "ok"]
+    failures = [r for r in records if r["status"] != "ok"]
     if failures:
         table = Table(title="failed cases")
         table.add_column("case")

@@ -28,6 +28,8 @@ mid-range of the values Greenwood and Tripp (1970) give for engineering surfaces
 (``eta beta sigma`` 0.03-0.05, ``sigma / beta`` 1e-4 to 1e-2). Measure them (a
 profilometer's summit analysis) where the asperity load matters.
 
+Sources: [1]_, [2]_, [3]_, [4]_.
+
 References
 ----------
 .. [1] J. A. Greenwood and J. H. Tripp, "The contact of two nominally flat rough

@@ -36,6 +36,8 @@ integrated in closed form over the positive region with Sommerfeld's substitutio
 (:func:`sommerfeld_angle`), so they are exact for any combination of rotation and
 squeeze, not only for the fixed half film ``0 < theta < pi`` of steady rotation.
 
+Sources: [1]_, [2]_, [3]_, [4]_, [5]_.
+
 References
 ----------
 .. [1] F. W. Ocvirk, "Short-bearing approximation for full journal bearings",

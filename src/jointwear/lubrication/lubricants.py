@@ -17,6 +17,8 @@ points (which it reproduces exactly). ASTM D341 states it for ``nu >= 2 mm^2/s``
 that (thin oils well above 100 degC) it errs on the thin side. The dynamic viscosity is
 ``mu = nu rho(T)`` with ``rho(T) = rho_15 / (1 + alpha (T - 15 degC))``.
 
+Sources: [1]_, [2]_, [3]_.
+
 References
 ----------
 .. [1] ASTM D341, Standard practice for viscosity-temperature equations and charts for

@@ -42,6 +42,8 @@ models agree exactly. Goenka (1984) fitted closed forms to this finite-length mo
 jointwear computes it from the Reynolds equation instead, so its accuracy is measured
 rather than inherited from a fit.
 
+Sources: [1]_, [2]_, [3]_.
+
 References
 ----------
 .. [1] J. F. Booker, "Dynamically loaded journal bearings: mobility method of

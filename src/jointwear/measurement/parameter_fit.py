@@ -50,7 +50,7 @@ that measurement (wrong model, load, speed or revolutions), and the interval,
 which assumes it does, is not to be trusted.
 
 The paper's protocol -- scalar metrics (peak, width, mass) of one of its table
-rows -- is :func:`jointwear.paper.calibration.calibrate_paper_row`.
+rows -- is :func:`jointwear.paper.protocol.calibrate_paper_row`.
 
 References
 ----------
@@ -72,7 +72,6 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from jointwear.calibration import CalibrationResult, Parameter, config_value
 from jointwear.config import Config, key_field, parse_override
 from jointwear.errors import ConfigError, DataError, FitMisfitWarning, JointwearError
 from jointwear.measurement.compare import (
@@ -88,6 +87,7 @@ from jointwear.measurement.pointfit import PointFit, fit_points, interpolation_w
 from jointwear.measurement.profile import align_profiles, measured_wear_profile
 from jointwear.registry import suggest
 from jointwear.units import DIMENSIONS, to_si
+from jointwear.workflows.parameter_fit import CalibrationResult, Parameter, config_value
 
 __all__ = [
     "CONFIDENCE",
@@ -244,7 +244,7 @@ def resolve_key(name: str, config: Config) -> str:
 def resolve_parameter(
     name: str, config: Config, bounds: tuple[float, float] | None = None
 ) -> Parameter:
-    """A :class:`~jointwear.calibration.Parameter` for a name, with default bounds.
+    """A :class:`~jointwear.workflows.parameter_fit.Parameter` for a name, with default bounds.
 
     Parameters
     ----------

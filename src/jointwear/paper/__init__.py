@@ -3,7 +3,7 @@
 =========================================  ================================================
 :mod:`jointwear.paper.cases`               the paper's table rows (SI) and the shipped
                                            config of every case (``configs/*.toml``)
-:mod:`jointwear.paper.calibration`         the protocol: what the paper leaves open,
+:mod:`jointwear.paper.protocol`            the protocol: what the paper leaves open,
                                            calibrated on one row
 :mod:`jointwear.paper.reproduce`           every case run, the stated trends checked,
                                            the sensitivity to the readings of the paper
@@ -16,12 +16,12 @@ This package sits on top of the library: nothing else in ``jointwear`` imports i
 
 from __future__ import annotations
 
-from jointwear.paper.calibration import (
+from jointwear.paper.cases import PAPER_ROWS, PaperRow, case_config, case_names
+from jointwear.paper.protocol import (
     CALIBRATION_CASE,
     CALIBRATION_PARAMETERS,
     calibrate_paper_row,
 )
-from jointwear.paper.cases import PAPER_ROWS, PaperRow, case_config, case_names
 from jointwear.paper.reproduce import check_trends, reproduce, run_cases
 
 __all__ = [

@@ -3,7 +3,7 @@
 The configs are package data (``jointwear/paper/configs/*.toml``; ``examples/paper``
 in a source checkout links to them): one per row of Tables 3-5 and per figure case
 (Figs. 13-15), carrying the values calibrated on one row
-(:mod:`jointwear.paper.calibration`).
+(:mod:`jointwear.paper.protocol`).
 """
 
 from __future__ import annotations

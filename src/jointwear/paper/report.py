@@ -9,8 +9,8 @@ import numpy as np
 
 from jointwear.display import depth_unit
 from jointwear.io import atomic_write
-from jointwear.paper.calibration import CALIBRATION_CASE
 from jointwear.paper.cases import DISPLAY_UNITS, PAPER_ROWS, deviation
+from jointwear.paper.protocol import CALIBRATION_CASE
 from jointwear.plots import new_figure, polar_magnification, save_figure
 
 __all__ = ["figures", "write_report"]
@@ -155,9 +155,44 @@ def _compile_line(seconds: float | None) -> str:
 
 
 def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Path]) -> None:
-    """Write the markdown report."""
-    lines = ["# jointwear: reproduction of the NLCP paper", ""]
-    lines += [
+    """Write the markdown report.
+
+    Parameters
+    ----------
+    report : dict
+        What :func:`~jointwear.paper.reproduce.reproduce` found: ``calibration``,
+        ``cases`` (per case its summary, SI), ``trends``, ``sensitivity``, ``feedback``,
+        ``compile_s`` [s], ``total_runtime_s`` [s] and ``machine``.
+    path : Path
+        The report file (``report.md``).
+    figure_paths : dict of str to Path
+        The figures to show, by name (linked relative to ``path``).
+    """
+    cal = report.get("calibration")
+    lines = [
+        *_introduction_lines(report),
+        *_calibration_lines(cal),
+        *_table_lines(report["cases"], cal),
+        *_trend_table_lines(report["trends"]),
+        *_trend_notes(report["trends"], report.get("sensitivity") or []),
+        *_sensitivity_lines(report),
+        *_feedback_lines(report.get("feedback")),
+        *_figure_case_lines(report["cases"]),
+        *_figure_lines(figure_paths, path),
+        *_material_check_lines(report["cases"]),
+        "## Notes",
+        "",
+        _NOTES,
+    ]
+    with atomic_write(path, encoding="utf-8") as handle:
+        handle.write("\n".join(lines) + "\n")
+
+
+def _introduction_lines(report: dict[str, Any]) -> list[str]:
+    """The title, how the paper's units are read, the machine and the run and compile time."""
+    return [
+        "# jointwear: reproduction of the NLCP paper",
+        "",
         "Every row below is computed by `jointwear reproduce`. The paper's units are read as "
         'the documentation\'s "How we read the paper" says (its tables print g and mm where '
         "kg and m reproduce its results; wear "
@@ -170,41 +205,50 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
         "## Calibration (on one row; every other row is a prediction)",
         "",
     ]
-    cal = report.get("calibration")
-    if cal is None:
-        lines += ["Calibration skipped (`--no-calibrate`): the configs' own values are used.", ""]
-    else:
-        lines += [
-            f"The parameters the paper does not give were fitted on **one** row, "
-            f"`{cal['case']}` (Table 3, Winkler, 120 rpm, 0.05 mm, one revolution), to its wear "
-            f"peak, width and mass by least squares ({cal['evaluations']} model evaluations): "
-            f"{_fitted(cal)}, so that row agrees by construction. Every other row is a "
-            "prediction with these values.",
-            "",
-            "| parameter | calibrated value |",
-            "|---|---|",
-        ]
-        units = {
-            "joint.axial_length": (1e3, "mm"),
-            "joint.bushing_thickness": (1e3, "mm"),
-            "mechanism.spring_preload": (1.0, "N"),
-        }
-        for key, value in cal["values"].items():
-            scale, unit = units.get(key, (1.0, "SI"))
-            lines.append(f"| `{key}` | {value * scale:.4g} {unit} |")
-        lines += [
-            "",
-            "Residuals at the optimum (log ratio ours/paper): "
-            + ", ".join(
-                f"{label.removeprefix('log(').split('/')[0]} {r:+.2e}"
-                for label, r in zip(cal["labels"], cal["residuals"], strict=True)
-            ),
-            "",
-        ]
 
+
+#: how the calibrated parameters are shown: key -> (scale, unit)
+CALIBRATED_UNITS = {
+    "joint.axial_length": (1e3, "mm"),
+    "joint.bushing_thickness": (1e3, "mm"),
+    "mechanism.spring_preload": (1.0, "N"),
+}
+
+
+def _calibration_lines(cal: dict[str, Any] | None) -> list[str]:
+    """The calibration row, the fitted values and the residuals at the optimum."""
+    if cal is None:
+        return ["Calibration skipped (`--no-calibrate`): the configs' own values are used.", ""]
+    lines = [
+        f"The parameters the paper does not give were fitted on **one** row, "
+        f"`{cal['case']}` (Table 3, Winkler, 120 rpm, 0.05 mm, one revolution), to its wear "
+        f"peak, width and mass by least squares ({cal['evaluations']} model evaluations): "
+        f"{_fitted(cal)}, so that row agrees by construction. Every other row is a "
+        "prediction with these values.",
+        "",
+        "| parameter | calibrated value |",
+        "|---|---|",
+    ]
+    for key, value in cal["values"].items():
+        scale, unit = CALIBRATED_UNITS.get(key, (1.0, "SI"))
+        lines.append(f"| `{key}` | {value * scale:.4g} {unit} |")
+    return [
+        *lines,
+        "",
+        "Residuals at the optimum (log ratio ours/paper): "
+        + ", ".join(
+            f"{label.removeprefix('log(').split('/')[0]} {r:+.2e}"
+            for label, r in zip(cal["labels"], cal["residuals"], strict=True)
+        ),
+        "",
+    ]
+
+
+def _table_lines(cases: dict[str, dict[str, Any]], cal: dict[str, Any] | None) -> list[str]:
+    """Tables 3-5, the paper's values beside ours, and the largest deviations."""
     fitted = "" if cal is None else _fitted(cal)
     peak_unit, mass_unit = DISPLAY_UNITS["peak"][1], DISPLAY_UNITS["mass"][1]
-    lines += [
+    lines = [
         "## Tables 3-5: paper vs ours",
         "",
         "Each row is reproduced on its own by the command in its last column (the shipped "
@@ -220,9 +264,9 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
     ]
     worst: list[tuple[float, str]] = []
     for name, row in PAPER_ROWS.items():
-        if name not in report["cases"]:
+        if name not in cases:
             continue
-        s = report["cases"][name]
+        s = cases[name]
         d = [deviation(s[key], getattr(row, key)) for key in ("peak", "width", "mass")]
         calibrated = name == CALIBRATION_CASE and cal is not None
         dev = ["fitted" if calibrated else _pct(x) for x in d]
@@ -249,8 +293,16 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
             + ".",
             "",
         ]
+    return lines
 
-    lines += [
+
+def _verdict(ok: bool | None) -> str:
+    return "n/a" if ok is None else ("holds" if ok else "**fails**")
+
+
+def _trend_table_lines(trends: list[dict[str, Any]]) -> list[str]:
+    """Each trend the paper states, checked on ours and on the paper's own tables."""
+    lines = [
         "## Trends the paper states",
         "",
         "Each trend is checked on our results and, where the paper gives table values, on "
@@ -259,54 +311,53 @@ def write_report(report: dict[str, Any], path: Path, figure_paths: dict[str, Pat
         "| | trend | ours | paper's tables | numbers (ours) | numbers (paper) |",
         "|---|---|---|---|---|---|",
     ]
-
-    def verdict(ok):
-        return "n/a" if ok is None else ("holds" if ok else "**fails**")
-
-    for trend in report["trends"]:
+    for trend in trends:
         lines.append(
-            f"| {trend.get('id', '')} | {trend['statement']} | {verdict(trend['holds'])} | "
-            f"{verdict(trend.get('paper_tables_hold'))} | {trend['detail']} | "
+            f"| {trend.get('id', '')} | {trend['statement']} | {_verdict(trend['holds'])} | "
+            f"{_verdict(trend.get('paper_tables_hold'))} | {trend['detail']} | "
             f"{trend.get('paper_detail', '')} |"
         )
     lines.append("")
-    lines += _trend_notes(report["trends"], report.get("sensitivity") or [])
+    return lines
 
-    lines += _sensitivity_lines(report)
-    lines += _feedback_lines(report.get("feedback"))
 
-    others = [n for n in report["cases"] if n not in PAPER_ROWS]
-    if others:
-        lines += [
-            "## Figure cases (no table values in the paper)",
-            "",
-            "Contour updates: how often the worn contour was updated and the pressure solved "
-            "again; a run without update computes one revolution and scales it.",
-            "",
-            f"| case | peak [{peak_unit}] | width [°] | mass [{mass_unit}] | contour updates | "
-            "time [s] | command that reproduces this row |",
-            "|---|---|---|---|---|---|---|",
-        ]
-        for name in others:
-            s = report["cases"][name]
-            updates = s["contour_updates"] if s.get("contour_update", True) else "none"
-            lines.append(
-                f"| `{name}` | {_value('peak', s['peak'])} | {_value('width', s['width'])} | "
-                f"{_value('mass', s['mass'])} | {updates} | {s['runtime_s']:.3g} | "
-                f"{_command(name)} |"
-            )
-        lines.append("")
+def _figure_case_lines(cases: dict[str, dict[str, Any]]) -> list[str]:
+    """The cases of the paper's figures, which have no table values."""
+    others = [n for n in cases if n not in PAPER_ROWS]
+    if not others:
+        return []
+    peak_unit, mass_unit = DISPLAY_UNITS["peak"][1], DISPLAY_UNITS["mass"][1]
+    lines = [
+        "## Figure cases (no table values in the paper)",
+        "",
+        "Contour updates: how often the worn contour was updated and the pressure solved "
+        "again; a run without update computes one revolution and scales it.",
+        "",
+        f"| case | peak [{peak_unit}] | width [°] | mass [{mass_unit}] | contour updates | "
+        "time [s] | command that reproduces this row |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for name in others:
+        s = cases[name]
+        updates = s["contour_updates"] if s.get("contour_update", True) else "none"
+        lines.append(
+            f"| `{name}` | {_value('peak', s['peak'])} | {_value('width', s['width'])} | "
+            f"{_value('mass', s['mass'])} | {updates} | {s['runtime_s']:.3g} | "
+            f"{_command(name)} |"
+        )
+    lines.append("")
+    return lines
 
-    if figure_paths:
-        lines += ["## Figures", ""]
-        for name, fig in figure_paths.items():
-            rel = fig.relative_to(path.parent) if fig.is_relative_to(path.parent) else fig
-            lines += [f"### {name}", "", f"![{name}]({rel.as_posix()})", ""]
 
-    lines += _material_check_lines(report["cases"])
-    lines += ["## Notes", "", _NOTES]
-    with atomic_write(path, encoding="utf-8") as handle:
-        handle.write("\n".join(lines) + "\n")
+def _figure_lines(figure_paths: dict[str, Path], path: Path) -> list[str]:
+    """The figures, linked relative to the report."""
+    if not figure_paths:
+        return []
+    lines = ["## Figures", ""]
+    for name, fig in figure_paths.items():
+        rel = fig.relative_to(path.parent) if fig.is_relative_to(path.parent) else fig
+        lines += [f"### {name}", "", f"![{name}]({rel.as_posix()})", ""]
+    return lines
 
 
 def _material_check_lines(cases: dict[str, dict]) -> list[str]:

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import platform
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -21,12 +21,12 @@ import numpy as np
 
 from jointwear.config import Config
 from jointwear.io import json_ready, write_json
-from jointwear.paper.calibration import (
+from jointwear.paper.cases import PAPER_ROWS, case_config, case_names, deviation, shown
+from jointwear.paper.protocol import (
     CALIBRATION_CASE,
     CALIBRATION_PARAMETERS,
     calibrate_paper_row,
 )
-from jointwear.paper.cases import PAPER_ROWS, case_config, case_names, deviation, shown
 
 __all__ = [
     "FEEDBACK_CLEARANCES",
@@ -38,6 +38,7 @@ __all__ = [
     "eq2_stiffness_over_pi",
     "feedback_study",
     "reproduce",
+    "reproduce_to_folder",
     "run_cases",
     "sensitivity",
     "variant_record",
@@ -555,9 +556,6 @@ def reproduce(
         (:func:`compile_kernels`, ``None`` if no case needed them), timed apart from
         every case.
     """
-    from jointwear.contact.kernel import compiled_available
-    from jointwear.contact.solver import compiled_kernel
-
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     started = time.perf_counter()
@@ -566,12 +564,7 @@ def reproduce(
     names = cases or case_names()
     if with_sensitivity is None:
         with_sensitivity = calibrate and cases is None
-    # the one-time compile before anything is timed; only if a case will use the kernels
-    # (a run of one-revolution cases never loads numba)
-    compile_s = None
-    compiled = [compiled_kernel(case_config(name, overrides)) is not False for name in names]
-    if (with_sensitivity or any(compiled)) and compiled_available():
-        compile_s = compile_kernels(case_config(CALIBRATION_CASE, overrides))
+    compile_s = _compile_first(names, overrides, with_sensitivity)
     calibration = None
     if calibrate:
         calibration = calibrate_paper_row(overrides=overrides)
@@ -579,37 +572,24 @@ def reproduce(
     summaries, results = run_cases(names, overrides, progress)
     for name, result in results.items():
         summaries[name]["checks"] = material_checks(result)
-    datasets = {name: result.dataset for name, result in results.items()}
     for name, result in results.items():
         result.to_netcdf(out / "results" / f"{name}.nc")
     if progress is not None:
         progress("done", len(names), len(names))
-    trends = check_trends(summaries)
-    variants = []
+    variants, feedback = [], None
     if with_sensitivity:
-        default = variant_record(
-            "**default** (relative rotation, E, pulling spring, K of eq. 2)",
-            {},
-            {} if calibration is None else calibration.values,
-            summaries,
-        )
+        fitted = {} if calibration is None else calibration.values
+        default = variant_record(DEFAULT_READING, {}, fitted, summaries)
         variants = [default, *sensitivity(overrides_in, names)]
-    feedback = feedback_study(overrides) if with_sensitivity else None
+        feedback = feedback_study(overrides)
     from jointwear.paper.report import figures, write_report
 
+    datasets = {name: result.dataset for name, result in results.items()}
     figure_paths = figures(datasets, out / "figures")
     report = {
-        "calibration": None
-        if calibration is None
-        else {
-            "case": CALIBRATION_CASE,
-            "values": calibration.values,
-            "residuals": calibration.residuals.tolist(),
-            "labels": calibration.labels,
-            "evaluations": calibration.evaluations,
-        },
+        "calibration": None if calibration is None else _calibration_record(calibration),
         "cases": summaries,
-        "trends": trends,
+        "trends": check_trends(summaries),
         "sensitivity": variants,
         "feedback": feedback,
         "compile_s": compile_s,
@@ -620,3 +600,97 @@ def reproduce(
     write_report(report, out / "report.md", figure_paths)
     write_json(out / "report.json", json_ready(report))
     return report
+
+
+#: the label of the default reading in the sensitivity table
+DEFAULT_READING = "**default** (relative rotation, E, pulling spring, K of eq. 2)"
+
+
+def _compile_first(
+    names: list[str], overrides: dict[str, Any], with_sensitivity: bool
+) -> float | None:
+    """The one-time compile of the kernels before anything is timed [s], if a case will use
+    them (a run of one-revolution cases never loads numba); ``None`` otherwise."""
+    from jointwear.contact.kernel import compiled_available
+    from jointwear.contact.solver import compiled_kernel
+
+    compiled = [compiled_kernel(case_config(name, overrides)) is not False for name in names]
+    if (with_sensitivity or any(compiled)) and compiled_available():
+        return compile_kernels(case_config(CALIBRATION_CASE, overrides))
+    return None
+
+
+def _calibration_record(calibration: Any) -> dict[str, Any]:
+    """The report's record of the calibration on :data:`CALIBRATION_CASE`."""
+    return {
+        "case": CALIBRATION_CASE,
+        "values": calibration.values,
+        "residuals": calibration.residuals.tolist(),
+        "labels": calibration.labels,
+        "evaluations": calibration.evaluations,
+    }
+
+
+#: what ``jointwear reproduce`` writes into its folder (files, then folders)
+REPORT_FILES = ("report.md", "report.json")
+REPORT_DIRS = ("figures", "results")
+
+
+def reproduce_to_folder(
+    out: Path,
+    *,
+    cases: Sequence[str] | None = None,
+    calibrate: bool = True,
+    overrides: Sequence[str] = (),
+    progress: Callable[[str, int, int], None] | None = None,
+) -> tuple[dict[str, Any], Path]:
+    """``jointwear reproduce``: :func:`reproduce` into a folder that appears when complete.
+
+    Parameters
+    ----------
+    out : Path
+        Folder for ``report.md``, ``report.json``, ``figures/`` and ``results/``.
+    cases : sequence of str, optional
+        Run only these paper cases (default all, with the sensitivity study).
+    calibrate : bool
+        Calibrate the undisclosed parameters on the calibration row first.
+    overrides : sequence of str
+        ``section.key=VALUE`` overrides of every case.
+    progress : callable, optional
+        ``progress(case, done, total)``.
+
+    Returns
+    -------
+    report : dict
+        What :func:`reproduce` returns.
+    folder : Path
+        Where the report is.
+
+    Raises
+    ------
+    ConfigError
+        An unknown case (with a suggestion), a bad override or folder.
+    """
+    from jointwear.config import parse_override
+    from jointwear.errors import ConfigError
+    from jointwear.io import check_out, check_tree, staged_output
+    from jointwear.registry import suggest
+
+    out = check_out(out, files=REPORT_FILES, dirs=REPORT_DIRS)
+    check_tree(out, REPORT_DIRS)
+    if cases:
+        known = case_names()
+        for name in cases:
+            if name not in known:
+                raise ConfigError(f"--case: unknown paper case {name!r}{suggest(name, known)}")
+    changes = dict(parse_override(text) for text in overrides)
+    # the folder appears when complete
+    with staged_output(out, files=REPORT_FILES, dirs=REPORT_DIRS) as staging:
+        report = reproduce(
+            staging,
+            progress=progress,
+            calibrate=calibrate,
+            cases=None if cases is None else list(cases),
+            overrides=changes,
+        )
+    return report, out

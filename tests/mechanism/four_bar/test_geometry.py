@@ -2,35 +2,16 @@
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import pytest
 
 from jointwear.config import load_config
 from jointwear.errors import ConfigError
-from jointwear.mechanism.four_bar.geometry import FourBar, check_four_bar
+from jointwear.mechanism.four_bar.geometry import check_four_bar
+from tests.mechanism.four_bar.linkages import linkage
 
 EXAMPLE = Path(__file__).resolve().parents[3] / "examples" / "four_bar.toml"
-#: (l0, l1, l2, l3) [m]: the example and a stubbier crank-rocker with a long rocker
-LINKAGES = [(0.2, 0.05, 0.18, 0.12), (0.1, 0.04, 0.12, 0.09)]
-
-
-def linkage(lengths=LINKAGES[0], **changes: object) -> FourBar:
-    data = dict(
-        crank_mass=0.1,
-        coupler_mass=0.3,
-        rocker_mass=0.2,
-        gravity=9.81,
-        rocker_torque=2.0,
-        rocker_spring_stiffness=1.0,
-        rocker_spring_angle=math.pi / 2,
-    )
-    data.update(changes)
-    l0, l1, l2, l3 = lengths
-    for name, length in (("crank", l1), ("coupler", l2), ("rocker", l3)):
-        data.setdefault(f"{name}_inertia", data[f"{name}_mass"] * length**2 / 12)
-    return FourBar(l0, l1, l2, l3, **data)
 
 
 # ------------------------------------------------------------------ validation

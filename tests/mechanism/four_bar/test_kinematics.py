@@ -2,47 +2,11 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 
-from jointwear.mechanism.four_bar.geometry import FourBar
-from jointwear.mechanism.four_bar.kinematics import FourBarMotion, four_bar_motion, joint_positions
-
-RPM = 2.0 * math.pi / 60.0
-#: (l0, l1, l2, l3) [m]: the example and a stubbier crank-rocker with a long rocker
-LINKAGES = [(0.2, 0.05, 0.18, 0.12), (0.1, 0.04, 0.12, 0.09)]
-
-
-def linkage(lengths=LINKAGES[0], **changes: object) -> FourBar:
-    data = dict(
-        crank_mass=0.1,
-        coupler_mass=0.3,
-        rocker_mass=0.2,
-        gravity=9.81,
-        rocker_torque=2.0,
-        rocker_spring_stiffness=1.0,
-        rocker_spring_angle=math.pi / 2,
-    )
-    data.update(changes)
-    l0, l1, l2, l3 = lengths
-    for name, length in (("crank", l1), ("coupler", l2), ("rocker", l3)):
-        data.setdefault(f"{name}_inertia", data[f"{name}_mass"] * length**2 / 12)
-    return FourBar(l0, l1, l2, l3, **data)
-
-
-def motion_of(link: FourBar, phi: np.ndarray, omega: float) -> FourBarMotion:
-    return four_bar_motion(phi, *link.lengths, omega, link.assembly)
-
-
-def unit(theta: np.ndarray) -> np.ndarray:
-    return np.stack((np.cos(theta), np.sin(theta)), axis=-1)
-
-
-def normal(theta: np.ndarray) -> np.ndarray:
-    return np.stack((-np.sin(theta), np.cos(theta)), axis=-1)
-
+from jointwear.mechanism.four_bar.kinematics import four_bar_motion, joint_positions
+from tests.mechanism.four_bar.linkages import LINKAGES, RPM, linkage, motion_of, unit
 
 # ------------------------------------------------------------------ kinematics
 

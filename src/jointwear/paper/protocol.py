@@ -11,21 +11,24 @@ is ``jointwear calibrate --paper-row``).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
+from pathlib import Path
 from typing import Any
 
-from jointwear.calibration import CalibrationResult, Parameter, calibrate_metrics
 from jointwear.config import Config
 from jointwear.errors import ConfigError
 from jointwear.measurement.parameter_fit import DEFAULT_BOUNDS
 from jointwear.paper.cases import PAPER_ROWS, case_config, case_names
 from jointwear.registry import suggest
+from jointwear.workflows.parameter_fit import CalibrationResult, Parameter, calibrate_metrics
 
 __all__ = [
     "CALIBRATION_CASE",
     "CALIBRATION_PARAMETERS",
     "METRIC_ORDER",
     "calibrate_paper_row",
+    "paper_row_calibration",
     "row_config",
 ]
 
@@ -117,3 +120,77 @@ def calibrate_paper_row(
     targets = {key: PAPER_ROWS[row].targets[key] for key in METRIC_ORDER[:count]}
     chosen = CALIBRATION_PARAMETERS if parameters is None else parameters
     return calibrate_metrics(config, targets, list(chosen))
+
+
+def paper_row_calibration(
+    row: str,
+    *,
+    config: Path | None = None,
+    overrides: Sequence[str] = (),
+    fit: Sequence[str] = (),
+    measured: Sequence[Path] = (),
+    cases: Sequence[str] = (),
+) -> dict[str, Any]:
+    """``calibrate --paper-row``: fit a paper row's metrics and compare the calibrated model.
+
+    Parameters
+    ----------
+    row : str
+        A key of :data:`~jointwear.paper.cases.PAPER_ROWS`.
+    config : Path, optional
+        A config file instead of the row's packaged one (needed for rows without one).
+    overrides : sequence of str
+        ``section.key=VALUE`` overrides of the config.
+    fit : sequence of str
+        Parameters to fit (as ``calibrate --fit``); default :data:`CALIBRATION_PARAMETERS`.
+    measured, cases : sequence
+        Must be empty: the paper's table is fitted, not measured files.
+
+    Returns
+    -------
+    dict
+        The ``jointwear calibrate --paper-row --json`` object: ``paper_row``,
+        ``parameters`` (per key its value, uncertainty (``None`` where none can be
+        estimated), unit, initial value and bounds [SI]), ``rms_residual``,
+        ``residual_unit``, ``evaluations``, ``targets`` and ``achieved`` (the paper's
+        and the calibrated model's peak [m], width [deg] and mass [kg]).
+    """
+    from jointwear.config import parse_override
+    from jointwear.measurement.parameter_fit import key_unit, parse_fit
+    from jointwear.simulation import Simulation
+    from jointwear.workflows.inputs import load_config_file
+    from jointwear.workflows.parameter_fit import config_value
+
+    if measured or cases:
+        raise ConfigError("--paper-row: fits the paper's table, not measured files; drop them")
+    if config is not None:
+        base = row_config(row, config=load_config_file(config, overrides))
+    else:
+        base = row_config(row, dict(parse_override(text) for text in overrides))
+    parameters = [parse_fit(text, base) for text in fit] if fit else list(CALIBRATION_PARAMETERS)
+    result = calibrate_paper_row(row, parameters, config=base)
+    achieved = Simulation(result.config).run().summary()
+    targets = PAPER_ROWS[row].targets
+    return {
+        "paper_row": row,
+        "parameters": {
+            p.key: {
+                "value": result.values[p.key],
+                "uncertainty": _finite(result.uncertainty[p.key]),
+                "unit": key_unit(p.key),
+                "initial": config_value(base, p.key),
+                "lower": p.lower,
+                "upper": p.upper,
+            }
+            for p in parameters
+        },
+        "rms_residual": result.rms_residual,
+        "residual_unit": "log(metric / paper)",
+        "evaluations": result.evaluations,
+        "targets": targets,
+        "achieved": {key: achieved[key] for key in targets},
+    }
+
+
+def _finite(value: float) -> float | None:
+    return value if math.isfinite(value) else None

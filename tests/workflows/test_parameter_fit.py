@@ -5,10 +5,10 @@ from __future__ import annotations
 import pytest
 
 from jointwear import Simulation
-from jointwear.calibration import Parameter, calibrate_metrics
 from jointwear.config import Config
 from jointwear.errors import ConfigError
-from jointwear.paper.calibration import CALIBRATION_PARAMETERS
+from jointwear.paper.protocol import CALIBRATION_PARAMETERS
+from jointwear.workflows.parameter_fit import Parameter, calibrate_metrics
 
 
 def test_recovers_known_parameters(paper_config: Config) -> None:

@@ -5,7 +5,7 @@ that scatter: wear coefficients differ by +-40-60 % between nominally equal test
 (Pödra & Andersson 1999 [1]_), clearances by their tolerance, loads by the duty. A life
 is therefore a distribution. :func:`run_life` draws ``cases`` samples of the inputs
 (the sweep's ``[sample]`` distributions), runs each case to its first limit (local
-processes or a Dask cluster, as :func:`~jointwear.sweep.run_sweep`), and
+processes or a Dask cluster, as :func:`~jointwear.workflows.sweep.run_sweep`), and
 :func:`life_statistics` reports the median and the 5 % / 95 % lives, with the
 sensitivity of the life to each input (Spearman rank correlation).
 
@@ -25,7 +25,7 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -35,7 +35,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from jointwear.config import Config, parse_override
 from jointwear.errors import ConfigError
-from jointwear.sweep import SweepPlan, SweepResult, expand_sweep, limit_counts, run_sweep
+from jointwear.workflows.sweep import SweepPlan, SweepResult, expand_sweep, limit_counts, run_sweep
 
 __all__ = [
     "LifeResult",
@@ -43,8 +43,11 @@ __all__ = [
     "life_plan",
     "life_quantiles",
     "life_statistics",
+    "life_study",
     "parse_distribution",
+    "plot_life",
     "run_life",
+    "shown",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -178,7 +181,7 @@ def case_lives(records: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
     Parameters
     ----------
     records : sequence of mapping
-        The sweep's case records (:func:`~jointwear.sweep.run_case`).
+        The sweep's case records (:func:`~jointwear.workflows.sweep.run_case`).
 
     Returns
     -------
@@ -238,7 +241,7 @@ def life_statistics(
         ``life_revolutions`` and ``life_hours`` (each ``{"p5", "median", "p95"}`` of
         :func:`life_quantiles`: ``{"value", "lower_bound"}``), ``sensitivity`` (key ->
         Spearman rho of life and input, ``None`` where undefined), the material limits
-        (:func:`~jointwear.sweep.limit_counts`) and ``lives`` (:func:`case_lives`).
+        (:func:`~jointwear.workflows.sweep.limit_counts`) and ``lives`` (:func:`case_lives`).
     """
     lives = case_lives(records)
     ok = [i for i, life in enumerate(lives) if life["status"] == "ok"]
@@ -315,7 +318,7 @@ def run_life(plan: SweepPlan, out: str | Path, **sweep_options: Any) -> LifeResu
     out : path-like
         Output directory (the sweep's files and ``life.json``).
     **sweep_options
-        Passed to :func:`~jointwear.sweep.run_sweep` (``workers``, ``scheduler``, ...).
+        Passed to :func:`~jointwear.workflows.sweep.run_sweep` (``workers``, ``scheduler``, ...).
     """
     from jointwear.io import write_json
 
@@ -336,6 +339,90 @@ def run_life(plan: SweepPlan, out: str | Path, **sweep_options: Any) -> LifeResu
     }
     write_json(Path(out) / "life.json", {**statistics, "runtime_s": result.runtime})
     return LifeResult(result, statistics, lives, censored, inputs)
+
+
+#: what a life study writes into its folder (files, then folders)
+LIFE_FILES = ("life.json", "life.png", "cases.csv", "sweep.nc")
+LIFE_DIRS = ("cases",)
+
+
+def life_study(
+    config: Path,
+    samples: Sequence[str],
+    cases: int = 100,
+    *,
+    out: Path | None = None,
+    seed: int | None = None,
+    overrides: Sequence[str] = (),
+    scheduler: str | None = None,
+    workers: int | None = None,
+    max_memory: str | None = None,
+    time_limit: float | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> LifeResult:
+    """The life distribution of a joint under uncertain inputs (``jointwear life``).
+
+    Checks the options, the folder and the config, draws the cases
+    (:func:`life_plan`), runs them (:func:`run_life`) and writes ``life.json``,
+    ``life.png``, ``cases.csv``, ``sweep.nc`` and ``cases/`` into ``out``.
+
+    Parameters
+    ----------
+    config : Path
+        The joint's config file; its ``[life]`` limits end each case.
+    samples : sequence of str
+        The uncertain inputs, ``KEY=NAME(param=value, ...)`` (:func:`parse_distribution`).
+    cases : int
+        Monte Carlo cases [-].
+    out : Path
+        Output directory (required).
+    seed : int, optional
+        Seed of the draws.
+    overrides : sequence of str
+        ``section.key=VALUE`` overrides of the config.
+    scheduler : str, optional
+        Address of a dask.distributed scheduler.
+    workers : int, optional
+        Local worker processes.
+    max_memory : str, optional
+        The memory budget of the cases running at once, e.g. ``"16 GiB"``.
+    time_limit : float, optional
+        Stop with :class:`~jointwear.errors.TimeLimitError` after this wall-clock
+        time [s], checked between cases.
+    progress : callable, optional
+        ``progress(cases_done, cases_total)`` [-].
+
+    Returns
+    -------
+    LifeResult
+        The cases and their life distribution.
+
+    Raises
+    ------
+    ConfigError
+        Too many or too few cases, no ``out``, a bad config or distribution, too
+        little memory.
+    """
+    from jointwear.io import atomic_path, check_out, check_tree
+    from jointwear.resources import check_case_count
+    from jointwear.workflows.inputs import load_config_file
+    from jointwear.workflows.sweep import checked_progress
+
+    check_case_count(cases, "--cases")
+    if out is None:
+        raise ConfigError("--out: missing; the life study needs a directory for its cases")
+    out = check_out(out, files=LIFE_FILES, dirs=LIFE_DIRS)
+    check_tree(out, LIFE_DIRS)
+    base = load_config_file(config, overrides)
+    tables = dict(parse_distribution(text) for text in samples)
+    plan = life_plan(base, tables, cases, seed)
+    checked = checked_progress(
+        plan, progress, workers=workers, max_memory=max_memory, time_limit=time_limit
+    )
+    result = run_life(plan, out, scheduler=scheduler, workers=workers, progress=checked)
+    with atomic_path(out / "life.png") as tmp:
+        plot_life(result).savefig(tmp, format="png", dpi=120)
+    return result
 
 
 def shown(quantile: Mapping[str, Any]) -> str:

@@ -9,10 +9,15 @@ import numpy as np
 import pytest
 from scipy.stats import norm
 
-from jointwear.cli import main
 from jointwear.config import Config
 from jointwear.errors import ConfigError
-from jointwear.life import life_plan, life_quantiles, parse_distribution, run_life
+from jointwear.workflows.life import (
+    life_plan,
+    life_quantiles,
+    life_study,
+    parse_distribution,
+    run_life,
+)
 from tests.conftest import strict_json
 
 KD = "materials.bushing.wear_coefficient"
@@ -135,83 +140,43 @@ def test_censored_cases_make_lower_bounds(paper_config: Config, tmp_path: Path) 
     assert result.inputs[KD][result.censored].max() < result.inputs[KD][~result.censored].min()
 
 
-def test_a_study_without_any_limit_reached_writes_strict_json(
-    capsys, paper_config_path: Path, tmp_path: Path
-) -> None:
-    """Every case censored: hours, quantiles and rank correlations have no number, and
-    life.json and --json say so in JSON (lower bounds and null), never NaN."""
-    main(
-        [
-            "life",
-            str(paper_config_path),
-            "--sample",
-            f"{KD}=lognormal(median=5.05e-13 m^2/N, sigma=0.5)",
-            "--cases",
-            "4",
-            "--seed",
-            "2",
-            "--set",
-            "life.peak_wear_depth=0.1 mm",
-            "--set",
-            "simulation.revolutions=50",
-            "--set",
-            "contact.nodes=60",
-            "--set",
-            "simulation.steps_per_revolution=60",
-            "--out",
-            str(tmp_path / "life"),
-            "--workers",
-            "1",
-            "--json",
-            "--quiet",
-        ]
+def test_life_study_writes_its_folder(paper_config_path: Path, tmp_path: Path) -> None:
+    """The study's files: life.json is the summary with every case's life, life.png drawn."""
+    out = tmp_path / "life"
+    result = life_study(
+        paper_config_path,
+        [f"{KD}=lognormal(median=5.05e-13 m^2/N, sigma=0.5)"],
+        4,
+        out=out,
+        seed=2,
+        overrides=["contact.nodes=60", "simulation.steps_per_revolution=60"],
+        workers=1,
     )
-    printed = strict_json(capsys.readouterr().out)
-    written = strict_json((tmp_path / "life" / "life.json").read_text(encoding="utf-8"))
-    for data in (printed, written):
-        assert data["censored"] == 4
-        assert data["life_revolutions"]["median"] == {"value": 50.0, "lower_bound": True}
-        assert data["life_hours"]["median"] == {"value": 50 * 0.5 / 3600, "lower_bound": True}
-        assert data["sensitivity"] == {KD: None}
-    assert "lives" not in printed
-    assert [life["censored"] for life in written["lives"]] == [True] * 4
+    written = strict_json((out / "life.json").read_text(encoding="utf-8"))
+    summary = result.summary()
+    assert {k: v for k, v in written.items() if k != "lives"} == {
+        k: v for k, v in summary.items() if k != "out"
+    }
+    assert len(written["lives"]) == 4
+    assert (out / "life.png").stat().st_size > 1000
+    assert {p.name for p in out.iterdir()} == {
+        "life.json",
+        "life.png",
+        "cases.csv",
+        "sweep.nc",
+        "cases",
+        "sweep-plan.json",
+    }
 
 
-def test_life_cli(capsys, paper_config_path: Path, tmp_path: Path) -> None:
-    main(
-        [
-            "life",
-            str(paper_config_path),
-            "--sample",
-            f"{KD}=lognormal(median=5.05e-13 m^2/N, sigma=0.5)",
-            "--sample",
-            "joint.clearance=uniform(low=0.04 mm, high=0.06 mm)",
-            "--cases",
-            "12",
-            "--seed",
-            "3",
-            "--set",
-            "life.peak_wear_depth=0.01 mm",
-            "--set",
-            "simulation.revolutions=1000000",
-            "--set",
-            "contact.nodes=90",
-            "--set",
-            "simulation.steps_per_revolution=60",
-            "--out",
-            str(tmp_path / "life"),
-            "--workers",
-            "1",
-            "--json",
-            "--quiet",
-        ]
-    )
-    data = strict_json(capsys.readouterr().out)
-    assert data["cases"] == 12
-    assert set(data["sensitivity"]) == {KD, "joint.clearance"}
-    revolutions = data["life_revolutions"]
-    assert revolutions["p5"]["value"] <= revolutions["median"]["value"]
-    assert (tmp_path / "life" / "life.png").exists()
+def test_life_study_checks_its_folder_before_reading_the_config(tmp_path: Path) -> None:
+    with pytest.raises(ConfigError, match="--out: missing"):
+        life_study(tmp_path / "missing.toml", [f"{KD}=lognormal(median=1e-13, sigma=1)"], 4)
+    with pytest.raises(ConfigError, match="--cases"):
+        life_study(tmp_path / "missing.toml", [], 10**12, out=tmp_path / "out")
+    with pytest.raises(ConfigError, match="missing.toml: file not found"):
+        life_study(tmp_path / "missing.toml", [], 4, out=tmp_path / "out")
+    assert not (tmp_path / "out").exists()
 
 
 @pytest.mark.parametrize(

@@ -7,7 +7,7 @@ import pytest
 from jointwear.config import Config
 from jointwear.errors import ConfigError
 from jointwear.measurement.parameter_fit import resolve_parameter
-from jointwear.paper.calibration import (
+from jointwear.paper.protocol import (
     CALIBRATION_CASE,
     CALIBRATION_PARAMETERS,
     calibrate_paper_row,
@@ -20,7 +20,7 @@ def test_paper_row_is_the_reproduction_protocol(
     paper_config: Config, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Config, targets and parameters of the reproduction's calibration (and of other rows)."""
-    import jointwear.paper.calibration as protocol
+    import jointwear.paper.protocol as protocol
 
     calls: list[tuple] = []
 
@@ -57,3 +57,12 @@ def test_paper_row_is_the_reproduction_protocol(
         calibrate_paper_row("table3_winkler_120")
     with pytest.raises(ConfigError, match="metrics"):
         calibrate_paper_row(metrics=4)
+
+
+def test_a_paper_row_calibration_refuses_measurements_and_unknown_rows(tmp_path) -> None:
+    from jointwear.paper.protocol import paper_row_calibration
+
+    with pytest.raises(ConfigError, match="--paper-row: fits the paper's table"):
+        paper_row_calibration(CALIBRATION_CASE, measured=[tmp_path / "worn.csv"])
+    with pytest.raises(ConfigError, match="did you mean 'table3_winkler_120rpm'"):
+        paper_row_calibration("table3_winkler_120")

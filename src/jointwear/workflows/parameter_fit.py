@@ -1,4 +1,4 @@
-"""Calibration: fit uncertain parameters to observed wear by least squares.
+"""Parameter fit: config parameters fitted to observed wear by least squares.
 
 The unknowns are dotted config keys (``joint.axial_length``,
 ``materials.bushing.wear_coefficient`` ...), each searched inside bounds on a
@@ -8,7 +8,7 @@ different size weigh alike.
 
 :func:`calibrate_metrics` fits scalar metrics (the paper's wear peak, width and
 mass: the reproduction protocol calibrates the undisclosed parameters on one table
-row, see :mod:`jointwear.paper.calibration`); :mod:`jointwear.measurement` adds
+row, see :mod:`jointwear.paper.protocol`); :mod:`jointwear.measurement` adds
 residuals from measured profiles.
 """
 

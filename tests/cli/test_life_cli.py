@@ -1,0 +1,89 @@
+"""`jointwear life`: the life distribution printed and written, in strict JSON."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from jointwear.cli import main
+from tests.conftest import strict_json
+
+KD = "materials.bushing.wear_coefficient"
+
+
+def test_a_study_without_any_limit_reached_writes_strict_json(
+    capsys, paper_config_path: Path, tmp_path: Path
+) -> None:
+    """Every case censored: hours, quantiles and rank correlations have no number, and
+    life.json and --json say so in JSON (lower bounds and null), never NaN."""
+    main(
+        [
+            "life",
+            str(paper_config_path),
+            "--sample",
+            f"{KD}=lognormal(median=5.05e-13 m^2/N, sigma=0.5)",
+            "--cases",
+            "4",
+            "--seed",
+            "2",
+            "--set",
+            "life.peak_wear_depth=0.1 mm",
+            "--set",
+            "simulation.revolutions=50",
+            "--set",
+            "contact.nodes=60",
+            "--set",
+            "simulation.steps_per_revolution=60",
+            "--out",
+            str(tmp_path / "life"),
+            "--workers",
+            "1",
+            "--json",
+            "--quiet",
+        ]
+    )
+    printed = strict_json(capsys.readouterr().out)
+    written = strict_json((tmp_path / "life" / "life.json").read_text(encoding="utf-8"))
+    for data in (printed, written):
+        assert data["censored"] == 4
+        assert data["life_revolutions"]["median"] == {"value": 50.0, "lower_bound": True}
+        assert data["life_hours"]["median"] == {"value": 50 * 0.5 / 3600, "lower_bound": True}
+        assert data["sensitivity"] == {KD: None}
+    assert "lives" not in printed
+    assert [life["censored"] for life in written["lives"]] == [True] * 4
+
+
+def test_life_cli(capsys, paper_config_path: Path, tmp_path: Path) -> None:
+    main(
+        [
+            "life",
+            str(paper_config_path),
+            "--sample",
+            f"{KD}=lognormal(median=5.05e-13 m^2/N, sigma=0.5)",
+            "--sample",
+            "joint.clearance=uniform(low=0.04 mm, high=0.06 mm)",
+            "--cases",
+            "12",
+            "--seed",
+            "3",
+            "--set",
+            "life.peak_wear_depth=0.01 mm",
+            "--set",
+            "simulation.revolutions=1000000",
+            "--set",
+            "contact.nodes=90",
+            "--set",
+            "simulation.steps_per_revolution=60",
+            "--out",
+            str(tmp_path / "life"),
+            "--workers",
+            "1",
+            "--json",
+            "--quiet",
+        ]
+    )
+    data = strict_json(capsys.readouterr().out)
+    assert data["cases"] == 12
+    assert set(data["sensitivity"]) == {KD, "joint.clearance"}
+    revolutions = data["life_revolutions"]
+    assert revolutions["p5"]["value"] <= revolutions["median"]["value"]
+    assert (tmp_path / "life" / "life.png").exists()
