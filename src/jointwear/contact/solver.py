@@ -14,10 +14,10 @@ every contact solve of the run:
 3. **the general solve** (:func:`jointwear.contact.solve`): every other case, and
    every solve outside the loop (the pressure snapshots of a result).
 
-A lubricated joint (``[lubrication]`` with a film model) takes none of these: film and
-asperities share each step's load (:class:`~jointwear.contact.lubricated.LubricatedContact`,
-quasi-static), the solution's pressure is the asperity pressure alone, and a step whose
-asperities cannot carry the load is solved dry (by path 1 or 3).
+A lubricated joint (``[lubrication]`` with a film model) takes none of these: film,
+asperities and bulk share each step's load along the pin's periodic orbit
+(:class:`~jointwear.contact.lubricated.LubricatedContact`), and the solution's pressure
+is the asperity pressure plus the bulk's share solved dry (by path 1 or 3).
 
 The fused kernel is the one exception to "contact computes pressure, tribology the
 wear": it accumulates Archard's wear ``K_d p ds`` of every node inside the same
@@ -389,35 +389,21 @@ class ContactSolver:
         """The lubrication state of every step of ``cycle`` (``None``: a dry joint)."""
         if self.lubrication is None:
             return None
-        return self.lubrication.record(cycle, self.nodes)
+        return self.lubrication.record(cycle)
 
     def _lubricated(
         self, contour: BushingContour, cycle: LoadCycle, facing: FloatArray | None
     ) -> ContactSolution:
-        """Film and asperities share each step's load; the asperity pressure on the nodes,
-        the dry solve where the asperities cannot carry the load."""
-        lubrication, nodes, steps = self.lubrication, contour.radius.size, cycle.steps
-        pressure = lubrication.asperity_pressure(cycle, nodes)
-        record = lubrication.record(cycle, nodes)
-        touching = np.count_nonzero(pressure > 0.0, axis=1)
-        half_angle = 0.5 * touching * contour.dtheta
-        fields: dict[str, Any] = {
-            "pressure": pressure.copy(),
-            "eccentricity": lubrication.centre(cycle, nodes),
-            "penetration": np.zeros(steps),
-            "normal_force": record.asperity_load_fraction * cycle.load,
-            "tangential_force": np.zeros(steps),
-            "half_angle_left": half_angle,
-            "half_angle_right": half_angle.copy(),
-            "springs_left": (touching + 1) // 2,
-            "springs_right": touching // 2,
-            "iterations": np.zeros(steps, dtype=np.int64),
-        }
-        dry = np.flatnonzero(record.dry_fallback)
-        if dry.size:
-            load, azimuth = cycle.load[dry], cycle.azimuth[dry]
+        """Film, asperities and bulk share each step's load: the asperity pressure on the
+        nodes along the orbit plus the dry solve of the bulk's share."""
+        lubrication, steps = self.lubrication, cycle.steps
+        pressure = lubrication.asperity_pressure(cycle, contour.radius.size)
+        record = lubrication.record(cycle)
+        bulk = np.flatnonzero(record.bulk_load_fraction * cycle.load > 0.0)
+        if bulk.size:
+            load, azimuth = record.bulk_load_fraction[bulk] * cycle.load[bulk], cycle.azimuth[bulk]
             if facing is not None:
-                solved = self._worn_pin(contour, load, azimuth, facing[dry])
+                solved = self._worn_pin(contour, load, azimuth, facing[bulk])
             else:
                 solved = solve(
                     contour,
@@ -430,9 +416,22 @@ class ContactSolver:
                     tolerance=self.tolerance,
                     max_iterations=self.max_iterations,
                 )
-            for name, values in fields.items():
-                values[dry] = getattr(solved, name)
-        return ContactSolution(**fields, model=getattr(self.law, "name", "custom"))
+            pressure[bulk] += solved.pressure
+        touching = np.count_nonzero(pressure > 0.0, axis=1)
+        half_angle = 0.5 * touching * contour.dtheta
+        return ContactSolution(
+            pressure=pressure,
+            eccentricity=lubrication.centre(cycle),
+            penetration=np.zeros(steps),
+            normal_force=record.asperity_load_fraction * cycle.load,
+            tangential_force=np.zeros(steps),
+            half_angle_left=half_angle,
+            half_angle_right=half_angle.copy(),
+            springs_left=(touching + 1) // 2,
+            springs_right=touching // 2,
+            iterations=np.zeros(steps, dtype=np.int64),
+            model=getattr(self.law, "name", "custom"),
+        )
 
     def _worn_pin(
         self, contour: BushingContour, load: FloatArray, azimuth: FloatArray, facing: FloatArray

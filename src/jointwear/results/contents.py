@@ -208,13 +208,19 @@ def film_variables(record: RunRecord) -> dict[str, ResultVariable]:
             ("step",), film.film_parameter, "1", "film parameter h_min / composite roughness"
         ),
         "asperity_load_fraction": _var(
-            ("step",), film.asperity_load_fraction, "1", "share of the load carried by asperities"
-        ),
-        "dry_fallback": _var(
             ("step",),
-            film.dry_fallback.astype(np.int8),
+            film.asperity_load_fraction,
             "1",
-            "step solved with the dry contact model (asperities cannot carry the load)",
+            "share of the load carried by solid contact (asperities and bulk)",
+        ),
+        "bulk_load_fraction": _var(
+            ("step",), film.bulk_load_fraction, "1", "share of the load carried by bulk contact"
+        ),
+        "eccentricity_ratio_x": _var(
+            ("step",), film.eccentricity_x, "1", "pin centre orbit x / radial clearance"
+        ),
+        "eccentricity_ratio_y": _var(
+            ("step",), film.eccentricity_y, "1", "pin centre orbit y / radial clearance"
         ),
     }
 
