@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 from jointwear.lubrication.mixed import steady_load_sharing
-from jointwear.lubrication.orbit import OrbitSolver, film_shape, periodic_orbit, short_shape
 from jointwear.lubrication.mobility import dimensionless_force
+from jointwear.lubrication.orbit import OrbitSolver, film_shape, periodic_orbit, short_shape
 
 RADIUS, CLEARANCE, VISCOSITY, SPEED = 0.01, 20e-6, 0.05, 100.0
 #: a smooth surface: no asperity force at the eccentricities checked
@@ -27,16 +27,27 @@ def ocvirk_load(eps: float, length: float) -> float:
     """Ocvirk: W = mu U L^3 / (4 c^2) eps / (1 - eps^2)^2 sqrt(pi^2 (1 - eps^2) + 16 eps^2)."""
     u = RADIUS * SPEED
     return (
-        VISCOSITY * u * length**3 / (4 * CLEARANCE**2) * eps / (1 - eps**2) ** 2
+        VISCOSITY
+        * u
+        * length**3
+        / (4 * CLEARANCE**2)
+        * eps
+        / (1 - eps**2) ** 2
         * math.sqrt(math.pi**2 * (1 - eps**2) + 16 * eps**2)
     )
 
 
 def sommerfeld_load(eps: float, length: float) -> float:
-    """Half Sommerfeld: W = 6 mu U R^2 L eps sqrt(pi^2 (1-eps^2) + 4 eps^2) / (c^2 (2+eps^2)(1-eps^2))."""
+    """Half Sommerfeld: W = 6 mu U R^2 L eps sqrt(pi^2 (1-eps^2) + 4 eps^2)
+    / (c^2 (2+eps^2)(1-eps^2))."""
     u = RADIUS * SPEED
     return (
-        6 * VISCOSITY * u * RADIUS**2 * length * eps
+        6
+        * VISCOSITY
+        * u
+        * RADIUS**2
+        * length
+        * eps
         * math.sqrt(math.pi**2 * (1 - eps**2) + 4 * eps**2)
         / (CLEARANCE**2 * (2 + eps**2) * (1 - eps**2))
     )
@@ -79,7 +90,8 @@ def test_a_steady_load_settles_at_sommerfelds_equilibrium(eps):
 
 @pytest.mark.parametrize("eps", [0.1, 0.3, 0.6, 0.9])
 def test_a_pin_pushed_at_the_wall_moves_at_the_squeeze_films_speed(eps):
-    """F = mu R L^3 deps/dt / (c^2 (1-eps^2)^2.5) [(1 + 2 eps^2)(pi/2 + asin eps) + 3 eps sqrt(1-eps^2)]."""
+    """F = mu R L^3 deps/dt / (c^2 (1-eps^2)^2.5)
+    [(1 + 2 eps^2)(pi/2 + asin eps) + 3 eps sqrt(1-eps^2)], no sideways motion."""
     length, load = 0.005, 50.0
     solver = OrbitSolver(RADIUS, length, CLEARANCE, VISCOSITY, SMOOTH, 200e9, "short")
     velocity = solver.velocity(np.array([eps, 0.0]), load, 0.0, 0.0)

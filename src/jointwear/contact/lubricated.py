@@ -226,10 +226,9 @@ class LubricatedContact:
         """The asperity pressure at every node and step along the orbit, (M, N) [Pa]."""
         orbit, _ = self.orbit(cycle)
         angles = 2.0 * np.pi * np.arange(nodes) / nodes
-        offset = (
-            orbit.eccentricity_x[:, None] * np.cos(angles)
-            + orbit.eccentricity_y[:, None] * np.sin(angles)
-        )
+        offset = orbit.eccentricity_x[:, None] * np.cos(angles) + orbit.eccentricity_y[
+            :, None
+        ] * np.sin(angles)
         pressure = asperity_pressure(
             self.clearance * (1.0 - offset), self.roughness, self.modulus, **self.asperity
         )

@@ -314,7 +314,9 @@ class OrbitSolver:
     def asperity_force(self, eccentricity_ratio: ArrayLike) -> FloatArray:
         """Radial asperity force at ``eps`` (tabulated, linear between nodes) [N]."""
         gap = (1.0 - np.asarray(eccentricity_ratio, float)) * self.clearance / self.roughness
-        return np.where(gap < self.cutoff, self.asperity_spline(np.clip(gap, 0.0, self.cutoff)), 0.0)
+        return np.where(
+            gap < self.cutoff, self.asperity_spline(np.clip(gap, 0.0, self.cutoff)), 0.0
+        )
 
     def direction_of_motion(self, eps: float, target: float) -> float:
         """``beta`` whose film force points at ``target`` [rad] (module text).
@@ -468,8 +470,9 @@ def periodic_orbit(
     samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
     ends = np.append(times, times[0] + period)
     # a periodic cubic spline: the integrator sees no kink at every sample
-    inputs = CubicSpline(ends, np.concatenate([samples, samples[:, :1]], axis=1), axis=1,
-                         bc_type="periodic")
+    inputs = CubicSpline(
+        ends, np.concatenate([samples, samples[:, :1]], axis=1), axis=1, bc_type="periodic"
+    )
 
     def right_hand_side(t: float, state: FloatArray) -> FloatArray:
         load_xt, load_yt, speed = inputs(t)
@@ -508,7 +511,7 @@ def periodic_orbit(
         # cycles (a squeeze film thins slowly), which plain repetition follows slowly
         scale = smallest_gap(path)
         found = root(
-            lambda initial: (cycle(initial)[:, -1] - initial) / scale,
+            lambda initial, scale=scale: (cycle(initial)[:, -1] - initial) / scale,
             path[:, -1],
             method="hybr",
             options={"xtol": 0.1 * tolerance * scale, "maxfev": ROOT_EVALUATIONS},
@@ -519,7 +522,6 @@ def periodic_orbit(
             cycles += 1
         path = last["path"]
         error = float(np.hypot(*(path[:, -1] - path[:, 0])))
-    error = float(np.hypot(*(path[:, -1] - path[:, 0])))
     if error > tolerance * smallest_gap(path):
         raise ConvergenceError(
             f"orbit: not periodic after {cycles} cycles (|e(T) - e(0)| / c = {error:.3g})"
