@@ -49,6 +49,7 @@ References
 from __future__ import annotations
 
 import math
+from bisect import bisect_right
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cache
@@ -86,14 +87,17 @@ ASPERITY_NODES = 401
 #: tolerances of the integration over a cycle (eccentricity ratio)
 INTEGRATION_RTOL = 1e-7
 INTEGRATION_ATOL = 1e-10
+#: cycles repeated while each shrinks the mismatch at least this much
+PLAIN_CYCLES = 8
+FAST_CONTRACTION = 0.2
 #: cycle integrations allowed to the root finder per round, and its rounds
 ROOT_EVALUATIONS = 40
 ROOT_ROUNDS = 3
 #: a mismatch of the film force's direction this small is a root [rad]
 ROUND_OFF = 1e-12
-#: the periodicity tolerance scales with the smallest gap, but not below this share of
-#: the roughness (the asperity pressure varies on the scale of sigma)
-GAP_FLOOR = 0.1
+#: the periodicity tolerance scales with the smallest gap, but not below this many
+#: roughnesses (the asperity pressure varies on the scale of sigma)
+GAP_FLOOR = 1.0
 
 
 @dataclass(frozen=True)
@@ -120,6 +124,25 @@ class Orbit:
     asperity_force: FloatArray
     cycles: int
     periodicity_error: float
+
+
+def scalar_spline(spline: CubicSpline) -> Callable[[float], NDArray[np.float64]]:
+    """A cubic spline evaluated at one point without scipy's call overhead.
+
+    Horner's rule on the spline's coefficients (``spline.c[power, interval, ...]``),
+    the interval found with :func:`bisect.bisect_right`; outside the breakpoints the
+    end polynomials extend, as :class:`scipy.interpolate.CubicSpline` does.
+    """
+    breaks, coefficients = spline.x, spline.c
+    last = breaks.size - 2
+
+    def value(x: float) -> NDArray[np.float64]:
+        k = min(max(bisect_right(breaks, x) - 1, 0), last)
+        dx = x - breaks[k]
+        c = coefficients[:, k]
+        return ((c[0] * dx + c[1]) * dx + c[2]) * dx + c[3]
+
+    return value
 
 
 def short_shape(eccentricity_ratio: ArrayLike, direction: ArrayLike, ratio: float) -> FloatArray:
@@ -308,6 +331,7 @@ class OrbitSolver:
         )
         # a cubic spline: a stiff integrator needs a smooth force (linear pieces stall it)
         self.asperity_spline = CubicSpline(self.gaps, forces)
+        self.asperity_at = scalar_spline(self.asperity_spline)
         self.cutoff = cutoff
         self.roughness = roughness
 
@@ -402,7 +426,7 @@ class OrbitSolver:
         eps = min(max(eps, 1e-6), LARGEST_ECCENTRICITY)
         cos_phi, sin_phi = math.cos(phi), math.sin(phi)
         gap = (1.0 - eps) * self.clearance / self.roughness
-        asperity = float(self.asperity_spline(gap)) if gap < self.cutoff else 0.0
+        asperity = float(self.asperity_at(gap)) if gap < self.cutoff else 0.0
         film_x, film_y = load_x + asperity * cos_phi, load_y + asperity * sin_phi
         carried = math.hypot(film_x, film_y)
         radial = tangential = 0.0
@@ -420,6 +444,28 @@ class OrbitSolver:
                 radial * sin_phi + tangential * cos_phi,
             ]
         )
+
+
+def stretched(state: ArrayLike) -> FloatArray:
+    """``q = e / (1 - eps)``: the clearance circle stretched over the plane [-].
+
+    The orbit is integrated in ``q``: the wall (``eps = 1``) is at infinity, out of the
+    integrator's reach, and its relative tolerance holds the gap ``1 - eps`` to a
+    relative accuracy however thin it is.
+
+    Parameters
+    ----------
+    state : array_like, shape (2, ...)
+        ``e / c`` [-].
+    """
+    state = np.asarray(state, float)
+    return state / (1.0 - np.hypot(state[0], state[1]))
+
+
+def unstretched(stretched_state: ArrayLike) -> FloatArray:
+    """``e / c = q / (1 + |q|)``, the inverse of :func:`stretched` [-]."""
+    q = np.asarray(stretched_state, float)
+    return q / (1.0 + np.hypot(q[0], q[1]))
 
 
 def periodic_orbit(
@@ -453,7 +499,7 @@ def periodic_orbit(
         First guess of ``e / c`` at ``time[0]`` [-].
     tolerance : float
         The orbit repeats when ``|e(T) - e(0)|`` is below ``tolerance`` times the
-        smallest gap ``c (1 - eps)`` of the cycle, or times ``0.1 sigma`` if that is
+        smallest gap ``c (1 - eps)`` of the cycle, or times ``sigma`` if that is
         larger [-].
 
     Returns
@@ -474,9 +520,16 @@ def periodic_orbit(
         ends, np.concatenate([samples, samples[:, :1]], axis=1), axis=1, bc_type="periodic"
     )
 
-    def right_hand_side(t: float, state: FloatArray) -> FloatArray:
-        load_xt, load_yt, speed = inputs(t)
-        return solver.velocity(state, float(load_xt), float(load_yt), float(speed))
+    inputs_at = scalar_spline(inputs)
+
+    def right_hand_side(t: float, stretched: FloatArray) -> FloatArray:
+        load_xt, load_yt, speed = inputs_at(t)
+        state = unstretched(stretched)
+        velocity = solver.velocity(state, float(load_xt), float(load_yt), float(speed))
+        eps = math.hypot(state[0], state[1])
+        gap = 1.0 - eps
+        radial = (state @ velocity) / gap**2  # eps (e_r . v) / (1 - eps)^2 along e_r
+        return velocity / gap + radial * state
 
     last: dict[str, Any] = {}
 
@@ -498,34 +551,45 @@ def periodic_orbit(
     # the gap matters against the roughness: a pin on its asperities needs no finer
     floor = GAP_FLOOR * solver.roughness / solver.clearance
 
-    def smallest_gap(path: FloatArray) -> float:
-        return float(max(1.0 - np.hypot(*path).max(), floor))
+    def mismatch(path: FloatArray) -> tuple[float, float]:
+        """``|e(T) - e(0)| / c`` and the tolerance it must meet [-]."""
+        state = unstretched(path)
+        gap = max(1.0 - np.hypot(*state).max(), floor)
+        return float(np.hypot(*(state[:, -1] - state[:, 0]))), tolerance * gap
 
-    path = cycle(np.asarray(start, float))
-    cycles = 1
-    error = float(np.hypot(*(path[:, -1] - path[:, 0])))
+    path = cycle(stretched(np.asarray(start, float)))
+    cycles, previous = 1, math.inf
+    # plain repetition while it contracts fast (a stiff film forgets its start quickly)
+    while cycles < PLAIN_CYCLES:
+        error, allowed = mismatch(path)
+        if error <= allowed or error > FAST_CONTRACTION * previous:
+            break
+        previous = error
+        path = cycle(path[:, -1])
+        cycles += 1
     for _ in range(ROOT_ROUNDS):
-        if error <= tolerance * smallest_gap(path):
+        error, allowed = mismatch(path)
+        if error <= allowed:
             break
         # the cycle map's fixed point; the orbit can creep towards the wall over many
         # cycles (a squeeze film thins slowly), which plain repetition follows slowly
-        scale = smallest_gap(path)
         found = root(
-            lambda initial, scale=scale: (cycle(initial)[:, -1] - initial) / scale,
+            lambda initial: cycle(initial)[:, -1] - initial,
             path[:, -1],
             method="hybr",
-            options={"xtol": 0.1 * tolerance * scale, "maxfev": ROOT_EVALUATIONS},
+            options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS},
         )
         cycles += int(found.nfev)
         if not np.array_equal(last["start"], found.x):
             cycle(found.x)
             cycles += 1
         path = last["path"]
-        error = float(np.hypot(*(path[:, -1] - path[:, 0])))
-    if error > tolerance * smallest_gap(path):
+    error, allowed = mismatch(path)
+    if error > allowed:
         raise ConvergenceError(
             f"orbit: not periodic after {cycles} cycles (|e(T) - e(0)| / c = {error:.3g})"
         )
+    path = unstretched(path)
     eps = np.hypot(path[0, :-1], path[1, :-1])
     return Orbit(
         eccentricity_x=path[0, :-1],
