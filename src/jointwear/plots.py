@@ -12,7 +12,9 @@ draws and writes them all:
 * ``wear_profiles``: wear depth vs angle for the saved revolutions;
 * ``pressure``: pressure distributions at chosen phases of the cycle;
 * ``joint_load``: load magnitude and azimuth over a cycle;
-* ``wear_history``: peak, width and mass vs revolutions.
+* ``wear_history``: peak, width and mass vs revolutions;
+* ``journal_orbit`` and ``film``, of a lubricated run only
+  (:mod:`jointwear.results.film_figures`).
 """
 
 from __future__ import annotations
@@ -29,6 +31,12 @@ from matplotlib.figure import Figure
 from jointwear.display import depth_unit, revolutions_text
 from jointwear.errors import JointwearError
 from jointwear.io import atomic_path
+from jointwear.results.film_figures import (
+    LUBRICATION_FIGURES,
+    film_figure,
+    is_lubricated,
+    orbit_figure,
+)
 
 __all__ = [
     "FIGURES",
@@ -247,6 +255,8 @@ _DRAW: dict[str, Callable[[xr.Dataset, str], Figure]] = {
     "pressure": _pressure,
     "joint_load": _joint_load,
     "wear_history": _wear_history,
+    "journal_orbit": orbit_figure,
+    "film": film_figure,
 }
 
 
@@ -279,8 +289,10 @@ def plot_dataset(
     JointwearError
         For an unknown ``kind``.
     """
-    if kind not in FIGURES:
+    if kind not in FIGURES + LUBRICATION_FIGURES:
         raise JointwearError(f"unknown figure {kind!r}; choose one of {', '.join(FIGURES)}")
+    if kind in LUBRICATION_FIGURES and not is_lubricated(dataset):
+        raise JointwearError(f"figure {kind!r}: the result is of a dry joint (no film)")
     label = label or f"{dataset.attrs.get('contact_model', '')}"
     if kind == "wear_polar":
         return _wear_polar(dataset, label, magnification)
@@ -341,7 +353,7 @@ def plot_result(
         The files written.
     """
     written: list[Path] = []
-    for kind in FIGURES:
+    for kind in FIGURES + (LUBRICATION_FIGURES if is_lubricated(dataset) else ()):
         fig = plot_dataset(dataset, kind, magnification=magnification, label=label)
         written += save_figure(fig, directory, kind)
     return written

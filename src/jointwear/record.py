@@ -31,6 +31,7 @@ from jointwear.tribology.metrics import (
 if TYPE_CHECKING:
     from jointwear.config import Config, SimulationConfig
     from jointwear.contact import ContactSolution
+    from jointwear.contact.lubricated import FilmRecord
     from jointwear.mechanism.cycle import LoadCycle
     from jointwear.state import Log
 
@@ -268,6 +269,9 @@ class RunRecord:
         Wall-clock time of the run [s].
     warnings : tuple of str
         The warnings the run gave about its models' range and the wear's feedback.
+    film : FilmRecord or None
+        A lubricated run's film thickness, film parameter, asperity load fraction and
+        dry-fallback steps over ``cycle`` (``None``: a dry run).
     """
 
     config: Config
@@ -279,3 +283,4 @@ class RunRecord:
     final: ContactSnapshot | None = None
     runtime: float = math.nan
     warnings: tuple[str, ...] = ()
+    film: FilmRecord | None = None

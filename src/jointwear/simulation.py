@@ -290,6 +290,7 @@ class Simulation:
             final=None if final is None else ContactSnapshot.of(final),
             runtime=time.perf_counter() - start,
             warnings=(*self.feedback.messages, *(where + m for m in said.values())),
+            film=self.solver.film_record(self.load_cycle),
         )
 
     # ---------------------------------------------------------------- helpers

@@ -19,6 +19,7 @@ from jointwear.config import mechanisms as mechanism_tables
 from jointwear.config.choices import (
     CHOICES,
     FOUR_BAR_GEOMETRY,
+    LUBRICANT,
     MODEL_CHOICE,
     NLCP_STIFFNESS,
     PAPER_SPRING_AREA,
@@ -55,6 +56,7 @@ def test_the_force_laws_are_the_contact_impact_dynamics() -> None:
         (NLCP_STIFFNESS, "jointwear.contact.nlcp", "stiffness"),
         (MODEL_CHOICE, "jointwear.contact", "check_model_choice"),
         (PAPER_SPRING_AREA, "jointwear.contact", "check_paper_spring_area"),
+        (LUBRICANT, "jointwear.lubrication.lubricants", "get_lubricant"),
     ],
 )
 def test_the_lazy_entries_name_the_stages_functions(entry: Lazy, module: str, name: str) -> None:

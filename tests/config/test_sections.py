@@ -57,3 +57,69 @@ def test_the_default_contact_model_balances_the_real_contour():
         text = tomllib.loads(path.read_text(encoding="utf-8"))["contact"]
         assert text["model"] in ("asymmetric-winkler", "nlcp"), path.name
         assert text["foundation_modulus"] == "youngs", path.name
+
+
+# ---------------------------------------------------------------- [lubrication]
+def test_lubrication_is_dry_by_default():
+    assert load_config().lubrication.model == "dry"
+    assert not load_config().lubrication.lubricated
+
+
+def test_the_asperity_defaults_are_the_librarys():
+    from jointwear.config import LubricationConfig
+    from jointwear.lubrication.asperity import DEFAULT_ETA_BETA_SIGMA, DEFAULT_SIGMA_OVER_BETA
+
+    section = LubricationConfig()
+    assert section.eta_beta_sigma == DEFAULT_ETA_BETA_SIGMA
+    assert section.sigma_over_beta == DEFAULT_SIGMA_OVER_BETA
+
+
+def test_a_lubricant_temperature_in_celsius_reads_in_kelvin():
+    config = load_config(
+        overrides=[
+            "lubrication.model=finite-length",
+            "lubrication.lubricant=iso-vg-68",
+            "lubrication.temperature=60 degC",
+            "lubrication.roughness=0.3 um",
+        ]
+    )
+    assert config.lubrication.temperature == pytest.approx(333.15)
+    assert config.lubrication.roughness == pytest.approx(0.3e-6)
+    assert config.replace({}).lubrication == config.lubrication  # reads back from its TOML
+
+
+def test_a_lubricant_without_temperature_is_at_40_degc():
+    config = load_config(
+        overrides=["lubrication.model=long-bearing", "lubrication.lubricant=iso-vg-46"]
+    )
+    assert config.lubrication.oil_temperature == pytest.approx(313.15)
+
+
+def test_viscosity_reads_in_pascal_seconds():
+    config = load_config(
+        overrides=["lubrication.model=short-bearing", "lubrication.viscosity=50 cP"]
+    )
+    assert config.lubrication.viscosity == pytest.approx(0.05)
+
+
+@pytest.mark.parametrize(
+    ("overrides", "message"),
+    [
+        (["lubrication.model=short-bearin"], "did you mean 'short-bearing'"),
+        (["lubrication.lubricant=iso-vg-6"], "did you mean 'iso-vg-68'"),
+        (
+            ["lubrication.viscosity=0.1 Pa*s", "lubrication.lubricant=iso-vg-68"],
+            "lubrication.viscosity: give viscosity or lubricant, not both",
+        ),
+        (["lubrication.model=finite-length"], "lubrication.viscosity: missing"),
+        (["lubrication.viscosity=0.1 m"], "lubrication.viscosity"),
+        (["lubrication.lubricant=iso-vg-68", "lubrication.temperature=60"], "below 173.15 K"),
+        (["lubrication.temperature=60 degC"], "give lubricant"),
+    ],
+)
+def test_bad_lubrication_keys_are_refused_in_one_line(overrides, message):
+    with pytest.raises(
+        ConfigError, match=message.replace("(", r"\(").replace("*", r"\*")
+    ) as caught:
+        load_config(overrides=overrides)
+    assert "\n" not in str(caught.value)

@@ -22,6 +22,7 @@ __all__ = [
     "CONTACT_MODEL",
     "DYNAMICS_MODEL",
     "FOUR_BAR_GEOMETRY",
+    "LUBRICANT",
     "MODEL_CHOICE",
     "NLCP_STIFFNESS",
     "PAPER_SPRING_AREA",
@@ -91,5 +92,7 @@ FOUR_BAR_GEOMETRY = Lazy("jointwear.mechanism.four_bar.geometry:check_four_bar",
 NLCP_STIFFNESS = Lazy("jointwear.contact.nlcp:stiffness", "contact.stiffness")
 #: ``check_model_choice(model, update_contour)``: the model can follow a worn contour
 MODEL_CHOICE = Lazy("jointwear.contact:check_model_choice", "contact.model")
+#: ``get_lubricant(name, key)``: a lubricant of the library (an unknown name: the best match)
+LUBRICANT = Lazy("jointwear.lubrication.lubricants:get_lubricant", "lubrication.lubricant")
 #: ``check_paper_spring_area(spring_area, node_area, nodes)``: NLCP's paper form fits the mesh
 PAPER_SPRING_AREA = Lazy("jointwear.contact:check_paper_spring_area", "contact.nlcp_variant")

@@ -23,6 +23,7 @@ from jointwear.config.sections import (
     DynamicsConfig,
     JointConfig,
     LifeConfig,
+    LubricationConfig,
     MaterialsConfig,
     SimulationConfig,
     WearConfig,
@@ -48,6 +49,7 @@ class ConfigSchema(Section):
     wear: WearConfig = WearConfig()
     life: LifeConfig = LifeConfig()
     pin: PinConfig = PinConfig()
+    lubrication: LubricationConfig = LubricationConfig()
 
     @field_validator("parameter_set")
     @classmethod

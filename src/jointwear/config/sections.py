@@ -13,8 +13,15 @@ from typing import Annotated, Any, Literal
 from pydantic import BeforeValidator, Field, ValidationInfo, field_validator, model_validator
 
 from jointwear import materials
-from jointwear.config.choices import CONTACT_MODEL, DYNAMICS_MODEL, WEAR_LAW, SlidingModel
+from jointwear.config.choices import (
+    CONTACT_MODEL,
+    DYNAMICS_MODEL,
+    LUBRICANT,
+    WEAR_LAW,
+    SlidingModel,
+)
 from jointwear.config.fields import (
+    FIELD,
     MAX_COUNT,
     MAX_SLICES,
     Density,
@@ -28,7 +35,7 @@ from jointwear.config.fields import (
     si,
 )
 from jointwear.errors import ConfigError
-from jointwear.units import to_si_unit
+from jointwear.units import to_si_unit, ureg
 
 __all__ = [
     "NAMED",
@@ -36,6 +43,7 @@ __all__ = [
     "DynamicsConfig",
     "JointConfig",
     "LifeConfig",
+    "LubricationConfig",
     "MaterialConfig",
     "MaterialsConfig",
     "SimulationConfig",
@@ -298,3 +306,108 @@ class LifeConfig(Section):
     wear_volume: Annotated[Annotated[float, Field(gt=0)] | None, si("volume")] = None
     clearance: Annotated[Annotated[float, Field(gt=0)] | None, si("length")] = None
     wall_thickness: NonNegLength = 0.0
+
+
+#: ``lubrication.model``: dry contact, or a film model sharing the load with the asperities
+LubricationModel = Literal["dry", "short-bearing", "long-bearing", "finite-length"]
+#: lowest temperature read [K]: a bare number is kelvin, and oil is liquid well above this
+LOWEST_TEMPERATURE = 173.15
+#: temperature of a lubricant given without one: the reference of the ISO VG grades [K]
+DEFAULT_TEMPERATURE = 313.15
+
+
+def read_temperature(value: Any) -> float:
+    """A temperature [K] from a number (kelvin) or a string with units (``"60 degC"``).
+
+    pint refuses ``"60 degC"`` as a product of a number and an offset unit; the
+    number and the unit are read apart and the quantity built from them.
+    """
+    if isinstance(value, str):
+        number, _, unit = value.strip().partition(" ")
+        try:
+            kelvin = float(ureg.Quantity(float(number), unit.strip() or "K").to("K").magnitude)
+        except Exception as exc:  # pint's and float's errors alike: one message
+            raise ValueError(f"cannot read {value!r} as a temperature ({exc})") from None
+    elif isinstance(value, int | float) and not isinstance(value, bool):
+        kelvin = float(value)
+    else:
+        raise ValueError(f"expected a temperature such as '60 degC', got {value!r}")
+    if not math.isfinite(kelvin) or kelvin < LOWEST_TEMPERATURE:
+        raise ValueError(
+            f"{value!r} is below {LOWEST_TEMPERATURE:g} K (a bare number is kelvin: "
+            "write '60 degC')"
+        )
+    return kelvin
+
+
+def optional_temperature(value: Any) -> float | None:
+    """:func:`read_temperature`, with ``None`` (not given) passed through [K]."""
+    return None if value is None else read_temperature(value)
+
+
+class LubricationConfig(Section):
+    """A lubricated joint: the film model, the oil and the surfaces' roughness.
+
+    ``model = "dry"`` (the default) runs the dry contact models; a film model
+    (short, long or finite-length bearing) shares each step's load between the oil
+    film and the asperities (:mod:`jointwear.contact.lubricated`). The oil is a
+    ``viscosity`` [Pa s] or a library ``lubricant`` at a ``temperature`` [K, 40 degC
+    if not given], one of the two. ``roughness`` is the composite Rq
+    ``sqrt(Rq_pin^2 + Rq_bushing^2)`` [m]; ``eta_beta_sigma`` and ``sigma_over_beta``
+    are Greenwood--Tripp's asperity parameters, their defaults those of
+    :mod:`jointwear.lubrication.asperity` (mid-range of engineering surfaces).
+    """
+
+    model: LubricationModel = "dry"
+    viscosity: Annotated[float | None, Field(gt=0)] = None
+    lubricant: str | None = None
+    temperature: Annotated[float | None, BeforeValidator(optional_temperature)] = None
+    roughness: Annotated[float, si("length"), Field(gt=0)] = 0.4e-6
+    eta_beta_sigma: Annotated[float, Field(gt=0, le=1)] = 0.04
+    sigma_over_beta: Annotated[float, Field(gt=0, le=1)] = 1e-3
+
+    @field_validator("viscosity", mode="before")
+    @classmethod
+    def _viscosity_in_si(cls, value: Any) -> Any:
+        if value is None or isinstance(value, bool):
+            return value
+        try:
+            return to_si_unit(value, "Pa*s", "§")
+        except ConfigError as exc:
+            raise ValueError(str(exc).removeprefix("§: ")) from None
+
+    @field_validator("lubricant")
+    @classmethod
+    def _known_lubricant(cls, value: str | None) -> str | None:
+        if value is None:
+            return None
+        try:
+            return LUBRICANT(value, "§").name
+        except ConfigError as exc:
+            raise ValueError(str(exc).removeprefix("§: ")) from None
+
+    @model_validator(mode="after")
+    def _one_oil(self) -> LubricationConfig:
+        if self.viscosity is not None and self.lubricant is not None:
+            raise ValueError(
+                f"{FIELD}viscosity: give viscosity or lubricant, not both "
+                f"(lubricant {self.lubricant!r} has its own)"
+            )
+        if self.temperature is not None and self.lubricant is None:
+            raise ValueError(f"{FIELD}temperature: sets a lubricant's viscosity; give lubricant")
+        if self.model != "dry" and self.viscosity is None and self.lubricant is None:
+            raise ValueError(
+                f"{FIELD}viscosity: missing (lubrication.model = {self.model!r} needs "
+                "viscosity or lubricant)"
+            )
+        return self
+
+    @property
+    def lubricated(self) -> bool:
+        """A film model is chosen (not ``"dry"``)."""
+        return self.model != "dry"
+
+    @property
+    def oil_temperature(self) -> float:
+        """The lubricant's temperature [K]: ``temperature`` or 40 degC."""
+        return DEFAULT_TEMPERATURE if self.temperature is None else self.temperature

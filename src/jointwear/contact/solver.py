@@ -14,6 +14,11 @@ every contact solve of the run:
 3. **the general solve** (:func:`jointwear.contact.solve`): every other case, and
    every solve outside the loop (the pressure snapshots of a result).
 
+A lubricated joint (``[lubrication]`` with a film model) takes none of these: film,
+asperities and bulk share each step's load along the pin's periodic orbit
+(:class:`~jointwear.contact.lubricated.LubricatedContact`), and the solution's pressure
+is the asperity pressure plus the bulk's share solved dry (by path 1 or 3).
+
 The fused kernel is the one exception to "contact computes pressure, tribology the
 wear": it accumulates Archard's wear ``K_d p ds`` of every node inside the same
 compiled pass that balances each load, so the dense pressure of a revolution is never
@@ -39,6 +44,7 @@ from jointwear.contact import (
 )
 from jointwear.contact.kernel import WarmRevolutions, revolution_wear
 from jointwear.contact.laws import SpringLaw
+from jointwear.contact.lubricated import FilmRecord, LubricatedContact
 from jointwear.geometry.contour import BushingContour, Pin
 
 if TYPE_CHECKING:
@@ -126,6 +132,8 @@ class ContactSolver:
         the run's wear law is not Archard's, and the kernel is not used).
     compiled : bool, optional
         Force (True), forbid (False) or allow (None) the compiled kernel.
+    lubrication : LubricatedContact, optional
+        The film and asperity load sharing of a lubricated joint (``None``: dry).
     """
 
     def __init__(
@@ -139,6 +147,7 @@ class ContactSolver:
         nodes: int,
         wear_coefficient: float | None = None,
         compiled: bool | None = None,
+        lubrication: LubricatedContact | None = None,
     ) -> None:
         self.law, self.parameters = law, parameters
         self.pin = Pin(parameters.pin_radius)
@@ -146,6 +155,7 @@ class ContactSolver:
         self.nodes = nodes
         self.wear_coefficient = wear_coefficient
         self.compiled = compiled
+        self.lubrication = lubrication
         #: the load cycle and sliding distance whose warm revolutions are set up, and those
         self._warm_kernel: tuple[LoadCycle, FloatArray, WarmRevolutions | None] | None = None
 
@@ -181,6 +191,9 @@ class ContactSolver:
             ).spring_area[0]
             check_paper_spring_area(law.force_area, node_area, nodes)
         cfg = config.contact
+        lubrication = None
+        if config.lubrication.lubricated:
+            lubrication = LubricatedContact(config.lubrication, parameters)
         return cls(
             law,
             parameters,
@@ -190,6 +203,7 @@ class ContactSolver:
             nodes=cfg.nodes,
             wear_coefficient=(config.materials.bushing.wear_coefficient if fused_archard else None),
             compiled=compiled_kernel(config),
+            lubrication=lubrication,
         )
 
     @property
@@ -238,8 +252,10 @@ class ContactSolver:
         facing : ndarray, shape (M, N), optional
             The pin's wear facing each node at each step [m] (a worn pin).
         """
+        if self.lubrication is not None:
+            return self._lubricated(contour, cycle, facing)
         if facing is not None:
-            return self._worn_pin(contour, cycle, facing)
+            return self._worn_pin(contour, cycle.load, cycle.azimuth, facing)
         options = {}
         if warm is not None:
             options = {"initial_offset": warm.guess(ahead), "window": warm.window}
@@ -387,8 +403,56 @@ class ContactSolver:
             kept = self._warm_kernel = (cycle, sliding, revolutions)
         return kept[2]
 
+    def film_record(self, cycle: LoadCycle) -> FilmRecord | None:
+        """The lubrication state of every step of ``cycle`` (``None``: a dry joint)."""
+        if self.lubrication is None:
+            return None
+        return self.lubrication.record(cycle)
+
+    def _lubricated(
+        self, contour: BushingContour, cycle: LoadCycle, facing: FloatArray | None
+    ) -> ContactSolution:
+        """Film, asperities and bulk share each step's load: the asperity pressure on the
+        nodes along the orbit plus the dry solve of the bulk's share."""
+        lubrication, steps = self.lubrication, cycle.steps
+        pressure = lubrication.asperity_pressure(cycle, contour.radius.size)
+        record = lubrication.record(cycle)
+        bulk = np.flatnonzero(record.bulk_load_fraction * cycle.load > 0.0)
+        if bulk.size:
+            load, azimuth = record.bulk_load_fraction[bulk] * cycle.load[bulk], cycle.azimuth[bulk]
+            if facing is not None:
+                solved = self._worn_pin(contour, load, azimuth, facing[bulk])
+            else:
+                solved = solve(
+                    contour,
+                    self.pin,
+                    load,
+                    azimuth,
+                    self.law,
+                    self.parameters,
+                    balance=self.balance,
+                    tolerance=self.tolerance,
+                    max_iterations=self.max_iterations,
+                )
+            pressure[bulk] += solved.pressure
+        touching = np.count_nonzero(pressure > 0.0, axis=1)
+        half_angle = 0.5 * touching * contour.dtheta
+        return ContactSolution(
+            pressure=pressure,
+            eccentricity=lubrication.centre(cycle),
+            penetration=np.zeros(steps),
+            normal_force=record.asperity_load_fraction * cycle.load,
+            tangential_force=np.zeros(steps),
+            half_angle_left=half_angle,
+            half_angle_right=half_angle.copy(),
+            springs_left=(touching + 1) // 2,
+            springs_right=touching // 2,
+            iterations=np.zeros(steps, dtype=np.int64),
+            model=getattr(self.law, "name", "custom"),
+        )
+
     def _worn_pin(
-        self, contour: BushingContour, cycle: LoadCycle, facing: FloatArray
+        self, contour: BushingContour, load: FloatArray, azimuth: FloatArray, facing: FloatArray
     ) -> ContactSolution:
         """Each step on its own contour: the bushing plus the pin's wear facing it."""
         radius, length = self.parameters.bushing_radius, self.parameters.axial_length
@@ -396,15 +460,15 @@ class ContactSolver:
             solve(
                 BushingContour.from_wear_profile(radius, contour.wear_depth + facing[k], length),
                 self.pin,
-                cycle.load[k : k + 1],
-                cycle.azimuth[k : k + 1],
+                load[k : k + 1],
+                azimuth[k : k + 1],
                 self.law,
                 self.parameters,
                 balance=self.balance,
                 tolerance=self.tolerance,
                 max_iterations=self.max_iterations,
             )
-            for k in range(cycle.steps)
+            for k in range(load.size)
         ]
         fields = {
             name: np.concatenate([getattr(part, name) for part in parts])

@@ -137,6 +137,7 @@ def build_contents(record: RunRecord) -> ResultContents:
         snapshots, snapshot = _pressure_variables(record)
         data_vars.update(snapshots)
         coords["snapshot"] = snapshot
+    data_vars.update(film_variables(record))
     pin = record.state.pin_wear_depth
     if pin is not None:
         data_vars["pin_wear_depth"] = _var(
@@ -192,6 +193,36 @@ def _cycle_variables(record: RunRecord) -> dict[str, ResultVariable]:
             name: _var(("step",), diagnostic.values, diagnostic.units, diagnostic.long_name)
             for name, diagnostic in cycle.diagnostics.items()
         },
+    }
+
+
+def film_variables(record: RunRecord) -> dict[str, ResultVariable]:
+    """A lubricated run's film per step of the cycle (none for a dry run)."""
+    film = record.film
+    if film is None:
+        return {}
+    return {
+        "min_film_thickness": _var(
+            ("step",), film.min_film_thickness, "m", "minimum oil film thickness"
+        ),
+        "film_parameter": _var(
+            ("step",), film.film_parameter, "1", "film parameter h_min / composite roughness"
+        ),
+        "asperity_load_fraction": _var(
+            ("step",),
+            film.asperity_load_fraction,
+            "1",
+            "share of the load carried by solid contact (asperities and bulk)",
+        ),
+        "bulk_load_fraction": _var(
+            ("step",), film.bulk_load_fraction, "1", "share of the load carried by bulk contact"
+        ),
+        "eccentricity_ratio_x": _var(
+            ("step",), film.eccentricity_x, "1", "pin centre orbit x / radial clearance"
+        ),
+        "eccentricity_ratio_y": _var(
+            ("step",), film.eccentricity_y, "1", "pin centre orbit y / radial clearance"
+        ),
     }
 
 

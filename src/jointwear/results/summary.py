@@ -11,6 +11,9 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
+from jointwear.lubrication.asperity import lubrication_regime
 from jointwear.results.axial import axial_summary
 from jointwear.state import revolution_number
 from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS, engineering_checks
@@ -20,7 +23,7 @@ if TYPE_CHECKING:
 
     from jointwear.results.wear_result import WearResult
 
-__all__ = ["run_summary", "summarize"]
+__all__ = ["film_summary", "run_summary", "summarize"]
 
 
 def summarize(dataset: xr.Dataset) -> dict[str, Any]:
@@ -59,7 +62,31 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
     )
     if "z" in dataset["wear_depth"].dims:  # along the pin (a planar run has no z)
         out.update(axial_summary(dataset["wear_depth"].values[-1], dataset["z"].values))
+    out.update(film_summary(dataset))
     return out
+
+
+def film_summary(dataset: xr.Dataset) -> dict[str, Any]:
+    """A lubricated run's film over the cycle; empty for a dry run (the keys are absent).
+
+    ``min_film_thickness_m`` and ``min_film_parameter`` are the cycle's least,
+    ``asperity_load_fraction`` the time-weighted mean over the cycle's steps, and
+    ``lubrication_regime`` the regime of the least film parameter (hydrodynamic above
+    3, mixed above 1, else boundary).
+    """
+    if "film_parameter" not in dataset:
+        return {}
+    time = np.asarray(dataset["time"].values, float)
+    period = float(dataset.attrs.get("period_s", math.nan))
+    duration = np.diff(np.append(time, period))
+    least = float(dataset["film_parameter"].values.min())
+    fraction = np.asarray(dataset["asperity_load_fraction"].values, float)
+    return {
+        "min_film_thickness_m": float(dataset["min_film_thickness"].values.min()),
+        "min_film_parameter": least,
+        "asperity_load_fraction": float(np.sum(fraction * duration) / np.sum(duration)),
+        "lubrication_regime": str(lubrication_regime(least)),
+    }
 
 
 def run_summary(result: WearResult, checks: bool = False) -> dict[str, Any]:

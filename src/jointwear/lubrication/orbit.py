@@ -1,0 +1,601 @@
+"""The pin's orbit over a load cycle: Booker's mobility method with asperity contact.
+
+Under a load that changes in size and direction the pin's centre moves: the film
+carries the load by its wedge (rotation) *and* its squeeze (approach) action. Booker's
+mobility method (:mod:`jointwear.lubrication.mobility`) gives the centre's velocity for
+a load at every eccentricity; integrated over the cycle, the orbit. Where the film
+is thin, the asperities (Greenwood--Tripp, :mod:`jointwear.lubrication.asperity`)
+carry part of the load and the film only the rest:
+
+.. math::
+
+    \\mathbf F_{film} = -\\big(\\mathbf W + F_a(\\varepsilon)\\,\\mathbf e_r\\big),
+    \\qquad
+    \\frac{\\dot{\\mathbf e}}{c} = k\\,(M_\\varepsilon\\mathbf e_r + M_\\phi\\mathbf e_t)
+        + \\frac{\\omega_{pin}+\\omega_{bushing}}{2}\\,\\varepsilon\\,\\mathbf e_t,
+    \\qquad k = \\frac{|\\mathbf W + F_a\\mathbf e_r|\\,(c/R)^2}{\\mu L D},
+
+with ``F_a <= 0`` the radial asperity force and ``M`` the mobility vector of the film
+model at the direction of the film's load. Cavitation is the half-Sommerfeld (Guembel)
+condition of the film models. The load, the pin's and the bushing's speeds are those
+of the cycle, in the frame of the bushing (the film sees only ``omega_pin +
+omega_bushing - 2 dphi/dt``, the same in every frame).
+
+The cycle is periodic, and so is the orbit it settles on: the eccentricity ODE is
+integrated with :func:`scipy.integrate.solve_ivp` (LSODA, which switches to a stiff
+method where the asperities or a thin squeeze film make the orbit stiff) over whole
+cycles until the start of one cycle and its end agree within a tolerance (a fixed
+point of the cycle map; where plain repetition converges slowly, the fixed point is
+found with :func:`scipy.optimize.root`). The orbit's start is the quasi-static
+equilibrium of the first step.
+
+Through a reversal of the sliding speed the wedge vanishes, but the squeeze film
+still holds the pin off the wall for a time of order ``mu L D (R/c)^2 / W``: the
+quasi-static solution (no squeeze) would put it on the wall.
+
+Sources: [1]_, [2]_, [3]_.
+
+References
+----------
+.. [1] J. F. Booker, "Dynamically loaded journal bearings: mobility method of
+   solution", ASME J. Basic Eng. 87 (1965) 537-546.
+.. [2] J. A. Greenwood and J. H. Tripp, "The contact of two nominally flat rough
+   surfaces", Proc. Instn Mech. Engrs 185 (1970) 625-633.
+.. [3] P. Flores, J. Ambrosio, J. C. P. Claro, H. M. Lankarani and C. S. Koshy,
+   "A study on dynamics of mechanical systems including joints with clearance and
+   lubrication", Mech. Mach. Theory 41 (2006) 247-261.
+"""
+
+from __future__ import annotations
+
+import math
+from bisect import bisect_right
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import cache
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.integrate import solve_ivp
+from scipy.interpolate import CubicSpline, RectBivariateSpline
+from scipy.optimize import brentq, root
+
+from jointwear.errors import ConvergenceError
+from jointwear.lubrication.asperity import (
+    DEFAULT_ETA_BETA_SIGMA,
+    DEFAULT_SIGMA_OVER_BETA,
+    EXACT_CUTOFF,
+    FIT_OMEGA,
+    journal_asperity_force,
+)
+from jointwear.lubrication.mobility import (
+    DIRECTION_NODES,
+    LOG_GAP_MAX,
+    LOG_GAP_NODES,
+    dimensionless_force,
+)
+
+__all__ = ["Orbit", "OrbitSolver", "periodic_orbit"]
+
+FloatArray = NDArray[np.float64]
+
+#: the largest eccentricity ratio the orbit reaches (h_min = 1e-12 c)
+LARGEST_ECCENTRICITY = 1.0 - 1e-12
+#: nodes of the tabulated asperity force over the gap h_min / sigma
+ASPERITY_NODES = 401
+#: tolerances of the integration over a cycle (eccentricity ratio)
+INTEGRATION_RTOL = 1e-7
+INTEGRATION_ATOL = 1e-10
+#: cycles repeated while each shrinks the mismatch at least this much
+PLAIN_CYCLES = 8
+FAST_CONTRACTION = 0.2
+#: cycle integrations allowed to the root finder per round, and its rounds
+ROOT_EVALUATIONS = 40
+ROOT_ROUNDS = 3
+#: a mismatch of the film force's direction this small is a root [rad]
+ROUND_OFF = 1e-12
+#: the periodicity tolerance scales with the smallest gap, but not below this many
+#: roughnesses (the asperity pressure varies on the scale of sigma)
+GAP_FLOOR = 1.0
+
+
+@dataclass(frozen=True)
+class Orbit:
+    """The periodic orbit of a pin over a load cycle, at the cycle's steps.
+
+    Attributes
+    ----------
+    eccentricity_x, eccentricity_y : ndarray
+        Eccentricity ratio components ``e / c`` in the frame of the load [-].
+    eccentricity_ratio : ndarray
+        ``eps = |e| / c`` [-].
+    asperity_force : ndarray
+        Radial asperity force on the pin, ``<= 0`` (towards the centre) [N].
+    cycles : int
+        Cycles integrated until the orbit repeated.
+    periodicity_error : float
+        ``|e(T) - e(0)| / c`` of the last cycle [-].
+    """
+
+    eccentricity_x: FloatArray
+    eccentricity_y: FloatArray
+    eccentricity_ratio: FloatArray
+    asperity_force: FloatArray
+    cycles: int
+    periodicity_error: float
+
+
+def scalar_spline(spline: CubicSpline) -> Callable[[float], NDArray[np.float64]]:
+    """A cubic spline evaluated at one point without scipy's call overhead.
+
+    Horner's rule on the spline's coefficients (``spline.c[power, interval, ...]``),
+    the interval found with :func:`bisect.bisect_right`; outside the breakpoints the
+    end polynomials extend, as :class:`scipy.interpolate.CubicSpline` does.
+    """
+    breaks, coefficients = spline.x, spline.c
+    last = breaks.size - 2
+
+    def value(x: float) -> NDArray[np.float64]:
+        k = min(max(bisect_right(breaks, x) - 1, 0), last)
+        dx = x - breaks[k]
+        c = coefficients[:, k]
+        return ((c[0] * dx + c[1]) * dx + c[2]) * dx + c[3]
+
+    return value
+
+
+def short_shape(eccentricity_ratio: ArrayLike, direction: ArrayLike, ratio: float) -> FloatArray:
+    """``G(eps, beta; L/D)`` of the short bearing in closed form, shape ``(2, ...)`` [-].
+
+    :func:`jointwear.lubrication.film.short_bearing_force` at ``R = c = 1``,
+    ``mu = 1/6`` and unit motion ``m = 1`` in the direction ``beta``, written for few
+    states at a time (the film starts at ``theta_1 = beta``).
+
+    Parameters
+    ----------
+    eccentricity_ratio : array_like
+        ``eps`` [-].
+    direction : array_like
+        ``beta`` [rad].
+    ratio : float
+        ``L / D`` [-].
+    """
+    eps = np.asarray(eccentricity_ratio, float)
+    beta = np.asarray(direction, float)
+    one_minus = 1.0 - eps * eps
+    b = eps / (1.0 + np.sqrt(one_minus))
+    sin_b, cos_b = np.sin(beta), np.cos(beta)
+    g0 = beta - 2.0 * np.arctan(b * sin_b / (1.0 + b * cos_b))
+    g1 = beta + np.pi + 2.0 * np.arctan(b * sin_b / (1.0 - b * cos_b))
+    s0, s1 = np.sin(g0), np.sin(g1)
+    c0, c1 = np.cos(g0), np.cos(g1)
+    d_sin2 = np.sin(2.0 * g1) - np.sin(2.0 * g0)
+    sin_sin = (0.5 * (g1 - g0) - 0.25 * d_sin2) / one_minus**1.5
+    cos_cos = ((0.5 + eps * eps) * (g1 - g0) + 0.25 * d_sin2 - 2.0 * eps * (s1 - s0)) / (
+        one_minus**2.5
+    )
+    sin_cos = (0.5 * (s1 * s1 - s0 * s0) + eps * (c1 - c0)) / one_minus**2
+    scale = 2.0 * ratio**3 / 3.0
+    return np.stack(
+        [scale * (cos_b * sin_cos - sin_b * cos_cos), scale * (cos_b * sin_sin - sin_b * sin_cos)]
+    )
+
+
+def short_shape_scalar(eps: float, beta: float, ratio: float) -> tuple[float, float]:
+    """:func:`short_shape` of one state with :mod:`math` (no array overhead) [-]."""
+    one_minus = 1.0 - eps * eps
+    b = eps / (1.0 + math.sqrt(one_minus))
+    sin_b, cos_b = math.sin(beta), math.cos(beta)
+    g0 = beta - 2.0 * math.atan(b * sin_b / (1.0 + b * cos_b))
+    g1 = beta + math.pi + 2.0 * math.atan(b * sin_b / (1.0 - b * cos_b))
+    s0, s1 = math.sin(g0), math.sin(g1)
+    d_sin2 = math.sin(2.0 * g1) - math.sin(2.0 * g0)
+    sin_sin = (0.5 * (g1 - g0) - 0.25 * d_sin2) / one_minus**1.5
+    cos_cos = ((0.5 + eps * eps) * (g1 - g0) + 0.25 * d_sin2 - 2.0 * eps * (s1 - s0)) / (
+        one_minus**2.5
+    )
+    sin_cos = (0.5 * (s1 * s1 - s0 * s0) + eps * (math.cos(g1) - math.cos(g0))) / one_minus**2
+    scale = 2.0 * ratio**3 / 3.0
+    return (
+        scale * (cos_b * sin_cos - sin_b * cos_cos),
+        scale * (cos_b * sin_sin - sin_b * sin_cos),
+    )
+
+
+@cache
+def shape_table(model: str, ratio: float) -> RectBivariateSpline:
+    """Spline of ``(1 - eps^2)^2.5 G`` of a film model over ``(s, beta)``, ``eps = 1 - 10^-s``.
+
+    The long and the finite bearing's force factor, tabulated once per ``L/D`` on the
+    grid of :func:`jointwear.lubrication.mobility.force_table` and held beyond its
+    largest eccentricity (0.995) as there; a bicubic spline
+    (:class:`scipy.interpolate.RectBivariateSpline`) evaluates it in microseconds.
+    Returns one spline per component, stacked along the first axis of the values.
+
+    Parameters
+    ----------
+    model : str
+        ``"long"`` or ``"finite"``.
+    ratio : float
+        ``L / D`` [-].
+    """
+    log_gap = np.linspace(0.0, LOG_GAP_MAX, LOG_GAP_NODES)
+    pad = 3
+    step = 2.0 * np.pi / DIRECTION_NODES
+    directions = -np.pi + step * np.arange(-pad, DIRECTION_NODES + pad)
+    eps = 1.0 - 10.0**-log_gap
+    values = dimensionless_force(model, eps[:, None], directions[None, :], np.array(ratio))
+    scaled = values * (1.0 - eps[:, None] ** 2) ** 2.5
+    return (
+        RectBivariateSpline(log_gap, directions, scaled[0]),
+        RectBivariateSpline(log_gap, directions, scaled[1]),
+    )
+
+
+def film_shape(model: str, ratio: float) -> Callable[[ArrayLike, ArrayLike], FloatArray]:
+    """``G(eps, beta)`` of a film model at one ``L/D``, fast for few states [-].
+
+    The short bearing in closed form (:func:`short_shape`), the long and finite ones
+    from :func:`shape_table`.
+
+    Parameters
+    ----------
+    model : str
+        ``"short"``, ``"long"`` or ``"finite"``.
+    ratio : float
+        ``L / D`` [-].
+    """
+    if model == "short":
+        return lambda eps, beta: short_shape(eps, beta, ratio)
+    radial, tangential = shape_table(model, ratio)
+
+    def tabulated(eps: ArrayLike, beta: ArrayLike) -> FloatArray:
+        eps_, beta_ = np.broadcast_arrays(np.asarray(eps, float), np.asarray(beta, float))
+        log_gap = np.clip(-np.log10(np.maximum(1.0 - eps_, 1e-300)), 0.0, LOG_GAP_MAX)
+        wrapped = np.remainder(beta_ + np.pi, 2.0 * np.pi) - np.pi
+        scale = (1.0 - eps_ * eps_) ** 2.5
+        return np.stack(
+            [radial.ev(log_gap, wrapped) / scale, tangential.ev(log_gap, wrapped) / scale]
+        )
+
+    return tabulated
+
+
+class OrbitSolver:
+    """The centre's velocity of a pin in its film and on its asperities.
+
+    Parameters
+    ----------
+    radius : float
+        Pin radius ``R`` [m].
+    length : float
+        Bushing length ``L`` [m].
+    clearance : float
+        Radial clearance ``c`` [m].
+    viscosity : float
+        Dynamic viscosity ``mu`` [Pa s].
+    roughness : float
+        Composite roughness ``sigma`` [m].
+    composite_modulus : float
+        ``E*`` of pin and bushing [Pa].
+    model : str
+        Film model: ``"short"``, ``"long"`` or ``"finite"``.
+    eta_beta_sigma, sigma_over_beta : float
+        Greenwood--Tripp asperity parameters [-].
+    exact : bool
+        Exact ``F_{5/2}`` instead of the usual fit.
+    """
+
+    def __init__(
+        self,
+        radius: float,
+        length: float,
+        clearance: float,
+        viscosity: float,
+        roughness: float,
+        composite_modulus: float,
+        model: str = "short",
+        eta_beta_sigma: float = DEFAULT_ETA_BETA_SIGMA,
+        sigma_over_beta: float = DEFAULT_SIGMA_OVER_BETA,
+        exact: bool = False,
+    ) -> None:
+        self.model = model
+        self.clearance = clearance
+        self.ratio = length / (2.0 * radius)
+        self.shape = film_shape(model, self.ratio)
+        self.scalar_shape: Callable[[float, float], tuple[float, float]] = (
+            (lambda eps, beta: short_shape_scalar(eps, beta, self.ratio))
+            if model == "short"
+            else (lambda eps, beta: tuple(self.shape(eps, beta)))  # type: ignore[misc]
+        )
+        #: the direction of motion found last: the next search starts there
+        self.last_direction: float | None = None
+        self.mobility_scale = (clearance / radius) ** 2 / (viscosity * length * 2.0 * radius)
+        self.directions = np.linspace(-np.pi, np.pi, DIRECTION_NODES + 1)
+        # the asperity force over the gap h_min / sigma, tabulated once: it is zero
+        # beyond the fit's (or the exact integral's) cut-off
+        cutoff = EXACT_CUTOFF if exact else FIT_OMEGA
+        self.gaps = np.linspace(0.0, cutoff, ASPERITY_NODES)
+        eps = 1.0 - self.gaps * roughness / clearance
+        forces = journal_asperity_force(
+            radius,
+            length,
+            clearance,
+            eps,
+            roughness,
+            composite_modulus,
+            eta_beta_sigma,
+            sigma_over_beta,
+            exact,
+        )
+        # a cubic spline: a stiff integrator needs a smooth force (linear pieces stall it)
+        self.asperity_spline = CubicSpline(self.gaps, forces)
+        self.asperity_at = scalar_spline(self.asperity_spline)
+        self.cutoff = cutoff
+        self.roughness = roughness
+
+    def asperity_force(self, eccentricity_ratio: ArrayLike) -> FloatArray:
+        """Radial asperity force at ``eps`` (tabulated, linear between nodes) [N]."""
+        gap = (1.0 - np.asarray(eccentricity_ratio, float)) * self.clearance / self.roughness
+        return np.where(
+            gap < self.cutoff, self.asperity_spline(np.clip(gap, 0.0, self.cutoff)), 0.0
+        )
+
+    def direction_of_motion(self, eps: float, target: float) -> float:
+        """``beta`` whose film force points at ``target`` [rad] (module text).
+
+        The mismatch ``angle(G(eps, beta)) - target`` rises through zero once per turn
+        of ``beta``. Its root is bracketed next to the last one found (the orbit moves
+        little between calls), or else by a scan over
+        :data:`~jointwear.lubrication.mobility.DIRECTION_NODES` directions, and refined
+        with :func:`scipy.optimize.brentq`.
+        """
+
+        def mismatch(direction: float) -> float:
+            shape = self.scalar_shape(eps, direction)
+            return math.remainder(math.atan2(shape[1], shape[0]) - target, 2.0 * math.pi)
+
+        found = None
+        searches = (
+            lambda: self.local_bracket(mismatch),
+            lambda: self.scanned_bracket(eps, target),
+        )
+        for search in searches:
+            bracket = search()
+            if bracket is None:
+                continue
+            low, high = bracket
+            below, above = mismatch(low), mismatch(high)
+            # a root on a node: the scan and the scalar form differ by round-off
+            if min(abs(below), abs(above)) <= ROUND_OFF:
+                found = low if abs(below) <= abs(above) else high
+            elif (below < 0.0 < above) and above - below < math.pi:
+                found = brentq(mismatch, low, high, xtol=1e-13, rtol=1e-15)
+            if found is not None:
+                break
+        if found is None:
+            raise ConvergenceError(f"mobility: no film force direction at eps = {eps:.12g}")
+        self.last_direction = found
+        return found
+
+    def local_bracket(self, mismatch: Callable[[float], float]) -> tuple[float, float] | None:
+        """A bracket ``(low, high)`` of the rising root next to the last root, or None."""
+        centre = self.last_direction
+        if centre is None:
+            return None
+        width = 0.05
+        low, high = centre - width, centre + width
+        below, above = mismatch(low), mismatch(high)
+        while width < 1.0:
+            if below <= 0.0 < above and above - below < math.pi:
+                return low, high
+            width *= 3.0
+            if below > 0.0:
+                low = centre - width
+                below = mismatch(low)
+            else:
+                high = centre + width
+                above = mismatch(high)
+        return None
+
+    def scanned_bracket(self, eps: float, target: float) -> tuple[float, float]:
+        """A bracket of the rising root from a scan over all directions [rad]."""
+        shape = self.shape(eps, self.directions)
+        scan = np.remainder(np.arctan2(shape[1], shape[0]) - target + np.pi, 2.0 * np.pi) - np.pi
+        rising = (scan[:-1] <= 0.0) & (scan[1:] > 0.0) & (np.diff(scan) < np.pi)
+        cell = int(np.argmax(rising))
+        return float(self.directions[cell]), float(self.directions[cell + 1])
+
+    def velocity(
+        self, state: FloatArray, load_x: float, load_y: float, mean_speed: float
+    ) -> FloatArray:
+        """``de/dt / c`` of the pin's centre at ``state = e / c`` [1/s] (module text).
+
+        Parameters
+        ----------
+        state : ndarray, shape (2,)
+            Eccentricity ratio components ``e / c`` [-].
+        load_x, load_y : float
+            Load on the pin (the force the mechanism applies to it) [N].
+        mean_speed : float
+            ``(omega_pin + omega_bushing) / 2`` [rad/s].
+        """
+        x, y = float(state[0]), float(state[1])
+        eps, phi = math.hypot(x, y), math.atan2(y, x)
+        eps = min(max(eps, 1e-6), LARGEST_ECCENTRICITY)
+        cos_phi, sin_phi = math.cos(phi), math.sin(phi)
+        gap = (1.0 - eps) * self.clearance / self.roughness
+        asperity = float(self.asperity_at(gap)) if gap < self.cutoff else 0.0
+        film_x, film_y = load_x + asperity * cos_phi, load_y + asperity * sin_phi
+        carried = math.hypot(film_x, film_y)
+        radial = tangential = 0.0
+        if carried > 0.0:
+            target = math.atan2(film_y, film_x) - phi + math.pi
+            beta = self.direction_of_motion(eps, target)
+            shape = self.scalar_shape(eps, beta)
+            size = self.ratio / (3.0 * math.hypot(shape[0], shape[1]))
+            rate = carried * self.mobility_scale * size
+            radial, tangential = rate * math.sin(beta), -rate * math.cos(beta)
+        tangential += mean_speed * eps
+        return np.array(
+            [
+                radial * cos_phi - tangential * sin_phi,
+                radial * sin_phi + tangential * cos_phi,
+            ]
+        )
+
+
+def stretched(state: ArrayLike) -> FloatArray:
+    """``q = e / (1 - eps)``: the clearance circle stretched over the plane [-].
+
+    The orbit is integrated in ``q``: the wall (``eps = 1``) is at infinity, out of the
+    integrator's reach, and its relative tolerance holds the gap ``1 - eps`` to a
+    relative accuracy however thin it is.
+
+    Parameters
+    ----------
+    state : array_like, shape (2, ...)
+        ``e / c`` [-].
+    """
+    state = np.asarray(state, float)
+    return state / (1.0 - np.hypot(state[0], state[1]))
+
+
+def unstretched(stretched_state: ArrayLike) -> FloatArray:
+    """``e / c = q / (1 + |q|)``, the inverse of :func:`stretched` [-]."""
+    q = np.asarray(stretched_state, float)
+    return q / (1.0 + np.hypot(q[0], q[1]))
+
+
+def periodic_orbit(
+    solver: OrbitSolver,
+    time: ArrayLike,
+    period: float,
+    load_x: ArrayLike,
+    load_y: ArrayLike,
+    mean_speed: ArrayLike,
+    start: ArrayLike,
+    tolerance: float = 1e-3,
+) -> Orbit:
+    """The periodic orbit of a pin over a load cycle (module text).
+
+    Load and mean surface speed are interpolated linearly and periodically between
+    their samples.
+
+    Parameters
+    ----------
+    solver : OrbitSolver
+        The joint, its film and its asperities.
+    time : array_like, shape (M,)
+        Times of the samples, in ``[0, period)`` [s]; the orbit is returned there.
+    period : float
+        The cycle's duration [s].
+    load_x, load_y : array_like, shape (M,)
+        Load on the pin at ``time`` [N].
+    mean_speed : array_like, shape (M,)
+        ``(omega_pin + omega_bushing) / 2`` at ``time`` [rad/s].
+    start : array_like, shape (2,)
+        First guess of ``e / c`` at ``time[0]`` [-].
+    tolerance : float
+        The orbit repeats when ``|e(T) - e(0)|`` is below ``tolerance`` times the
+        smallest gap ``c (1 - eps)`` of the cycle, or times ``sigma`` if that is
+        larger [-].
+
+    Returns
+    -------
+    Orbit
+        The orbit at ``time``.
+
+    Raises
+    ------
+    ConvergenceError
+        When the orbit does not repeat within the cycles allowed.
+    """
+    times = np.asarray(time, float)
+    samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
+    ends = np.append(times, times[0] + period)
+    # a periodic cubic spline: the integrator sees no kink at every sample
+    inputs = CubicSpline(
+        ends, np.concatenate([samples, samples[:, :1]], axis=1), axis=1, bc_type="periodic"
+    )
+
+    inputs_at = scalar_spline(inputs)
+
+    def right_hand_side(t: float, stretched: FloatArray) -> FloatArray:
+        load_xt, load_yt, speed = inputs_at(t)
+        state = unstretched(stretched)
+        velocity = solver.velocity(state, float(load_xt), float(load_yt), float(speed))
+        eps = math.hypot(state[0], state[1])
+        gap = 1.0 - eps
+        radial = (state @ velocity) / gap**2  # eps (e_r . v) / (1 - eps)^2 along e_r
+        return velocity / gap + radial * state
+
+    last: dict[str, Any] = {}
+
+    def cycle(initial: FloatArray) -> FloatArray:
+        solution = solve_ivp(
+            right_hand_side,
+            (ends[0], ends[-1]),
+            initial,
+            method="LSODA",
+            rtol=INTEGRATION_RTOL,
+            atol=INTEGRATION_ATOL,
+            t_eval=ends,
+        )
+        if not solution.success:
+            raise ConvergenceError(f"orbit: the integration failed ({solution.message})")
+        last.update(start=np.array(initial, float), path=solution.y)
+        return solution.y
+
+    # the gap matters against the roughness: a pin on its asperities needs no finer
+    floor = GAP_FLOOR * solver.roughness / solver.clearance
+
+    def mismatch(path: FloatArray) -> tuple[float, float]:
+        """``|e(T) - e(0)| / c`` and the tolerance it must meet [-]."""
+        state = unstretched(path)
+        gap = max(1.0 - np.hypot(*state).max(), floor)
+        return float(np.hypot(*(state[:, -1] - state[:, 0]))), tolerance * gap
+
+    path = cycle(stretched(np.asarray(start, float)))
+    cycles, previous = 1, math.inf
+    # plain repetition while it contracts fast (a stiff film forgets its start quickly)
+    while cycles < PLAIN_CYCLES:
+        error, allowed = mismatch(path)
+        if error <= allowed or error > FAST_CONTRACTION * previous:
+            break
+        previous = error
+        path = cycle(path[:, -1])
+        cycles += 1
+    for _ in range(ROOT_ROUNDS):
+        error, allowed = mismatch(path)
+        if error <= allowed:
+            break
+        # the cycle map's fixed point; the orbit can creep towards the wall over many
+        # cycles (a squeeze film thins slowly), which plain repetition follows slowly
+        found = root(
+            lambda initial: cycle(initial)[:, -1] - initial,
+            path[:, -1],
+            method="hybr",
+            options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS},
+        )
+        cycles += int(found.nfev)
+        if not np.array_equal(last["start"], found.x):
+            cycle(found.x)
+            cycles += 1
+        path = last["path"]
+    error, allowed = mismatch(path)
+    if error > allowed:
+        raise ConvergenceError(
+            f"orbit: not periodic after {cycles} cycles (|e(T) - e(0)| / c = {error:.3g})"
+        )
+    path = unstretched(path)
+    eps = np.hypot(path[0, :-1], path[1, :-1])
+    return Orbit(
+        eccentricity_x=path[0, :-1],
+        eccentricity_y=path[1, :-1],
+        eccentricity_ratio=eps,
+        asperity_force=solver.asperity_force(eps),
+        cycles=cycles,
+        periodicity_error=error,
+    )

@@ -1,0 +1,156 @@
+"""A lubricated run: film, asperities and bulk share each step's load along the pin's orbit.
+
+Checked against the dry run of the same joint: a thick film (lambda > 3) leaves almost
+no asperity load and no wear; a vanishing viscosity leaves the dry wear; in the mixed
+regime a faster oscillation builds a thicker film and wears less; and the orbit's
+record is the one the solver used.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from jointwear import Simulation, load_config
+from jointwear.contact.lubricated import bulk_weight, film_speeds
+from jointwear.mechanism.cycle import LoadCycle
+
+
+def crank_pin_cycle(steps: int = 120, period: float = 0.5, load: float = 300.0) -> LoadCycle:
+    """A crank pin: one turn per cycle, the load swelling and swinging about -y."""
+    time = np.arange(steps) * period / steps
+    phase = 2.0 * np.pi * time / period
+    return LoadCycle(
+        time=time,
+        load=load * (1.0 + 0.5 * np.cos(phase)),
+        azimuth=-np.pi / 2 + 0.3 * np.sin(phase),
+        relative_rotation=np.full(steps, 2.0 * np.pi / steps),
+        period=period,
+    )
+
+
+def run(*overrides: str, cycle: LoadCycle | None = None) -> tuple[Simulation, dict]:
+    config = load_config(
+        overrides=["mechanism.type=slider-crank", "simulation.steps_per_revolution=120", *overrides]
+    )
+    simulation = Simulation(config, load_cycle=cycle)
+    return simulation, simulation.run(pressures=False).summary()
+
+
+@pytest.fixture(scope="module")
+def crank_pin() -> LoadCycle:
+    return crank_pin_cycle()
+
+
+@pytest.fixture(scope="module")
+def dry(crank_pin) -> dict:
+    return run(cycle=crank_pin)[1]
+
+
+def test_the_dry_default_has_no_film_keys(dry):
+    for key in ("min_film_thickness_m", "min_film_parameter", "asperity_load_fraction"):
+        assert key not in dry
+
+
+def test_a_film_thicker_than_three_roughnesses_carries_the_load_and_stops_the_wear(crank_pin, dry):
+    _, wet = run(
+        "lubrication.model=short-bearing", "lubrication.viscosity=0.01 Pa*s", cycle=crank_pin
+    )
+    assert 3.0 < wet["min_film_parameter"] < 4.0  # just hydrodynamic
+    assert wet["lubrication_regime"] == "hydrodynamic"
+    assert wet["asperity_load_fraction"] < 0.01
+    assert wet["wear_volume_m3"] < 0.01 * dry["wear_volume_m3"]
+
+
+@pytest.mark.slow
+def test_without_viscosity_the_solid_contact_carries_and_wears_as_dry(crank_pin, dry):
+    _, wet = run(
+        "lubrication.model=short-bearing", "lubrication.viscosity=1e-9 Pa*s", cycle=crank_pin
+    )
+    assert wet["asperity_load_fraction"] == pytest.approx(1.0, abs=1e-3)
+    assert wet["wear_volume_m3"] == pytest.approx(dry["wear_volume_m3"], rel=0.01)
+
+
+def test_a_thin_film_passes_its_load_to_the_bulk(crank_pin, dry):
+    simulation, wet = run(
+        "lubrication.model=short-bearing", "lubrication.viscosity=1e-6 Pa*s", cycle=crank_pin
+    )
+    film = simulation.solver.film_record(simulation.load_cycle)
+    assert wet["lubrication_regime"] == "boundary"
+    assert wet["asperity_load_fraction"] > 0.97
+    np.testing.assert_allclose(
+        film.bulk_load_fraction,
+        bulk_weight(film.film_parameter)
+        * (1 - (film.asperity_load_fraction - film.bulk_load_fraction)),
+        rtol=1e-12,
+    )
+    assert wet["wear_volume_m3"] == pytest.approx(dry["wear_volume_m3"], rel=0.03)
+
+
+def test_in_the_mixed_regime_wear_falls_with_speed():
+    """A bronze bushing on a steel pin oscillating +-30 degrees under 2 kN."""
+    base = [
+        "mechanism.type=oscillating",
+        "mechanism.load=2 kN",
+        "mechanism.amplitude=30 deg",
+        "mechanism.load_angle=-90 deg",
+        "materials.bushing=bronze",
+        "materials.pin=steel",
+        "lubrication.model=short-bearing",
+        "lubrication.viscosity=0.02 Pa*s",
+    ]
+    runs = [
+        Simulation(load_config(overrides=[*base, f"mechanism.frequency={hz} Hz"]))
+        .run(pressures=False)
+        .summary()
+        for hz in (0.1, 0.25, 0.5, 1.0, 2.0)
+    ]
+    wear = np.array([summary["wear_volume_m3"] for summary in runs])
+    assert all(summary["lubrication_regime"] != "hydrodynamic" for summary in runs)
+    assert np.all(np.diff(wear) < 0.0)
+    assert wear[-1] > 0.0
+
+
+def test_bulk_weight_is_smooth_from_boundary_to_film():
+    lam = np.array([0.0, 0.5, 1.0, 2.0])
+    np.testing.assert_allclose(bulk_weight(lam), [1.0, 0.5, 0.0, 0.0])
+    step = 1e-6
+    slope = (bulk_weight(np.array([1.0])) - bulk_weight(np.array([1.0 - step]))) / step
+    assert abs(slope[0]) < 1e-5  # no kink where the film takes over
+
+
+def test_the_orbit_is_in_the_result(crank_pin):
+    config = load_config(
+        overrides=[
+            "mechanism.type=slider-crank",
+            "simulation.steps_per_revolution=120",
+            "lubrication.model=short-bearing",
+            "lubrication.viscosity=0.05 Pa*s",
+        ]
+    )
+    simulation = Simulation(config, load_cycle=crank_pin)
+    dataset = simulation.run(pressures=False).dataset
+    for name in ("eccentricity_ratio_x", "eccentricity_ratio_y", "bulk_load_fraction"):
+        assert dataset[name].attrs["units"] == "1"
+        assert dataset[name].attrs["long_name"]
+    eps = np.hypot(dataset["eccentricity_ratio_x"], dataset["eccentricity_ratio_y"])
+    clearance = config.joint.clearance
+    np.testing.assert_allclose(dataset["min_film_thickness"], clearance * (1 - eps), rtol=1e-12)
+
+
+def test_film_speeds_of_a_steadily_turning_load():
+    steps, period = 8, 0.5
+    time = np.arange(steps) * period / steps
+    azimuth = 2.0 * np.pi * np.arange(steps) / steps
+    cycle = LoadCycle(
+        time=time,
+        load=np.full(steps, 100.0),
+        azimuth=azimuth - np.pi / 2,
+        relative_rotation=np.full(steps, 2.0 * np.pi / steps),
+        period=period,
+    )
+    pin, load = film_speeds(cycle)
+    np.testing.assert_allclose(pin, 2.0 * np.pi / period)
+    np.testing.assert_allclose(load, 2.0 * math.pi / period)

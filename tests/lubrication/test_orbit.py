@@ -1,0 +1,154 @@
+"""The pin's periodic orbit by Booker's mobility method, with asperity contact.
+
+Checked against closed forms: a steady load on a turning journal settles where
+Ocvirk's (short) and Sommerfeld's (long, half-Sommerfeld) equilibria put it; a pin
+pushed straight at the wall moves at the speed of the short bearing's closed-form
+squeeze film; through a reversal of the sliding speed the squeeze film holds the pin
+off the wall where the steady (no-squeeze) solution puts it on the wall.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from jointwear.lubrication.mixed import steady_load_sharing
+from jointwear.lubrication.mobility import dimensionless_force
+from jointwear.lubrication.orbit import OrbitSolver, film_shape, periodic_orbit, short_shape
+
+RADIUS, CLEARANCE, VISCOSITY, SPEED = 0.01, 20e-6, 0.05, 100.0
+#: a smooth surface: no asperity force at the eccentricities checked
+SMOOTH = 1e-9
+
+
+def ocvirk_load(eps: float, length: float) -> float:
+    """Ocvirk: W = mu U L^3 / (4 c^2) eps / (1 - eps^2)^2 sqrt(pi^2 (1 - eps^2) + 16 eps^2)."""
+    u = RADIUS * SPEED
+    return (
+        VISCOSITY
+        * u
+        * length**3
+        / (4 * CLEARANCE**2)
+        * eps
+        / (1 - eps**2) ** 2
+        * math.sqrt(math.pi**2 * (1 - eps**2) + 16 * eps**2)
+    )
+
+
+def sommerfeld_load(eps: float, length: float) -> float:
+    """Half Sommerfeld: W = 6 mu U R^2 L eps sqrt(pi^2 (1-eps^2) + 4 eps^2)
+    / (c^2 (2+eps^2)(1-eps^2))."""
+    u = RADIUS * SPEED
+    return (
+        6
+        * VISCOSITY
+        * u
+        * RADIUS**2
+        * length
+        * eps
+        * math.sqrt(math.pi**2 * (1 - eps**2) + 4 * eps**2)
+        / (CLEARANCE**2 * (2 + eps**2) * (1 - eps**2))
+    )
+
+
+def steady_orbit(model: str, length: float, load: float):
+    solver = OrbitSolver(RADIUS, length, CLEARANCE, VISCOSITY, SMOOTH, 200e9, model)
+    steps, period = 4, 0.01
+    time = np.arange(steps) * period / steps
+    return periodic_orbit(
+        solver,
+        time,
+        period,
+        np.zeros(steps),
+        np.full(steps, -load),  # pressing downwards
+        np.full(steps, 0.5 * SPEED),
+        start=[0.2, -0.2],
+    )
+
+
+@pytest.mark.parametrize("eps", [0.3, 0.6, 0.85])
+def test_a_steady_load_settles_at_ocvirks_equilibrium(eps):
+    length = 0.005
+    orbit = steady_orbit("short", length, ocvirk_load(eps, length))
+    attitude = np.arctan2(orbit.eccentricity_x, -orbit.eccentricity_y)
+    expected = math.atan(math.pi * math.sqrt(1 - eps**2) / (4 * eps))
+    np.testing.assert_allclose(orbit.eccentricity_ratio, eps, rtol=1e-3)
+    np.testing.assert_allclose(attitude, expected, rtol=1e-3)
+
+
+@pytest.mark.parametrize("eps", [0.3, 0.6, 0.8])
+def test_a_steady_load_settles_at_sommerfelds_equilibrium(eps):
+    length = 0.04
+    orbit = steady_orbit("long", length, sommerfeld_load(eps, length))
+    attitude = np.arctan2(orbit.eccentricity_x, -orbit.eccentricity_y)
+    expected = math.atan(math.pi * math.sqrt(1 - eps**2) / (2 * eps))
+    np.testing.assert_allclose(orbit.eccentricity_ratio, eps, rtol=1e-2)
+    np.testing.assert_allclose(attitude, expected, rtol=1e-2)
+
+
+@pytest.mark.parametrize("eps", [0.1, 0.3, 0.6, 0.9])
+def test_a_pin_pushed_at_the_wall_moves_at_the_squeeze_films_speed(eps):
+    """F = mu R L^3 deps/dt / (c^2 (1-eps^2)^2.5)
+    [(1 + 2 eps^2)(pi/2 + asin eps) + 3 eps sqrt(1-eps^2)], no sideways motion."""
+    length, load = 0.005, 50.0
+    solver = OrbitSolver(RADIUS, length, CLEARANCE, VISCOSITY, SMOOTH, 200e9, "short")
+    velocity = solver.velocity(np.array([eps, 0.0]), load, 0.0, 0.0)
+    bracket = (1 + 2 * eps**2) * (math.pi / 2 + math.asin(eps)) + 3 * eps * math.sqrt(1 - eps**2)
+    rate = load * CLEARANCE**2 * (1 - eps**2) ** 2.5 / (VISCOSITY * RADIUS * length**3 * bracket)
+    assert velocity[0] == pytest.approx(rate, rel=1e-9)
+    assert abs(velocity[1]) < 1e-9 * rate
+
+
+def test_the_closed_short_form_is_the_film_modules():
+    eps = np.linspace(0.05, 0.95, 7)[:, None]
+    beta = np.linspace(-math.pi, math.pi, 13)[None, :]
+    np.testing.assert_allclose(
+        short_shape(eps, beta, 0.4),
+        dimensionless_force("short", eps, beta, np.array(0.4)),
+        rtol=1e-11,
+        atol=1e-14,
+    )
+
+
+@pytest.mark.parametrize("model", ["long", "finite"])
+def test_the_tabulated_force_factor_follows_the_force_models(model):
+    rng = np.random.default_rng(3)
+    eps, beta = rng.uniform(0.0, 0.99, 200), rng.uniform(-math.pi, math.pi, 200)
+    table = film_shape(model, 0.5)(eps, beta)
+    direct = dimensionless_force(model, eps, beta, np.array(0.5))
+    error = np.hypot(*(table - direct)) / np.hypot(*direct)
+    assert error.max() < 5e-3
+
+
+def test_the_squeeze_film_holds_the_pin_off_the_wall_through_a_speed_reversal():
+    """An oscillating pin under a steady load: the steady (no-squeeze) solution puts the
+    pin on the wall where the sliding speed reverses; the orbit keeps a film there."""
+    length, load, period, steps = 0.01, 400.0, 1.0, 90
+    time = np.arange(steps) * period / steps
+    pin_speed = 0.5 * 2 * math.pi / period * np.cos(2 * math.pi * time / period)
+    roughness, modulus = 0.2e-6, 115e9
+    solver = OrbitSolver(RADIUS, length, CLEARANCE, 0.1, roughness, modulus, "short")
+    orbit = periodic_orbit(
+        solver, time, period, np.zeros(steps), np.full(steps, -load), 0.5 * pin_speed, [0.0, -0.5]
+    )
+    steady = steady_load_sharing(
+        load, RADIUS, length, CLEARANCE, 0.1, 0.0, roughness, modulus, model="short"
+    )
+    gap = CLEARANCE * (1 - orbit.eccentricity_ratio) / roughness
+    assert steady.film_parameter < 1e-3  # on the wall
+    assert gap.min() > 2.0
+
+
+def test_the_orbit_does_not_depend_on_where_it_starts():
+    length, load, period, steps = 0.01, 300.0, 0.2, 60
+    time = np.arange(steps) * period / steps
+    phase = 2 * math.pi * time / period
+    solver = OrbitSolver(RADIUS, length, CLEARANCE, 0.05, 0.2e-6, 115e9, "short")
+    args = (solver, time, period, load * np.cos(phase), load * np.sin(phase), np.full(steps, 20.0))
+    one = periodic_orbit(*args, start=[0.0, 0.0])
+    other = periodic_orbit(*args, start=[-0.5, 0.6])
+    gap = 1 - one.eccentricity_ratio.max()
+    np.testing.assert_allclose(one.eccentricity_x, other.eccentricity_x, atol=1e-2 * gap)
+    np.testing.assert_allclose(one.eccentricity_y, other.eccentricity_y, atol=1e-2 * gap)
