@@ -62,11 +62,13 @@ from jointwear.workflows.sweep.local import WORKER_START, default_workers
 from jointwear.workflows.sweep.outputs import CASES_CSV, DATASET_FILE
 from jointwear.workflows.sweep.plan import (
     PLAN_FILE,
+    SEED_MAX,
     Case,
     SweepPlan,
     expand_sweep,
     load_plan,
     load_sweep,
+    seed_problem,
 )
 from jointwear.workflows.sweep.sampling import DISTRIBUTIONS
 
@@ -78,6 +80,7 @@ __all__ = [
     "DISTRIBUTIONS",
     "METRICS",
     "PLAN_FILE",
+    "SEED_MAX",
     "WORKER_START",
     "Case",
     "SweepPlan",
@@ -91,5 +94,6 @@ __all__ = [
     "load_sweep",
     "run_case",
     "run_sweep",
+    "seed_problem",
     "sweep_to_folder",
 ]

@@ -289,6 +289,11 @@ def sweep_to_folder(
         if out is not None and out.resolve() != resume.resolve():
             raise ConfigError("--out: a resumed sweep writes into its --resume directory")
         plan = load_plan(resume)
+        if plan.study.get("kind") == "life":  # its life.json and life.png need `life`
+            raise ConfigError(
+                f"--resume: {resume} holds a life study; continue it with "
+                f"`jointwear life --resume {resume}`"
+            )
         out = resume
     else:
         if sweep_file is None:
