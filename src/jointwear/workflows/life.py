@@ -46,8 +46,10 @@ from jointwear.workflows.sweep import (
     SweepResult,
     expand_sweep,
     limit_counts,
+    resume_command,
     run_sweep,
     seed_problem,
+    writing,
 )
 
 __all__ = [
@@ -407,7 +409,8 @@ def collect_life(plan: SweepPlan, result: SweepResult) -> LifeResult:
     inputs = {
         key: np.asarray([values[i] for i in ok], dtype=float) for key, values in inputs_si.items()
     }
-    write_json(result.out / "life.json", statistics)
+    with writing(result.out, "life.json", resume_command(plan, result.out)):
+        write_json(result.out / "life.json", statistics)
     return LifeResult(result, statistics, lives, censored, inputs)
 
 
@@ -496,7 +499,7 @@ def life_study(
         plan, out = _new_plan(
             config, samples, CASES if cases is None else cases, out, seed, by, overrides
         )
-    command = f"jointwear life --resume {out}"
+    command = resume_command(plan, out)
     checked = checked_progress(
         plan,
         progress,
@@ -520,7 +523,7 @@ def life_study(
         if not (out / PLAN_FILE).is_file():
             raise
         raise with_resume(exc, command) from None  # the finished cases are kept
-    with atomic_path(out / "life.png") as tmp:
+    with writing(out, "life.png", command), atomic_path(out / "life.png") as tmp:
         plot_life(result).savefig(tmp, format="png", dpi=120, metadata={"Software": None})
     return result
 

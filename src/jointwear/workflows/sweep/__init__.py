@@ -55,8 +55,10 @@ from jointwear.workflows.sweep.case import (
 from jointwear.workflows.sweep.execution import (
     SweepResult,
     checked_progress,
+    resume_command,
     run_sweep,
     sweep_to_folder,
+    writing,
 )
 from jointwear.workflows.sweep.local import WORKER_START, default_workers
 from jointwear.workflows.sweep.outputs import CASES_CSV, DATASET_FILE
@@ -92,8 +94,10 @@ __all__ = [
     "limit_counts",
     "load_plan",
     "load_sweep",
+    "resume_command",
     "run_case",
     "run_sweep",
     "seed_problem",
     "sweep_to_folder",
+    "writing",
 ]
