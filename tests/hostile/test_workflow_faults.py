@@ -109,6 +109,24 @@ CASES: list[Bad] = [
         ["a dotted key of 5000 parts"],
     ),
     Bad(
+        "sensitivity-too-few-cases",
+        "sweep",
+        ["sensitivity", "{paper}", "--sample", CLEARANCE, "--cases", "5", "--out", "{out}"],
+        ["--cases", "Sobol indices of 1 input need at least 2 x 3 = 6 cases, got 5"],
+    ),
+    Bad(
+        "sensitivity-unknown-method",
+        "sweep",
+        ["sensitivity", "{paper}", "--sample", CLEARANCE, "--method", "sobel", "--out", "{out}"],
+        ["--method", "unknown method 'sobel'", "did you mean 'sobol'"],
+    ),
+    Bad(
+        "sensitivity-unknown-metric",
+        "sweep",
+        ["sensitivity", "{paper}", "--sample", CLEARANCE, "--metric", "life_hour"],
+        ["--metric", "unknown case metric 'life_hour'", "did you mean 'life_hours'"],
+    ),
+    Bad(
         "plot-result-without-joint-load",
         "data",
         ["plot", "{tmp}/r.nc"],

@@ -70,6 +70,15 @@ class Case:
     def name(self) -> str:
         return f"case-{self.index:04d}"
 
+    @classmethod
+    def checked(cls, base: Config, index: int, overrides: dict[str, Any]) -> Case:
+        """The case of ``overrides`` on ``base``, marked invalid if they are together."""
+        try:
+            base.replace(overrides)
+        except ConfigError as exc:
+            return cls(index, overrides, str(exc))
+        return cls(index, overrides)
+
 
 @dataclass(frozen=True)
 class SweepPlan:
@@ -233,15 +242,10 @@ def expand_sweep(spec: Mapping[str, Any], base: Config, source: str = "sweep") -
     check_case_count(len(grid_points) * len(zip_rows), f"{source}: [grid] x [zip]")
     if not (tables["grid"] or tables["zip"] or tables["sample"]):
         raise ConfigError(f"{source}: nothing to sweep; give a [grid], [zip] or [sample] table")
-    cases = []
-    for index, (g, z, s) in enumerate(itertools.product(grid_points, zip_rows, sample_rows)):
-        overrides = {**g, **z, **s}
-        invalid = None
-        try:
-            base.replace(overrides)
-        except ConfigError as exc:
-            invalid = str(exc)
-        cases.append(Case(index, overrides, invalid))
+    cases = [
+        Case.checked(base, index, {**g, **z, **s})
+        for index, (g, z, s) in enumerate(itertools.product(grid_points, zip_rows, sample_rows))
+    ]
     keys = list(tables["grid"]) + list(tables["zip"]) + list(tables["sample"])
     return SweepPlan(base, keys, cases, source, seed if tables["sample"] else None)
 
