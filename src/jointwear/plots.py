@@ -52,6 +52,14 @@ __all__ = [
 
 #: the figures of a result, in the order :func:`plot_result` draws them
 FIGURES = ("wear_polar", "wear_profiles", "pressure", "joint_load", "wear_history")
+#: the variables of a result each figure draws
+FIGURE_VARIABLES = {
+    "wear_polar": ("wear_depth", "bushing_radius", "revolution"),
+    "wear_profiles": ("wear_depth", "revolution"),
+    "pressure": ("pressure_initial", "pressure_final", "snapshot"),
+    "joint_load": ("joint_load", "load_azimuth"),
+    "wear_history": ("update_revolution", "peak_wear_depth", "wear_width", "wear_mass"),
+}
 
 
 def new_figure(figsize: tuple[float, float] = (7.0, 4.0), **kwargs: Any) -> Figure:

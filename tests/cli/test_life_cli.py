@@ -87,3 +87,54 @@ def test_life_cli(capsys, paper_config_path: Path, tmp_path: Path) -> None:
     revolutions = data["life_revolutions"]
     assert revolutions["p5"]["value"] <= revolutions["median"]["value"]
     assert (tmp_path / "life" / "life.png").exists()
+
+
+def test_life_stopped_by_its_time_limit_is_finished_by_resume(
+    capsys, paper_config_path: Path, tmp_path: Path
+) -> None:
+    """--time-limit stops the study after its first case and names `jointwear life
+    --resume DIR`; `sweep --resume` refuses the folder (it would leave out life.json and
+    life.png); `life --resume DIR` runs the other cases and writes every output."""
+    import pytest
+
+    from tests.hostile.harness import run_cli
+
+    out = tmp_path / "life"
+    argv = [
+        "life",
+        str(paper_config_path),
+        "--sample",
+        f"{KD}=lognormal(median=5.05e-13 m^2/N, sigma=0.5)",
+        "--cases",
+        "6",
+        "--set",
+        "life.peak_wear_depth=1e-5",
+        "--set",
+        "contact.nodes=60",
+        "--set",
+        "simulation.steps_per_revolution=60",
+        "--out",
+        str(out),
+        "--workers",
+        "1",
+        "--json",
+        "--quiet",
+    ]
+    code, stdout, stderr = run_cli(capsys, [*argv, "--time-limit", "1e-9 s"])
+    assert (code, stdout) == (2, "")
+    assert stderr.endswith(f"; continue with `jointwear life --resume {out}`\n")
+    assert not (out / "life.json").exists()
+    code, _, stderr = run_cli(capsys, ["sweep", "--resume", str(out)])
+    assert code == 2
+    assert stderr == (
+        f"error: --resume: {out} holds a life study; continue it with "
+        f"`jointwear life --resume {out}`\n"
+    )
+    code, stdout, stderr = run_cli(capsys, ["life", "--resume", str(out), "--json", "--quiet"])
+    assert code == 0, stderr
+    data = strict_json(stdout)
+    assert data["cases"] == 6
+    assert data["b10_revolutions"] == pytest.approx(data["reliability"]["b10"]["value"])
+    assert {"weibull_shape", "weibull_scale_revolutions", "b50_revolutions"} <= set(data)
+    assert (out / "life.json").is_file()
+    assert (out / "life.png").is_file()

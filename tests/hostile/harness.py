@@ -63,8 +63,10 @@ def materialise(tmp: Path, files: dict[str, str | bytes], result: bytes) -> None
 
     ``@dir`` a folder, ``@fifo`` a named pipe, ``@link:NAME`` a symbolic link to
     ``tmp/NAME``, ``@sparse:N`` an N MiB file of zeros (sparse), ``@tiny`` /
-    ``@config`` / ``@result`` / ``@truncated-result`` / ``@foreign-netcdf`` real inputs.
+    ``@config`` / ``@result`` / ``@truncated-result`` / ``@foreign-netcdf`` real inputs,
+    ``@result-without:NAME`` the real result without its variable ``NAME``.
     """
+    import io
     import os
 
     import xarray as xr
@@ -89,6 +91,10 @@ def materialise(tmp: Path, files: dict[str, str | bytes], result: bytes) -> None
             path.write_bytes(result)
         elif content == "@truncated-result":
             path.write_bytes(result[: len(result) // 3])
+        elif isinstance(content, str) and content.startswith("@result-without:"):
+            with xr.open_dataset(io.BytesIO(result), engine="h5netcdf") as whole:
+                missing = whole.drop_vars(content.removeprefix("@result-without:")).load()
+            missing.to_netcdf(path, engine="h5netcdf")
         elif content == "@foreign-netcdf":
             xr.Dataset({"a": ("x", [1.0, 2.0])}).to_netcdf(path, engine="h5netcdf")
         elif isinstance(content, bytes):

@@ -9,7 +9,6 @@ import typer
 from rich.table import Table
 
 from jointwear.cli.common import (
-    ConfigArg,
     JsonOpt,
     MaxMemoryOpt,
     QuietOpt,
@@ -20,6 +19,7 @@ from jointwear.cli.common import (
     emit_json,
 )
 from jointwear.cli.progress import ProgressBar
+from jointwear.cli.run_cmd import OptConfigArg
 from jointwear.cli.sweep_cmd import SchedulerOpt, WorkersOpt
 
 SampleOpt = Annotated[
@@ -35,16 +35,40 @@ SampleOpt = Annotated[
 ]
 
 
+ByOpt = Annotated[
+    float | None,
+    typer.Option(
+        "--by",
+        help="Revolutions by which to report the probability of reaching each life limit "
+        "(default: simulation.revolutions).",
+        show_default=False,
+    ),
+]
+LifeResumeOpt = Annotated[
+    Path | None,
+    typer.Option(
+        "--resume",
+        help="Finish the interrupted life study in this directory: finished cases are kept, "
+        "the rest run, and every output is written as by an uninterrupted study.",
+        show_default=False,
+    ),
+]
+
+
 @app.command()
 def life(
-    config: ConfigArg,
+    config: OptConfigArg = None,
     sample: SampleOpt = None,
-    cases: Annotated[int, typer.Option("--cases", help="Monte Carlo cases.")] = 100,
+    cases: Annotated[
+        int | None, typer.Option("--cases", help="Monte Carlo cases [default: 100].")
+    ] = None,
     seed: Annotated[int | None, typer.Option("--seed", help="Seed of the draws.")] = None,
+    by: ByOpt = None,
     out: Annotated[
         Path | None,
         typer.Option("--out", help="Output directory: life.json, life.png, cases.csv, sweep.nc."),
     ] = None,
+    resume: LifeResumeOpt = None,
     set_: SetOpt = None,
     scheduler: SchedulerOpt = None,
     workers: WorkersOpt = None,
@@ -53,10 +77,12 @@ def life(
     max_memory: MaxMemoryOpt = None,
     time_limit: TimeLimitOpt = None,
 ) -> None:
-    """Life to the first [life] limit as a distribution: median, 5 % and 95 % life.
+    """Life to the first [life] limit as a distribution: median, 5 % and 95 % life, B10 and
+    B50 with confidence bounds, a Weibull fit and the reliability curve R(N).
 
-    Each case draws the sampled inputs and runs to its first limit; the sensitivity is
-    the rank correlation of the life with each input.
+    Each case draws the sampled inputs and runs to its first limit (a case that reaches
+    none is censored: its life is a lower bound); the sensitivity is the rank correlation
+    of the life with each input.
     """
     from jointwear.resources import parse_time_limit
     from jointwear.workflows.life import life_study
@@ -68,7 +94,9 @@ def life(
             sample or [],
             cases,
             out=out,
+            resume=resume,
             seed=seed,
+            by=by,
             overrides=set_ or [],
             scheduler=scheduler,
             workers=workers,
@@ -80,7 +108,7 @@ def life(
     if json_:
         emit_json(summary)
         return
-    print_summary(summary, config.name, result.sweep.out)
+    print_summary(summary, config.name if config is not None else str(resume), result.sweep.out)
 
 
 def print_summary(summary: dict, name: str, out: Path) -> None:
@@ -97,6 +125,7 @@ def print_summary(summary: dict, name: str, out: Path) -> None:
     for label, key in (("revolutions", "life_revolutions"), ("hours", "life_hours")):
         table.add_row(label, *(shown(summary[key][n]) for n in ("p5", "median", "p95")))
     console.print(table)
+    print_reliability(summary["reliability"])
     if summary["censored"]:
         console.print(
             f"{summary['censored']} cases reached no limit within "
@@ -121,3 +150,43 @@ def print_summary(summary: dict, name: str, out: Path) -> None:
             sens.add_row(key, "n/a" if rho is None else f"{rho:+.3f}")
         console.print(sens)
     console.print(f"results in {out}/ (life.json, life.png, cases.csv, sweep.nc)")
+
+
+def print_reliability(reliability: dict) -> None:
+    """B10 and B50 with their bounds, the Weibull fit and the probability of each limit."""
+    from jointwear.workflows.life import shown
+
+    level = f"{reliability['confidence']:.0%}"
+    table = Table(title=f"reliability ({level} confidence bounds)")
+    for column in ("", "Kaplan-Meier", "bounds", "Weibull", "bounds"):
+        table.add_column(column, justify="right")
+
+    def bounds(entry: dict | None) -> str:
+        if entry is None:
+            return "n/a"
+        upper = "open" if entry.get("upper") is None else f"{entry['upper']:.4g}"
+        return f"{entry['lower']:.4g} to {upper}"
+
+    for name in ("b10", "b50"):
+        entry, fit = reliability[name], reliability[name]["weibull"]
+        table.add_row(
+            f"{name.upper()} [rev]",
+            shown(entry),
+            bounds(entry),
+            "n/a" if fit is None else f"{fit['value']:.4g}",
+            bounds(fit),
+        )
+    console.print(table)
+    fit = reliability["weibull"]
+    if fit is not None:
+        console.print(
+            f"Weibull fit: shape {fit['shape']['value']:.3g}, scale "
+            f"{fit['scale_revolutions']['value']:.4g} rev ({fit['reached']} lives reached, "
+            f"{fit['censored']} censored)"
+        )
+    reach = reliability["reach_probability"]
+    by_limit = ", ".join(f"{k} {v:.3g}" for k, v in reach["limits"].items() if k != "any")
+    console.print(
+        f"probability of reaching a limit by {reach['by_revolutions']:.4g} revolutions: "
+        f"{reach['limits']['any']:.3g}" + (f" ({by_limit})" if by_limit else "")
+    )

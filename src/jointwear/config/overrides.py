@@ -18,7 +18,9 @@ from jointwear.materials import merge_material
 from jointwear.units import shown
 
 __all__ = [
+    "MAX_KEY_PARTS",
     "apply_overrides",
+    "check_key_depth",
     "deep_merge",
     "material_defaults",
     "normalized_overrides",
@@ -47,12 +49,34 @@ def deep_merge(base: dict[str, Any], update: Mapping[str, Any]) -> dict[str, Any
     return out
 
 
+#: parts of the deepest dotted key read (the config's deepest has three:
+#: ``materials.bushing.wear_coefficient``); a deeper one is refused before it is nested
+MAX_KEY_PARTS = 16
+
+
+def check_key_depth(dotted: str) -> None:
+    """Refuse a dotted key of more than :data:`MAX_KEY_PARTS` parts, naming its start.
+
+    Parameters
+    ----------
+    dotted : str
+        The key as given, e.g. ``joint.clearance``.
+    """
+    parts = dotted.count(".") + 1
+    if parts > MAX_KEY_PARTS:
+        raise ConfigError(
+            f"{dotted[:40]}...: a dotted key of {parts} parts; config keys have at most "
+            f"{MAX_KEY_PARTS} (e.g. 'materials.bushing.wear_coefficient')"
+        )
+
+
 def parse_override(text: str) -> tuple[str, Any]:
     """Split ``section.key=VALUE``; VALUE is read as a TOML literal, else kept as text."""
     key, sep, raw = text.partition("=")
     key = key.strip()
     if not sep or not key:
-        raise ConfigError(f"--set {text!r}: expected section.key=VALUE")
+        raise ConfigError(f"--set {text[:80]!r}: expected section.key=VALUE")
+    check_key_depth(key)
     raw = raw.strip()
     try:
         value = tomllib.loads(f"v = {raw}")["v"]
@@ -104,6 +128,7 @@ def apply_overrides(
     for dotted, value in normalized_overrides(overrides):
         if not isinstance(dotted, str) or not dotted:
             raise ConfigError(f"{dotted!r}: a config key is a dotted name, e.g. 'joint.clearance'")
+        check_key_depth(dotted)
         parts = dotted.split(".")
         if _material_override(data, parts, value):
             continue

@@ -8,6 +8,10 @@
                                                 their outputs
 :mod:`jointwear.workflows.life`                 life with uncertainty (``life``): Monte Carlo
                                                 on the sweep machinery, Kaplan-Meier
+:mod:`jointwear.workflows.reliability`          B10/B50 lives with bounds, the Weibull fit
+                                                of censored lives, each limit's probability
+:mod:`jointwear.workflows.sensitivity`          Sobol indices and Morris screening
+                                                (``sensitivity``) on the sweep machinery
 :mod:`jointwear.workflows.calibration`          parameters fitted to measured bushings or to
                                                 a contact reference (``calibrate``)
 :mod:`jointwear.workflows.parameter_fit`        the least-squares fit of config parameters

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from jointwear.errors import ConfigError
+from jointwear.errors import ConfigError, DataError
 
 if TYPE_CHECKING:
     from jointwear.checkpoint import Checkpointer
@@ -397,10 +397,18 @@ def redraw_plots(
         How many files were written.
     """
     from jointwear.io import check_out, staged_output
+    from jointwear.plots import FIGURE_VARIABLES
     from jointwear.results import read_result
 
     target = check_out(out if out is not None else result.parent / "plots")
     dataset = read_result(result)
+    for figure, names in FIGURE_VARIABLES.items():
+        for name in names:
+            if name not in dataset.variables:
+                raise DataError(
+                    f"{result}: no variable {name!r} (the {figure} figure draws it); "
+                    "not a complete jointwear result"
+                )
     with staged_output(target) as staging:
         count = len(plot_joints(dataset, staging, magnification=magnification))
     return target, count

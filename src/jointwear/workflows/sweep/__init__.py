@@ -55,18 +55,22 @@ from jointwear.workflows.sweep.case import (
 from jointwear.workflows.sweep.execution import (
     SweepResult,
     checked_progress,
+    resume_command,
     run_sweep,
     sweep_to_folder,
+    writing,
 )
 from jointwear.workflows.sweep.local import WORKER_START, default_workers
 from jointwear.workflows.sweep.outputs import CASES_CSV, DATASET_FILE
 from jointwear.workflows.sweep.plan import (
     PLAN_FILE,
+    SEED_MAX,
     Case,
     SweepPlan,
     expand_sweep,
     load_plan,
     load_sweep,
+    seed_problem,
 )
 from jointwear.workflows.sweep.sampling import DISTRIBUTIONS
 
@@ -78,6 +82,7 @@ __all__ = [
     "DISTRIBUTIONS",
     "METRICS",
     "PLAN_FILE",
+    "SEED_MAX",
     "WORKER_START",
     "Case",
     "SweepPlan",
@@ -89,7 +94,10 @@ __all__ = [
     "limit_counts",
     "load_plan",
     "load_sweep",
+    "resume_command",
     "run_case",
     "run_sweep",
+    "seed_problem",
     "sweep_to_folder",
+    "writing",
 ]

@@ -2,16 +2,17 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import shutil
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from jointwear.errors import ConfigError
-from jointwear.io import check_out, check_tree, write_json
+from jointwear.errors import ConfigError, DataError
+from jointwear.io import check_out, check_tree, os_reason, write_json
 from jointwear.workflows.sweep.case import FINISHED, limit_counts
 from jointwear.workflows.sweep.cluster import connect, run_dask
 from jointwear.workflows.sweep.local import run_local
@@ -28,8 +29,10 @@ __all__ = [
     "SIZING_KEYS",
     "SweepResult",
     "checked_progress",
+    "resume_command",
     "run_sweep",
     "sweep_to_folder",
+    "writing",
 ]
 
 #: one record per case (``case-NNNN.json``) and each running case's checkpoints
@@ -170,9 +173,11 @@ def _run(
     start: float,
 ) -> SweepResult:
     cases_dir = out / CASES_DIR
-    cases_dir.mkdir(parents=True, exist_ok=True)
     if not resume:
-        write_json(out / PLAN_FILE, plan.to_dict())
+        _start(plan, out)
+    command = resume_command(plan, out)
+    with writing(out, CASES_DIR, command):
+        cases_dir.mkdir(parents=True, exist_ok=True)
 
     records: dict[int, dict[str, Any]] = {}
     for case in plan.cases:
@@ -185,7 +190,8 @@ def _run(
     def finish(case: Case, record: dict[str, Any]) -> None:
         record["case"] = case.name
         record["parameters"] = case.overrides
-        write_json(cases_dir / f"{case.name}.json", record)
+        with writing(out, f"{CASES_DIR}/{case.name}.json", command):
+            write_json(cases_dir / f"{case.name}.json", record)
         shutil.rmtree(cases_dir / case.name, ignore_errors=True)  # its checkpoints
         records[case.index] = record
         if progress is not None:
@@ -209,12 +215,60 @@ def _run(
         mode, used = run_local(tasks, finish, workers)
 
     ordered = [records[case.index] for case in plan.cases]
-    write_cases_csv(plan, ordered, out / CASES_CSV)
-    write_sweep_dataset(plan, ordered, out / DATASET_FILE)
+    with writing(out, CASES_CSV, command):
+        write_cases_csv(plan, ordered, out / CASES_CSV)
+    with writing(out, DATASET_FILE, command):
+        write_sweep_dataset(plan, ordered, out / DATASET_FILE)
     counts = {s: sum(r["status"] == s for r in ordered) for s in ("ok", "failed", "error")}
     return SweepResult(
         out, ordered, time.perf_counter() - start, skipped, mode, used, counts=counts
     )
+
+
+def _start(plan: SweepPlan, out: Path) -> None:
+    """Create ``out`` with the plan; if that fails, leave nothing behind."""
+    created = [p for p in (*reversed(out.parents), out) if not p.exists()]
+    try:
+        with writing(out, PLAN_FILE):
+            out.mkdir(parents=True, exist_ok=True)
+            write_json(out / PLAN_FILE, plan.to_dict())
+    except DataError:
+        for folder in reversed(created):
+            with contextlib.suppress(OSError):
+                folder.rmdir()
+        raise
+
+
+@contextlib.contextmanager
+def writing(out: Path, name: str, resume: str | None = None) -> Iterator[None]:
+    """A write into a sweep's folder that fails (a full disk) as one line naming the file.
+
+    Parameters
+    ----------
+    out : Path
+        The sweep's folder.
+    name : str
+        The file written, relative to ``out``.
+    resume : str, optional
+        The command that continues the sweep, named in the message.
+
+
+    The writers are atomic, so the file is either whole or absent; once the plan is
+    written, the finished cases are kept and the message says how to continue.
+    """
+    try:
+        yield
+    except OSError as exc:
+        message = f"--out: {out / name}: {os_reason(exc)}"
+        if resume is not None:
+            message += f"; the finished cases are kept, continue with `{resume}`"
+        raise DataError(message) from None
+
+
+def resume_command(plan: SweepPlan, out: Path) -> str:
+    """The command that continues the sweep (or life study) in ``out``."""
+    command = "life" if plan.study.get("kind") == "life" else "sweep"
+    return f"jointwear {command} --resume {out}"
 
 
 def _task(plan: SweepPlan, case: Case, cases_dir: Path) -> dict[str, Any]:
@@ -289,6 +343,11 @@ def sweep_to_folder(
         if out is not None and out.resolve() != resume.resolve():
             raise ConfigError("--out: a resumed sweep writes into its --resume directory")
         plan = load_plan(resume)
+        if plan.study.get("kind") == "life":  # its life.json and life.png need `life`
+            raise ConfigError(
+                f"--resume: {resume} holds a life study; continue it with "
+                f"`jointwear life --resume {resume}`"
+            )
         out = resume
     else:
         if sweep_file is None:

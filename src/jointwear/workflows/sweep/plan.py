@@ -6,7 +6,7 @@ import itertools
 import json
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -28,18 +28,22 @@ from jointwear.workflows.sweep.sampling import draw
 
 __all__ = [
     "PLAN_FILE",
+    "SEED_MAX",
     "SWEEP_KEYS",
     "Case",
     "SweepPlan",
     "expand_sweep",
     "load_plan",
     "load_sweep",
+    "seed_problem",
 ]
 
 #: top-level keys of a sweep file
 SWEEP_KEYS = ("base", "set", "grid", "zip", "sample", "samples", "seed")
 #: the plan, stored in the sweep's output directory (read back by ``--resume``)
 PLAN_FILE = "sweep-plan.json"
+#: the largest seed: ``sweep.nc`` stores it as a 64-bit integer attribute
+SEED_MAX = 2**63 - 1
 
 
 @dataclass(frozen=True)
@@ -66,6 +70,15 @@ class Case:
     def name(self) -> str:
         return f"case-{self.index:04d}"
 
+    @classmethod
+    def checked(cls, base: Config, index: int, overrides: dict[str, Any]) -> Case:
+        """The case of ``overrides`` on ``base``, marked invalid if they are together."""
+        try:
+            base.replace(overrides)
+        except ConfigError as exc:
+            return cls(index, overrides, str(exc))
+        return cls(index, overrides)
+
 
 @dataclass(frozen=True)
 class SweepPlan:
@@ -82,6 +95,9 @@ class SweepPlan:
         Where the sweep came from (file name, for messages).
     seed : int or None
         Seed of the random samples.
+    study : dict
+        What a study built on the sweep needs to finish it on ``--resume`` (a life
+        study's ``{"kind": "life", ...}``); empty for a plain sweep.
     """
 
     base: Config
@@ -89,6 +105,7 @@ class SweepPlan:
     cases: list[Case]
     source: str = "sweep"
     seed: int | None = None
+    study: dict[str, Any] = field(default_factory=dict)
 
     def config(self, case: Case) -> Config:
         """The full configuration of ``case`` (raises ConfigError if invalid)."""
@@ -108,6 +125,7 @@ class SweepPlan:
             "cases": [
                 {"case": c.name, "overrides": c.overrides, "invalid": c.invalid} for c in self.cases
             ],
+            **({"study": self.study} if self.study else {}),
         }
 
     @classmethod
@@ -119,11 +137,48 @@ class SweepPlan:
             cases = [
                 Case(i, dict(c["overrides"]), c.get("invalid")) for i, c in enumerate(data["cases"])
             ]
-            return cls(base, list(data["keys"]), cases, str(data["source"]), data.get("seed"))
+            study = dict(data.get("study") or {})
+            plan = cls(
+                base, list(data["keys"]), cases, str(data["source"]), data.get("seed"), study
+            )
         except ConfigError as exc:  # (a ValueError: first)
             raise DataError(f"{where}: base_config: {exc}") from None
         except (KeyError, TypeError, AttributeError, ValueError) as exc:
             raise DataError(f"{where}: not a jointwear sweep plan (bad {exc})") from None
+        plan.check_cases(where)
+        return plan
+
+    def check_cases(self, where: str) -> None:
+        """Refuse a stored plan whose cases were changed by hand (before anything runs).
+
+        Every case may set only the plan's keys, and a case not marked invalid must
+        give a valid configuration, as :func:`expand_sweep` left it.
+
+        Raises
+        ------
+        DataError
+            Naming the plan file, the case and the key or reason.
+        """
+        problem = None if self.seed is None else seed_problem(self.seed)
+        if problem is not None:
+            raise DataError(f"{where}: seed: {problem}")
+        for key in self.keys:
+            try:
+                swept_key(key, f"{where}: keys")
+            except ConfigError as exc:
+                raise DataError(str(exc)) from None
+        for case in self.cases:
+            extra = sorted(set(case.overrides) - set(self.keys))
+            if extra:
+                raise DataError(f"{where}: {case.name}: {extra[0]} is not a key of this sweep")
+            if case.invalid is not None:
+                if not isinstance(case.invalid, str):
+                    raise DataError(f"{where}: {case.name}: invalid: expected a message")
+                continue
+            try:
+                self.config(case)
+            except ConfigError as exc:
+                raise DataError(f"{where}: {case.name}: {exc}") from None
 
 
 def load_sweep(path: str | Path) -> SweepPlan:
@@ -187,15 +242,10 @@ def expand_sweep(spec: Mapping[str, Any], base: Config, source: str = "sweep") -
     check_case_count(len(grid_points) * len(zip_rows), f"{source}: [grid] x [zip]")
     if not (tables["grid"] or tables["zip"] or tables["sample"]):
         raise ConfigError(f"{source}: nothing to sweep; give a [grid], [zip] or [sample] table")
-    cases = []
-    for index, (g, z, s) in enumerate(itertools.product(grid_points, zip_rows, sample_rows)):
-        overrides = {**g, **z, **s}
-        invalid = None
-        try:
-            base.replace(overrides)
-        except ConfigError as exc:
-            invalid = str(exc)
-        cases.append(Case(index, overrides, invalid))
+    cases = [
+        Case.checked(base, index, {**g, **z, **s})
+        for index, (g, z, s) in enumerate(itertools.product(grid_points, zip_rows, sample_rows))
+    ]
     keys = list(tables["grid"]) + list(tables["zip"]) + list(tables["sample"])
     return SweepPlan(base, keys, cases, source, seed if tables["sample"] else None)
 
@@ -293,14 +343,34 @@ def _sample_rows(
     check_case_count(other_cases * samples, f"{source}: samples ({samples}) x [grid] x [zip]")
     if seed is None:
         seed = 0
-    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
-        raise ConfigError(f"{source}: seed: expected a non-negative integer, got {seed!r}")
+    problem = seed_problem(seed)
+    if problem is not None:
+        raise ConfigError(f"{source}: seed: {problem}")
     rng = np.random.default_rng(seed)
     columns = {
         dotted: draw(base, dotted, dist, samples, rng, f"{source}: [sample] {dotted}")
         for dotted, dist in table.items()
     }
     return [{k: columns[k][i] for k in columns} for i in range(samples)], seed
+
+
+def seed_problem(seed: Any) -> str | None:
+    """Why ``seed`` cannot seed a sweep, or ``None``.
+
+    A seed is a whole number from 0 to 2**63 - 1: ``sweep.nc`` stores it as a 64-bit
+    integer attribute (numpy would take a longer one, and the cases would run, only
+    for the dataset to fail at the end).
+
+    Parameters
+    ----------
+    seed : Any
+        The seed as read [-].
+    """
+    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+        return f"expected a non-negative integer, got {str(seed)[:40]!r}"
+    if seed > SEED_MAX:
+        return f"at most 2**63 - 1 (the dataset stores it in 64 bits), got {len(str(seed))} digits"
+    return None
 
 
 def _flatten(table: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
