@@ -37,6 +37,7 @@ sys.path.insert(0, str(REPO))
 
 from benchmarks.bench_simulation import ROWS, machine, ms, row  # noqa: E402
 from benchmarks.benchlib import median, paired_ratio  # noqa: E402
+from tests.mechanism.slider_crank.test_contact_impact import SEPARATING  # noqa: E402
 
 from jointwear import load_config  # noqa: E402
 from jointwear.mechanism.impact.film import FilmParameters  # noqa: E402
@@ -44,15 +45,6 @@ from jointwear.mechanism.slider_crank import contact_impact as ci  # noqa: E402
 from jointwear.mechanism.stage import mechanism_inputs  # noqa: E402
 
 PAPER = REPO / "tests" / "data" / "paper_joint.toml"
-#: the separating case of tests/mechanism/slider_crank/test_contact_impact.py
-SEPARATING = {
-    "mechanism.spring_mode": "push",
-    "mechanism.spring_preload": "1 N",
-    "mechanism.crank_speed": "240 rpm",
-    "joint.clearance": "0.2 mm",
-    "mechanism.rod_mass": "0.3 kg",
-    "mechanism.rod_inertia": 0.3 * 0.2**2 / 12,
-}
 CASES = {
     "paper joint": {},
     "separating case": SEPARATING,

@@ -8,7 +8,8 @@ the film's force for the relative state of the two bodies that the contact syste
 hand to :class:`~jointwear.mechanism.impact.joint_contact.JointContact`: the pin-centre
 offset ``e``, its rate and the sum of the angular velocities of pin and bushing.
 
-The force is that of :mod:`jointwear.lubrication.film` (half-Sommerfeld cavitation:
+The force is that of :mod:`jointwear.lubrication.film` (the short bearing of Ocvirk
+[3]_, the long bearing of Sommerfeld as in Pinkus & Sternlicht [4]_; half-Sommerfeld cavitation:
 the full-film pressure integrated where it is positive, with Sommerfeld's substitution;
 wedge and squeeze together), written once more here as scalar functions of plain
 floats because (a) the mechanism layer lies below the lubrication library and may not
