@@ -10,7 +10,7 @@ import pytest
 
 EXAMPLES = sorted((Path(__file__).resolve().parents[1] / "examples").glob("*.py"))
 #: examples that need an optional package, skipped where it is not installed
-NEEDS = {"exudyn_handoff.py": "exudyn"}
+NEEDS = {"exudyn_handoff.py": "exudyn", "design_studies.py": "SALib"}
 
 
 @pytest.mark.parametrize("script", EXAMPLES, ids=lambda p: p.name)

@@ -438,7 +438,6 @@ def plot_sensitivity(result: SensitivityResult) -> Any:
     if result.method == "sobol":
         bars = (("S1", "S1_conf", "first order S1"), ("ST", "ST_conf", "total ST"))
         ax.set_ylabel(f"Sobol index of {result.metric}")
-        ax.set_ylim(0.0, 1.05)
     else:
         bars = (("mu_star", "mu_star_conf", "mu*"), ("sigma", None, "sigma"))
         ax.set_ylabel(f"elementary effect on {result.metric}")
@@ -447,6 +446,9 @@ def plot_sensitivity(result: SensitivityResult) -> Any:
         values = [result.indices[k][name] for k in keys]
         errors = None if conf is None else [result.indices[k][conf] for k in keys]
         ax.bar(x + (i - 0.5) * width, values, width, yerr=errors, capsize=3, label=label)
+    if result.method == "sobol":  # estimates scatter beyond [0, 1]: show them whole
+        ax.axhline(1.0, color="k", linewidth=0.8, linestyle=":")
+        ax.set_ylim(bottom=min(0.0, ax.get_ylim()[0]))
     ax.set_xticks(x, keys, rotation=15, ha="right", fontsize="small")
     ax.grid(axis="y", alpha=0.3)
     ax.legend(fontsize="small")
