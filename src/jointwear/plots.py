@@ -302,6 +302,10 @@ def plot_dataset(
     if kind in LUBRICATION_FIGURES and not is_lubricated(dataset):
         raise JointwearError(f"figure {kind!r}: the result is of a dry joint (no film)")
     label = label or f"{dataset.attrs.get('contact_model', '')}"
+    if "z" in dataset["wear_depth"].dims:  # along the pin: the slice worn deepest
+        deepest = int(dataset["wear_depth"].isel(revolution=-1).max("theta").argmax("z"))
+        dataset = dataset.isel(z=deepest)
+        label = f"{label}, z = {float(dataset['z']) * 1e3:.3g} mm"
     if kind == "wear_polar":
         return _wear_polar(dataset, label, magnification)
     return _DRAW[kind](dataset, label)
