@@ -128,6 +128,13 @@ def check_along_the_pin(config) -> None:
             "materials.pin.wear_coefficient: a wearing pin needs joint.axial_slices = 1 (the "
             "pin's wear is not yet followed slice by slice)"
         )
+    lubrication = getattr(config, "lubrication", None)
+    if lubrication is not None and lubrication.model != "dry":
+        raise ValueError(
+            f"lubrication.model: a film ({lubrication.model!r}) is solved for the whole "
+            f"bearing length and needs joint.axial_slices = 1 (the film along the slices of a "
+            f"tilted pin is not modelled)"
+        )
     if config.contact.balance != "paper":
         raise ValueError(
             'contact.balance: axial slices balance the load along its line ("paper"); '

@@ -366,6 +366,10 @@ class SlicedSolver:
             slice_wear=wear,
         )
 
+    def film_record(self, cycle: LoadCycle) -> None:
+        """A joint along the pin is dry (a film needs one slice): no lubrication record."""
+        return None
+
     def wear_per_revolution(
         self,
         solution: SlicedSolution,
