@@ -223,7 +223,7 @@ def _bench_kernel_model(model: str, quick: bool) -> None:
     def cold():
         return revolution_wear(*args, simulation.law, k_d, **options)
 
-    worn = simulation._contour(state.wear_depth)
+    worn = simulation.solver.contour(state.wear_depth)
 
     def warm():
         # what a per-revolution update solves: the extrapolated offsets of the last one
@@ -286,7 +286,7 @@ def bench_evaluations(quick: bool) -> None:
             simulation.sliding_distance, simulation.law, k_d,
         )  # fmt: skip
         cold = revolution_wear(*args, max_penetration=table5.joint.bushing_thickness)
-        worn = simulation._contour(state.wear_depth)
+        worn = simulation.solver.contour(state.wear_depth)
         warm = simulation.contact(worn, state)
         row(
             f"evaluations per load, {model}, kernel: cold circle / warm in a run",

@@ -76,7 +76,7 @@ def warm_arguments(model: str) -> dict:
         paper(**{"contact.model": model, "simulation.revolutions": 15000,
                  "simulation.update_every": 1}), 20,
     )  # fmt: skip
-    contour = simulation._contour(state.wear_depth)
+    contour = simulation.solver.contour(state.wear_depth)
     warm = simulation.solver._warm_revolutions(simulation.load_cycle, simulation.sliding_distance)
     nodes, grid, lines, _ = warm.arguments(contour)
     return {

@@ -221,7 +221,7 @@ def test_simulation_steps_use_the_extrapolated_warm_start(table5):
     for _ in range(4):
         state = simulation.step(state)
     assert state.warm_slope is not None
-    contour = simulation._contour(state.wear_depth)
+    contour = simulation.solver.contour(state.wear_depth)
     warm = simulation.contact(contour, state)
     cold = simulation.contact(contour)
     assert_rows_close(warm.pressure, cold.pressure)
@@ -355,7 +355,7 @@ def test_warm_revolution_balances_every_load(table5):
     state = simulation.initial_state()
     for _ in range(6):
         state = simulation.step(state)
-    contour = simulation._contour(state.wear_depth)
+    contour = simulation.solver.contour(state.wear_depth)
     warm = simulation.contact(contour, state)
     load = simulation.load_cycle.load
     force = warm.pressure * force_area(simulation, contour)

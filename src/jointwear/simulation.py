@@ -1,16 +1,9 @@
 """The one loop over revolutions: the paper's Fig. 7 flow.
 
-:class:`Simulation` builds the stages (the load, :class:`~jointwear.coupling.JointLoad`;
-the contact, :class:`~jointwear.contact.solver.ContactSolver`; the wear law; the life
-limits, the dynamics schedule and the recorder) and runs the loop: every contour update
-is a :class:`~jointwear.coupling.WearStep` (:func:`~jointwear.coupling.next_step`: the wear
-of one revolution times ``simulation.update_every``, or an adaptive jump), applied up to
-the first ``[life]`` limit (:func:`~jointwear.coupling.applied`) and recorded; the
-dynamics are solved again on the worn joint when the schedule says so. Without contour
-update one revolution's wear is scaled (exactly linear, paper Fig. 13). A run ends in a
-plain :class:`~jointwear.record.RunRecord`, which :class:`jointwear.results.WearResult`
-presents. Several clearance joints (``mechanism.clearance_joint`` a list) do not interact
-through the loads: each is its own loop, and the result gains a ``joint`` dimension.
+:class:`Simulation` builds the stages and runs the loop; every contour update is a
+:class:`~jointwear.coupling.WearStep`, applied up to the first ``[life]`` limit and recorded,
+and the run ends in a plain :class:`~jointwear.record.RunRecord`, which
+:class:`jointwear.results.WearResult` presents.
 """
 
 from __future__ import annotations
@@ -103,12 +96,6 @@ class Simulation:
         self.recorder = UpdateRecorder(config, self.life.joint)
         self.feedback = coupling.FeedbackWarnings(config.joint.clearance)
 
-    # ---------------------------------------------------------------- stages
-    @property
-    def load_cycles(self) -> dict[str, LoadCycle]:
-        """Stage 1: the load cycle of every simulated clearance joint (unworn joint)."""
-        return self.load.cycles
-
     @property
     def load_cycle(self) -> LoadCycle:
         """Stage 1: load, azimuth and relative rotation per step (the current cycle)."""
@@ -130,30 +117,38 @@ class Simulation:
         return SimulationState(revolution=0, wear_depth=np.zeros(shape), pin_wear_depth=pin)
 
     def contact(
-        self, contour: BushingContour, state: SimulationState | None = None
+        self,
+        contour: BushingContour,
+        state: SimulationState | None = None,
+        ahead: int | None = None,
     ) -> ContactSolution:
         """Stage 2: pressure on every node at every step on ``contour``; with ``state``, a
-        solve of the loop, warm-started from the state's last solve extrapolated over
-        ``state.interval`` revolutions (:mod:`jointwear.contact.solver` picks the path)."""
-        return self._solve(contour, state, 0 if state is None else state.interval)
+        solve of the loop, warm-started from the state's last solve extrapolated ``ahead``
+        revolutions, or ``state.interval`` (:mod:`jointwear.contact.solver` picks the path)."""
+        if state is None:
+            return self.solver.solve(contour, self.load_cycle)
+        facing, warm = self.load.facing(state.pin_wear_depth), WarmStart.of_state(state)
+        return self.solver.solve(
+            contour, self.load_cycle, sliding=self.sliding_distance, warm=warm,
+            ahead=state.interval if ahead is None else ahead, facing=facing,
+        )  # fmt: skip
 
     def wear_per_revolution(self, solution: ContactSolution) -> FloatArray:
         """Stage 3b: wear depth of one revolution at every node, by the wear law [m]."""
         return self.solver.wear_per_revolution(solution, self.wear_law, self.sliding_distance)
 
-    def pin_wear_per_revolution(self, solution: ContactSolution, contour: BushingContour):
+    def pin_wear_per_revolution(self, solved: coupling.Solved) -> FloatArray:
         """Stage 3b on the pin: its wear depth per revolution in its own frame [m]."""
-        pin_radius, rotation = self.config.joint.pin_radius, self.load.pin_rotation
+        joint, contour = self.config.joint, solved.contour
         return pin_wear_depth(
-            solution.pressure,
+            solved.solution.pressure,
             self.sliding_distance,
             self.pin_wear_coefficient,
             contour.radius,
-            pin_radius,
-            rotation,
+            joint.pin_radius,
+            self.load.pin_rotation,
         )
 
-    # ---------------------------------------------------------------- loop
     def run(
         self,
         progress: Progress | None = None,
@@ -167,17 +162,15 @@ class Simulation:
         ----------
         progress : callable, optional
             Called as ``progress(revolutions_done, revolutions_total)`` after every contour
-            update, and with ``done == total`` once the run is complete: ``(total,
-            total)`` at its end, ``(stop, stop)`` where a ``[life]`` limit ended it at
-            revolution ``stop`` (fractional).
+            update, and once the run is complete as ``(total, total)``, or ``(stop, stop)``
+            where a ``[life]`` limit ended it at revolution ``stop`` (fractional).
         state : SimulationState, optional
             Resume from this state (e.g. a checkpoint).
         on_step : callable, optional
             Called with the state after every contour update (checkpointing).
         pressures : bool
-            Solve the contact on the unworn and the final contour once more for the
-            result's pressure snapshots and contact half-angle (``False``: the result
-            has neither, as a sweep case needs only the wear; the wear is the same).
+            Solve the contact on the unworn and the final contour again for the result's
+            pressure snapshots and contact half-angle (``False``: neither, the same wear).
         """
         from jointwear.results import WearResult  # (the record, presented)
 
@@ -193,7 +186,7 @@ class Simulation:
             Simulation(self.config, self.contact_model, cycle, joint, self.wear_law).record(
                 progress, pressures=pressures
             )
-            for joint, cycle in self.load_cycles.items()
+            for joint, cycle in self.load.cycles.items()
         ]
         return WearResult.of_joints(self.config, records, time.perf_counter() - start)
 
@@ -208,12 +201,7 @@ class Simulation:
         (the parameters of :meth:`run`)."""
         start = time.perf_counter()
         state = self.initial_state() if state is None else state
-        self.load.resume(state)
-        steps = self.load_cycle.steps
-        if steps != self.config.simulation.steps_per_revolution:
-            # a load history brings its own steps: the config says what really ran
-            self.config = self.config.replace({"simulation.steps_per_revolution": steps})
-            self.load.config = self.config
+        self.config = self.load.resume(state)
         total = self.config.simulation.revolutions
         first = None
         if state.revolution == 0 and not len(state.dynamics_updates):
@@ -243,11 +231,11 @@ class Simulation:
             self._rate_at,
             self.jumps,
             warm_start=self._warm_start,
-            pin_rate=self._pin_rate,
+            pin_rate=self.pin_wear_per_revolution,
             due_in=self.load.due_in,
         )
         saved = self.recorder.profiles.targets
-        changes = coupling.applied(step, self.life, self.jumps, self._contour, saved)
+        changes = coupling.applied(step, self.life, self.jumps, self.solver.contour, saved)
         warm = self._warm_start(step, step.base.warm_offset, changes["interval"])
         return self._record(step.base, step.solution, **changes, **warm)
 
@@ -260,7 +248,7 @@ class Simulation:
     def _linear(self, state: SimulationState) -> tuple[SimulationState, ContactSolution]:
         """Without contour update: one revolution's wear, scaled (exactly linear)."""
         solved = self._rate_at(None, state.wear_depth, 0)
-        pin_rate = None if state.pin_wear_depth is None else self._pin_rate(solved)
+        pin_rate = None if state.pin_wear_depth is None else self.pin_wear_per_revolution(solved)
         total, wall = self.config.simulation.revolutions, self.config.joint.bushing_thickness
         saved = self.recorder.profiles.targets
         for changes in coupling.linear_marks(solved, pin_rate, total, self.life, saved, wall):
@@ -276,7 +264,7 @@ class Simulation:
         if pressures:
             initial = final = first
             if first is None:
-                final = self.contact(self._contour(state.wear_depth))
+                final = self.contact(self.solver.contour(state.wear_depth))
                 initial = self.solver.solve(self.initial_contour(), self.load.unworn(state))
         where = f"joint {self.joint!r}: " if len(self.config.joints) > 1 else ""
         said = warn_model_validity(self.config, self.law, state.wear_depth, (initial, final), where)
@@ -293,31 +281,14 @@ class Simulation:
             film=self.solver.film_record(self.load_cycle),
         )
 
-    # ---------------------------------------------------------------- helpers
     def _rate_at(
         self, state: SimulationState | None, wear_depth: FloatArray, ahead: int
     ) -> coupling.Solved:
         """The solve on the contour worn by ``wear_depth`` [m] and its wear rate; with a
         state, a solve of the loop warm from the state's, ``ahead`` revolutions on."""
-        contour = self._contour(wear_depth)
-        solution = self._solve(contour, state, ahead)
+        contour = self.solver.contour(wear_depth)
+        solution = self.contact(contour, state, ahead)
         return coupling.Solved(self.wear_per_revolution(solution), solution, contour)
-
-    def _pin_rate(self, solved: coupling.Solved) -> FloatArray:
-        return self.pin_wear_per_revolution(solved.solution, solved.contour)
-
-    def _solve(
-        self, contour: BushingContour, state: SimulationState | None, ahead: int
-    ) -> ContactSolution:
-        if state is None:
-            return self.solver.solve(contour, self.load_cycle)
-        warm = None
-        if state.warm_offset is not None:
-            warm = WarmStart(state.warm_offset, state.warm_slope, state.window)
-        facing, sliding = self.load.facing(state.pin_wear_depth), self.sliding_distance
-        return self.solver.solve(
-            contour, self.load_cycle, sliding=sliding, warm=warm, ahead=ahead, facing=facing
-        )
 
     def _warm_start(
         self, solved: coupling.Solved | coupling.WearStep, previous=None, interval=1
@@ -327,6 +298,3 @@ class Simulation:
         azimuth = self.load_cycle.azimuth
         warm = self.solver.warm_start(solved.solution, solved.contour, azimuth, previous, interval)
         return warm._asdict()
-
-    def _contour(self, wear_depth: FloatArray) -> BushingContour:
-        return self.solver.contour(wear_depth)

@@ -333,7 +333,7 @@ state = simulation.initial_state()
 for _ in range(3):
     state = simulation.step(state)
 cycle = simulation.load_cycle
-contour = simulation._contour(state.wear_depth)
+contour = simulation.solver.contour(state.wear_depth)
 args = (contour, simulation.pin, cycle.load, cycle.azimuth)
 rest = (simulation.law, config.materials.bushing.wear_coefficient)
 guess = state.warm_offset  # read-only

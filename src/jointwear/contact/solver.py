@@ -101,6 +101,13 @@ class WarmStart(NamedTuple):
     warm_slope: FloatArray | None
     window: int | None
 
+    @classmethod
+    def of_state(cls, state: Any) -> WarmStart | None:
+        """The warm start a run's state keeps (``None`` before its first solve)."""
+        if state.warm_offset is None:
+            return None
+        return cls(state.warm_offset, state.warm_slope, state.window)
+
     def guess(self, ahead: int) -> FloatArray:
         """The offsets extrapolated ``ahead`` revolutions along the trend [m]."""
         offset, slope = self.warm_offset, self.warm_slope

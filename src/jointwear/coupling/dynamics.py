@@ -406,10 +406,16 @@ class JointLoad:
         """Wear under ``cycle`` from now on."""
         self._cycles = {self.joint or cycle.joint: cycle}
 
-    def resume(self, state: SimulationState) -> None:
-        """Wear under the load ``state`` was running with (a resumed run)."""
+    def resume(self, state: SimulationState) -> Config:
+        """Wear under the load ``state`` was running with (a resumed run); the run's
+        configuration with the steps the cycle really has."""
         if state.load_depth is not None and not self.given:
             self.use(worn_cycle(self.config, self.joint, state.load_depth))
+        steps = self.cycle.steps
+        if steps != self.config.simulation.steps_per_revolution:
+            # a load history brings its own steps: the config says what really ran
+            self.config = self.config.replace({"simulation.steps_per_revolution": steps})
+        return self.config
 
     def unworn(self, state: SimulationState) -> LoadCycle:
         """The load cycle of the unworn joint (``state``'s own if never solved again)."""
