@@ -137,9 +137,11 @@ class Simulation:
         ``state.interval`` revolutions (:mod:`jointwear.contact.solver` picks the path)."""
         return self._solve(contour, state, 0 if state is None else state.interval)
 
-    def wear_per_revolution(self, solution: ContactSolution) -> FloatArray:
-        """Stage 3b: wear depth of one revolution at every node, by the wear law [m]."""
-        return self.solver.wear_per_revolution(solution, self.wear_law, self.sliding_distance)
+    def wear_per_revolution(self, solution: ContactSolution, revolution: float = 0) -> FloatArray:
+        """Stage 3b: wear depth of one revolution at every node, by the wear law [m] (after
+        ``revolution`` revolutions, for a law that reads how the joint runs)."""
+        law = coupling.wear_law_at(self.wear_law, self.load, revolution)
+        return self.solver.wear_per_revolution(solution, law, self.sliding_distance)
 
     def pin_wear_per_revolution(self, solution: ContactSolution, contour: BushingContour):
         """Stage 3b on the pin: its wear depth per revolution in its own frame [m]."""
@@ -210,7 +212,7 @@ class Simulation:
         state = self.initial_state() if state is None else state
         self.load.resume(state)
         steps = self.load_cycle.steps
-        if steps != self.config.simulation.steps_per_revolution:
+        if steps != self.config.simulation.steps_per_revolution and not self.load.cycle.duty:
             # a load history brings its own steps: the config says what really ran
             self.config = self.config.replace({"simulation.steps_per_revolution": steps})
             self.load.config = self.config
@@ -300,7 +302,8 @@ class Simulation:
         state, a solve of the loop warm from the state's, ``ahead`` revolutions on."""
         contour = self._contour(wear_depth)
         solution = self._solve(contour, state, ahead)
-        return coupling.Solved(self.wear_per_revolution(solution), solution, contour)
+        revolution = coupling.revolution_of(state, wear_depth, ahead)
+        return coupling.Solved(self.wear_per_revolution(solution, revolution), solution, contour)
 
     def _pin_rate(self, solved: coupling.Solved) -> FloatArray:
         return self.pin_wear_per_revolution(solved.solution, solved.contour)

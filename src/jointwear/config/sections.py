@@ -262,6 +262,16 @@ class WearConfig(Section):
         None
     )
     friction_coefficient: Annotated[float | None, Field(gt=0, le=10)] = None
+    # power-law: K_d (p / reference_pressure)^a (v / reference_speed)^b
+    reference_pressure: Pressure = 1e6
+    reference_speed: Annotated[float, si("velocity"), Field(gt=0)] = 0.01
+    pressure_exponent: Annotated[float, Field(ge=-1, le=5)] = 0.0
+    speed_exponent: Annotated[float, Field(ge=-1, le=5)] = 0.0
+    # running-in: K from initial_wear_coefficient to the bushing's over running_in_distance
+    initial_wear_coefficient: Annotated[
+        Annotated[float, Field(gt=0)] | None, si("wear_coefficient")
+    ] = None
+    running_in_distance: Annotated[Annotated[float, Field(gt=0)] | None, si("length")] = None
 
     @field_validator("law")
     @classmethod
@@ -274,6 +284,10 @@ class WearConfig(Section):
             for key in ("energy_coefficient", "friction_coefficient"):
                 if getattr(self, key) is None:
                     raise ValueError(f"wear.{key}: missing (needed by wear.law = 'energy')")
+        if self.law == "running-in":
+            for key in ("initial_wear_coefficient", "running_in_distance"):
+                if getattr(self, key) is None:
+                    raise ValueError(f"wear.{key}: missing (needed by wear.law = 'running-in')")
         return self
 
 
