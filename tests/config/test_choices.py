@@ -102,7 +102,7 @@ def test_the_default_stiffness_is_eq_2(paper_config: Config) -> None:
         (
             {"wear.law": "xyz"},
             "wear.law: unknown wear law 'xyz'; choose from 'archard', 'energy', 'power-law', "
-            "'running-in'",
+            "'running-in', 'tabulated'",
         ),
     ],
 )

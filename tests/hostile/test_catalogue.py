@@ -370,6 +370,17 @@ CASES: list[Bad] = [
         ["wear.running_in_distance: missing", "running-in"],
     ),
     Bad(
+        "tabulated-temperature-outside-the-table",
+        "config",
+        ["run", "{tmp}/table.toml", *SMALL],
+        ["wear.temperature", "outside the table", "not extrapolated"],
+        files={
+            "table.toml": '[wear]\nlaw = "tabulated"\ntable_against = "temperature"\n'
+            "table_points = [293.0, 373.0]\ntable_coefficients = [5e-13, 2e-12]\n"
+            "temperature = 400.0\n"
+        },
+    ),
+    Bad(
         "no-convergence",
         "run",
         ["run", "{paper}", *SMALL, "--set", "contact.max_iterations=1"],

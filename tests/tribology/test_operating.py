@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 import pytest
 
 from jointwear import Simulation
 from jointwear.config import config_from_dict
-from jointwear.errors import ConfigError
+from jointwear.errors import ConfigError, MaterialLimitWarning
 from jointwear.tribology import archard
 from jointwear.tribology.operating import (
     WearConditions,
@@ -157,3 +158,89 @@ def test_a_law_that_reads_the_conditions_refuses_without_them() -> None:
     law = wear_law(config({"law": "power-law"}).wear, config({}).materials.bushing)
     with pytest.raises(ConfigError, match=r"^wear\.law: 'power-law' needs the sliding speed"):
         law(PRESSURE, SLIDING)
+
+
+TABLE = {"law": "tabulated", "table_against": "speed"}
+
+
+def tabulated_law(**wear):
+    return wear_law(config({**TABLE, **wear}).wear, config({}).materials.bushing)
+
+
+def test_a_flat_table_is_archard() -> None:
+    law = tabulated_law(table_points=[0.0, 1.0], table_coefficients=[K, K])
+    np.testing.assert_allclose(
+        law(PRESSURE, SLIDING, WearConditions(SPEED)),
+        archard.wear_depth(PRESSURE, SLIDING, K),
+        rtol=1e-13,
+    )
+
+
+def test_a_table_in_speed_interpolates_linearly_step_by_step() -> None:
+    """K(v) linear between (0, K) and (0.1 m/s, 3K): h_j = Σ_k K (1 + 20 v_k) p_jk Δs_k."""
+    law = tabulated_law(table_points=[0.0, 0.1], table_coefficients=[K, 3 * K])
+    expected = (SLIDING * K * (1 + 20 * SPEED)) @ PRESSURE
+    np.testing.assert_allclose(law(PRESSURE, SLIDING, WearConditions(SPEED)), expected, rtol=1e-12)
+
+
+def test_a_table_in_pv_reads_the_local_pressure() -> None:
+    """K(pv) = K (1 + pv / 1e5 Pa m/s): h_j = K Σ_k (p + p² v / 1e5) Δs_k."""
+    law = tabulated_law(
+        table_against="pv", table_points=[0.0, 1e7], table_coefficients=[K, 101 * K]
+    )
+    expected = K * (SLIDING @ PRESSURE + (SLIDING * SPEED) @ PRESSURE**2 / 1e5)
+    np.testing.assert_allclose(law(PRESSURE, SLIDING, WearConditions(SPEED)), expected, rtol=1e-12)
+
+
+def test_beyond_the_table_its_end_values_are_used_with_one_warning() -> None:
+    law = tabulated_law(table_points=[0.02, 0.03], table_coefficients=[K, 2 * K])
+    slow, fast = np.full(40, 0.001), np.full(40, 1.0)
+    with pytest.warns(MaterialLimitWarning, match=r"^wear\.table_points: the speed .*end values"):
+        low = law(PRESSURE, SLIDING, WearConditions(slow))
+    np.testing.assert_allclose(low, archard.wear_depth(PRESSURE, SLIDING, K), rtol=1e-13)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # said once per run
+        high = law(PRESSURE, SLIDING, WearConditions(fast))
+    np.testing.assert_allclose(high, archard.wear_depth(PRESSURE, SLIDING, 2 * K), rtol=1e-13)
+
+
+def test_a_temperature_table_takes_the_operating_temperature_and_refuses_beyond() -> None:
+    table = {"table_against": "temperature", "table_points": [293.0, 373.0]}
+    law = tabulated_law(**table, table_coefficients=[K, 5 * K], temperature=353.0)
+    np.testing.assert_allclose(
+        law(PRESSURE, SLIDING, WearConditions(SPEED)),
+        archard.wear_depth(PRESSURE, SLIDING, 4 * K),
+        rtol=1e-13,
+    )
+    with pytest.raises(ConfigError, match=r"^wear\.temperature: 400 K is outside the table"):
+        config({**TABLE, **table, "table_coefficients": [K, 5 * K], "temperature": 400.0})
+
+
+@pytest.mark.parametrize(
+    ("wear", "message"),
+    [
+        ({"table_points": [0.0, 1.0]}, r"^wear\.table_coefficients: missing"),
+        (
+            {"table_points": [0.0, 1.0], "table_coefficients": [K, K, K]},
+            r"^wear\.table_coefficients: 3 values for 2 table_points",
+        ),
+        (
+            {"table_points": [1.0, 1.0], "table_coefficients": [K, K]},
+            r"^wear\.table_points: the points must increase strictly",
+        ),
+    ],
+)
+def test_a_malformed_table_is_refused(wear, message) -> None:
+    with pytest.raises(ConfigError, match=message):
+        config({**TABLE, **wear})
+
+
+def test_a_run_with_a_speed_table_wears_faster_at_the_higher_speed() -> None:
+    """A table rising with speed: at twice the frequency a cycle wears more (Archard: equal)."""
+    wear = {**TABLE, "table_points": [0.0, 0.2], "table_coefficients": [K, 5 * K]}
+    runs = [
+        Simulation(config(wear, f, update_contour=False)).run(pressures=False)
+        for f in ("0.5 Hz", "1 Hz")
+    ]
+    peaks = [r.summary()["peak_wear_depth_m"] for r in runs]
+    assert peaks[1] > 1.05 * peaks[0]

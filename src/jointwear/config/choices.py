@@ -76,7 +76,7 @@ DYNAMICS_MODEL = Choice(
 WEAR_LAW = Choice(
     "wear law",
     "wear.law",
-    ("archard", "energy", "power-law", "running-in"),
+    ("archard", "energy", "power-law", "running-in", "tabulated"),
     "jointwear.tribology.wear_laws:WEAR_LAWS",
 )
 SLIDING_MODEL = Choice(

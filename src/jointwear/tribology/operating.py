@@ -29,6 +29,14 @@ run in. Three laws of the registry (:data:`jointwear.tribology.wear_laws.WEAR_LA
     so that cycle after cycle at constant pressure the wear is exactly
     ``p \int_0^{s} K \, ds``. ``s_n = n S``: the sliding distance of the current cycle
     times the cycles run (a duty cycle: its share-weighted distance).
+``tabulated`` (a coefficient measured at several conditions)
+    .. math:: h_j = \sum_k K(x_{jk}) \, p_{jk} \, \Delta s_k
+
+    ``K`` linearly interpolated in ``wear.table_coefficients`` [1/Pa] at
+    ``wear.table_points`` of ``x`` = ``wear.table_against``: the step's sliding speed
+    ``v_k`` [m/s], the local ``p_jk v_k`` [Pa m/s] or the operating temperature
+    ``wear.temperature`` [K] (one ``K`` for the run). Speed and PV beyond the table take
+    its end values, with one warning per run; a temperature outside it is refused.
 
 References
 ----------
@@ -43,13 +51,14 @@ References
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from jointwear.errors import ConfigError
+from jointwear.errors import ConfigError, MaterialLimitWarning
 from jointwear.tribology import archard
 
 if TYPE_CHECKING:
@@ -61,6 +70,7 @@ __all__ = [
     "power_law_wear_depth",
     "running_in_coefficient",
     "running_in_mean_coefficient",
+    "tabulated_coefficient",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -235,3 +245,66 @@ def running_in(wear: WearConfig, bushing: MaterialConfig) -> OperatingLaw:
         return archard.wear_depth(pressure, sliding, mean)
 
     return OperatingLaw("running-in", depth)
+
+
+def tabulated_coefficient(
+    value: ArrayLike, points: ArrayLike, coefficients: ArrayLike, against: str
+) -> FloatArray:
+    """A wear coefficient interpolated linearly in a table [1/Pa].
+
+    Outside the table the end values are taken, with a warning
+    (:class:`~jointwear.errors.MaterialLimitWarning`) that names the variable and the
+    range: the wear there is the table's end value, not an extrapolation.
+
+    Parameters
+    ----------
+    value : array_like
+        Where the coefficient is wanted [m/s, Pa m/s or K, as ``against``].
+    points : array_like, shape (T,)
+        The table's increasing points [same unit].
+    coefficients : array_like, shape (T,)
+        The coefficient at each point [1/Pa].
+    against : str
+        What the table is against (``"speed"``, ``"pv"``, ``"temperature"``).
+    """
+    x = np.asarray(value, dtype=float)
+    grid = np.asarray(points, dtype=float)
+    # (a node out of contact has p v = 0: not a condition the joint runs at)
+    running = x[x > 0.0] if against == "pv" else x
+    if running.size and (running.min() < grid[0] or running.max() > grid[-1]):
+        warnings.warn(
+            f"wear.table_points: the {against} of the run reaches {running.min():.4g} to "
+            f"{running.max():.4g} (SI), beyond the table's {grid[0]:.4g} to {grid[-1]:.4g}; "
+            f"the table's end values are used there",
+            MaterialLimitWarning,
+            stacklevel=2,
+        )
+    return np.interp(x, grid, np.asarray(coefficients, dtype=float))
+
+
+def tabulated(wear: WearConfig, bushing: MaterialConfig) -> OperatingLaw:
+    """The ``tabulated`` wear law: ``h_j = sum_k K(x_jk) p_jk ds_k``, ``x`` the step's
+    sliding speed, the local ``p v`` or the operating temperature."""
+    points, coefficients, against = wear.table_points, wear.table_coefficients, wear.table_against
+    said = []
+
+    def coefficient(value: ArrayLike) -> FloatArray:
+        # warned once per run, not at every cycle
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            k = tabulated_coefficient(value, points, coefficients, against)
+        if caught and not said:
+            said.append(True)
+            warnings.warn(str(caught[0].message), MaterialLimitWarning, stacklevel=3)
+        return k
+
+    def depth(pressure, sliding, conditions: WearConditions) -> FloatArray:
+        p = np.asarray(pressure, dtype=float)
+        ds = np.asarray(sliding, dtype=float)
+        if against == "temperature":
+            return archard.wear_depth(p, ds, float(coefficient(wear.temperature)))
+        if against == "speed":
+            return ds @ (coefficient(conditions.speed)[:, None] * p)
+        return ds @ (coefficient(p * np.asarray(conditions.speed)[:, None]) * p)
+
+    return OperatingLaw("tabulated", depth)
