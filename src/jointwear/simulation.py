@@ -133,9 +133,11 @@ class Simulation:
             ahead=state.interval if ahead is None else ahead, facing=facing,
         )  # fmt: skip
 
-    def wear_per_revolution(self, solution: ContactSolution) -> FloatArray:
-        """Stage 3b: wear depth of one revolution at every node, by the wear law [m]."""
-        return self.solver.wear_per_revolution(solution, self.wear_law, self.sliding_distance)
+    def wear_per_revolution(self, solution: ContactSolution, revolution: float = 0) -> FloatArray:
+        """Stage 3b: wear depth of one revolution at every node, by the wear law [m] (after
+        ``revolution`` revolutions, for a law that reads how the joint runs)."""
+        law = coupling.wear_law_at(self.wear_law, self.load, revolution)
+        return self.solver.wear_per_revolution(solution, law, self.sliding_distance)
 
     def pin_wear_per_revolution(self, solved: coupling.Solved) -> FloatArray:
         """Stage 3b on the pin: its wear depth per revolution in its own frame [m]."""
@@ -288,7 +290,8 @@ class Simulation:
         state, a solve of the loop warm from the state's, ``ahead`` revolutions on."""
         contour = self.solver.contour(wear_depth)
         solution = self.contact(contour, state, ahead)
-        return coupling.Solved(self.wear_per_revolution(solution), solution, contour)
+        revolution = coupling.revolution_of(state, wear_depth, ahead)
+        return coupling.Solved(self.wear_per_revolution(solution, revolution), solution, contour)
 
     def _warm_start(
         self, solved: coupling.Solved | coupling.WearStep, previous=None, interval=1

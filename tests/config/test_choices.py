@@ -103,7 +103,8 @@ def test_the_default_stiffness_is_eq_2(paper_config: Config) -> None:
         ({"wear.law": "archart"}, "wear.law: unknown wear law 'archart'; did you mean 'archard'?"),
         (
             {"wear.law": "xyz"},
-            "wear.law: unknown wear law 'xyz'; choose from 'archard', 'energy'",
+            "wear.law: unknown wear law 'xyz'; choose from 'archard', 'energy', 'power-law', "
+            "'running-in', 'tabulated'",
         ),
     ],
 )

@@ -353,6 +353,54 @@ CASES: list[Bad] = [
         },
     ),
     Bad(
+        "duty-cycle-shares-not-one",
+        "config",
+        ["run", "{tmp}/duty.toml"],
+        ["mechanism.modes.share", "sum to 0.9, not 1"],
+        files={
+            "duty.toml": '[mechanism]\ntype = "duty-cycle"\n'
+            '[[mechanism.modes]]\ntype = "oscillating"\nshare = 0.4\nload = "1 kN"\n'
+            'amplitude = "25 deg"\nfrequency = "1 Hz"\n'
+            '[[mechanism.modes]]\ntype = "oscillating"\nshare = 0.5\nload = "2 kN"\n'
+            'amplitude = "10 deg"\nfrequency = "1 Hz"\n'
+        },
+    ),
+    Bad(
+        "duty-cycle-inside-a-duty-cycle",
+        "config",
+        ["run", "{tmp}/nested.toml"],
+        ["mechanism.modes[0].type", "not another duty cycle"],
+        files={
+            "nested.toml": '[mechanism]\ntype = "duty-cycle"\n'
+            '[[mechanism.modes]]\ntype = "duty-cycle"\nshare = 1.0\n'
+        },
+    ),
+    Bad(
+        "running-in-without-its-distance",
+        "config",
+        [
+            "run",
+            "{paper}",
+            *SMALL,
+            "--set",
+            "wear.law=running-in",
+            "--set",
+            "wear.initial_wear_coefficient=1e-12",
+        ],
+        ["wear.running_in_distance: missing", "running-in"],
+    ),
+    Bad(
+        "tabulated-temperature-outside-the-table",
+        "config",
+        ["run", "{tmp}/table.toml", *SMALL],
+        ["wear.temperature", "outside the table", "not extrapolated"],
+        files={
+            "table.toml": '[wear]\nlaw = "tabulated"\ntable_against = "temperature"\n'
+            "table_points = [293.0, 373.0]\ntable_coefficients = [5e-13, 2e-12]\n"
+            "temperature = 400.0\n"
+        },
+    ),
+    Bad(
         "no-convergence",
         "run",
         ["run", "{paper}", *SMALL, "--set", "contact.max_iterations=1"],

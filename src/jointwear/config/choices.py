@@ -75,7 +75,10 @@ DYNAMICS_MODEL = Choice(
     "jointwear.mechanism:DYNAMICS_MODELS",
 )
 WEAR_LAW = Choice(
-    "wear law", "wear.law", ("archard", "energy"), "jointwear.tribology.wear_laws:WEAR_LAWS"
+    "wear law",
+    "wear.law",
+    ("archard", "energy", "power-law", "running-in", "tabulated"),
+    "jointwear.tribology.wear_laws:WEAR_LAWS",
 )
 SLIDING_MODEL = Choice(
     "sliding model",

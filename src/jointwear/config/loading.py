@@ -97,6 +97,7 @@ def config_from_dict(data: Mapping[str, Any], defaults: bool = True) -> Config:
         if not isinstance(name, str):
             raise ConfigError(f"parameter_set: expected a name, got {name!r}")
         data = deep_merge(material_defaults(get_parameter_set(name, kind), data), data)
+        data["mechanism"] = mode_defaults(data["mechanism"], name)
     try:
         return Config.model_validate(data)
     except ValidationError as exc:
@@ -119,10 +120,16 @@ def load_config(
     data: dict[str, Any] = {} if path is None else read_toml(path)
     apply_overrides(data, overrides)
     check_bare_numbers(data)
-    mechanism = data.get("mechanism")
-    if isinstance(mechanism, dict) and isinstance(mechanism.get("file"), str):
+    base = Path.cwd() if path is None else Path(path).parent
+    for mechanism in mechanism_tables(data.get("mechanism")):
+        _file_beside(mechanism, base)
+    return config_from_dict(data)
+
+
+def _file_beside(mechanism: dict[str, Any], base: Path) -> None:
+    """``mechanism.file`` made absolute, relative to the config's folder ``base``."""
+    if isinstance(mechanism.get("file"), str):
         # a data file named in a config is found next to the config, wherever it is run
-        base = Path.cwd() if path is None else Path(path).parent
         # absolute, but a link keeps its name (messages name the file the user wrote)
         try:
             if "\x00" in mechanism["file"]:
@@ -130,4 +137,27 @@ def load_config(
             mechanism["file"] = str(Path.absolute(base / mechanism["file"]))
         except (OSError, ValueError) as exc:  # e.g. a NUL or a lone surrogate in the name
             raise ConfigError(f"mechanism.file: {shown(mechanism['file'])}: {exc}") from None
-    return config_from_dict(data)
+
+
+def mechanism_tables(mechanism: Any) -> list[dict[str, Any]]:
+    """The ``[mechanism]`` table, or a duty cycle's mode tables, as written."""
+    if not isinstance(mechanism, dict):
+        return []
+    modes = mechanism.get("modes")
+    if mechanism.get("type") == "duty-cycle" and isinstance(modes, list):
+        return [mode for mode in modes if isinstance(mode, dict)]
+    return [mechanism]
+
+
+def mode_defaults(mechanism: dict[str, Any], name: str) -> dict[str, Any]:
+    """A duty cycle's modes with the parameter set ``name``'s defaults of their types
+    underneath (any other mechanism as it is)."""
+    if mechanism.get("type") != "duty-cycle" or not isinstance(mechanism.get("modes"), list):
+        return mechanism
+    modes = []
+    for mode in mechanism["modes"]:
+        kind = mode.get("type") if isinstance(mode, dict) else None
+        if isinstance(kind, str) and kind in MECHANISM_TYPES and kind != "duty-cycle":
+            mode = deep_merge(get_parameter_set(name, kind).get("mechanism", {}), mode)
+        modes.append(mode)
+    return {**mechanism, "modes": modes}

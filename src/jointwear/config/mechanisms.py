@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 from typing import Annotated, Any, Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, create_model, model_validator
 
 from jointwear.config.choices import FOUR_BAR_GEOMETRY
 from jointwear.config.fields import (
@@ -26,9 +26,11 @@ from jointwear.config.fields import (
 )
 
 __all__ = [
+    "DUTY_SHARE_TOLERANCE",
     "DYNAMIC_TYPES",
     "FOUR_BAR_JOINT_BODIES",
     "MECHANISM_TYPES",
+    "DutyCycleConfig",
     "FourBarBody",
     "FourBarConfig",
     "FourBarJoint",
@@ -256,16 +258,109 @@ class LoadHistoryConfig(Section):
         return {}
 
 
-#: ``mechanism.type`` -> its config section; the single source of the type names
-MECHANISM_TYPES: dict[str, type[Section]] = {
-    cls.model_fields["type"].default: cls
-    for cls in (SliderCrankConfig, FourBarConfig, OscillatingConfig, LoadHistoryConfig)
-}
+#: the single mechanism types, each a mode of a duty cycle
+SINGLE_TYPES: tuple[type[Section], ...] = (
+    SliderCrankConfig,
+    FourBarConfig,
+    OscillatingConfig,
+    LoadHistoryConfig,
+)
 
 #: mechanism types whose load comes from dynamics (the others prescribe it)
 DYNAMIC_TYPES: tuple[str, ...] = ("slider-crank", "four-bar")
 
+#: how far the shares of a duty cycle's modes may sum from one [-]
+DUTY_SHARE_TOLERANCE = 1e-9
+
+Share = Annotated[float, Field(gt=0, le=1)]
+
+
+def _mode(cls: type[Section]) -> type[Section]:
+    """The section of ``cls`` with the mode's ``share`` of the cycles [-]."""
+    return create_model(f"{cls.__name__.removesuffix('Config')}Mode", __base__=cls, share=Share)
+
+
+#: ``type`` -> the section of a duty cycle's mode of that type
+MODE_TYPES: dict[str, type[Section]] = {
+    cls.model_fields["type"].default: _mode(cls) for cls in SINGLE_TYPES
+}
+
+SliderCrankMode, FourBarMode, OscillatingMode, LoadHistoryMode = MODE_TYPES.values()
+DutyMode = Annotated[
+    SliderCrankMode | FourBarMode | OscillatingMode | LoadHistoryMode,
+    Field(discriminator="type"),
+]
+
+
+class DutyCycleConfig(Section):
+    """A duty cycle: several operating modes, each run in a share of the cycles.
+
+    ``[[mechanism.modes]]`` tables, each a full ``[mechanism]`` table of a single type
+    plus ``share``, the fraction of the cycles it runs [-]; the shares sum to one. The
+    ``i``-th clearance joint of every mode is the same joint (named as in the first
+    mode), so every mode has as many clearance joints. The wear of a cycle is the
+    share-weighted sum of the modes' wear on the current contour.
+    """
+
+    type: Literal["duty-cycle"] = "duty-cycle"
+    modes: Annotated[list[DutyMode], Field(min_length=1, max_length=64)]
+
+    @model_validator(mode="before")
+    @classmethod
+    def _not_nested(cls, data: Any) -> Any:
+        modes = data.get("modes") if isinstance(data, dict) else None
+        for index, mode in enumerate(modes if isinstance(modes, list) else []):
+            if isinstance(mode, dict) and mode.get("type") == "duty-cycle":
+                raise ValueError(
+                    f"mechanism.modes[{index}].type: a duty cycle's mode is one mechanism, "
+                    f"not another duty cycle (list its modes here instead)"
+                )
+        return data
+
+    @model_validator(mode="after")
+    def _shares_and_joints(self) -> DutyCycleConfig:
+        total = math.fsum(mode.share for mode in self.modes)
+        if abs(total - 1.0) > DUTY_SHARE_TOLERANCE:
+            raise ValueError(
+                f"mechanism.modes.share: the shares of the modes sum to {total:.12g}, not 1 "
+                f"(within {DUTY_SHARE_TOLERANCE:g}); each is the fraction of cycles in that mode"
+            )
+        counts = {len(mode.joints) for mode in self.modes}
+        if len(counts) > 1:
+            raise ValueError(
+                "mechanism.modes: every mode needs as many clearance joints (the i-th joint "
+                f"of each mode is the same joint); the modes have {sorted(counts)}"
+            )
+        return self
+
+    @property
+    def joints(self) -> tuple[str, ...]:
+        """Names of the clearance joints (those of the first mode)."""
+        return self.modes[0].joints
+
+    @property
+    def mode_types(self) -> tuple[str, ...]:
+        """The ``type`` of each mode."""
+        return tuple(mode.type for mode in self.modes)
+
+    @property
+    def period(self) -> float:
+        """The longest period of a mode [s] (what bounds one integration of its dynamics)."""
+        return max(getattr(mode, "period", None) or 0.0 for mode in self.modes)
+
+    def resolved(self) -> dict[str, Any]:
+        """Every mode with the keys whose defaults derive from others written out."""
+        return {
+            "modes": [{**mode.model_dump(mode="json"), **mode.resolved()} for mode in self.modes]
+        }
+
+
+#: ``mechanism.type`` -> its config section; the single source of the type names
+MECHANISM_TYPES: dict[str, type[Section]] = {
+    cls.model_fields["type"].default: cls for cls in (*SINGLE_TYPES, DutyCycleConfig)
+}
+
 MechanismConfig = Annotated[
-    SliderCrankConfig | FourBarConfig | OscillatingConfig | LoadHistoryConfig,
+    SliderCrankConfig | FourBarConfig | OscillatingConfig | LoadHistoryConfig | DutyCycleConfig,
     Field(discriminator="type"),
 ]

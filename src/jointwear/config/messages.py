@@ -10,7 +10,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from jointwear.config.fields import FIELD, field_kind
-from jointwear.config.mechanisms import MECHANISM_TYPES
+from jointwear.config.mechanisms import MECHANISM_TYPES, MODE_TYPES
 from jointwear.config.schema import ConfigSchema
 from jointwear.errors import ConfigError
 from jointwear.registry import suggest
@@ -31,10 +31,14 @@ def _walk(loc: tuple[Any, ...]) -> tuple[tuple[Any, ...], Any]:
     tagged = False
     for part in loc:
         if isinstance(part, int):
+            if out[-2:] == ["mechanism", "modes"]:  # a duty cycle's mode, then its type's tag
+                out.append(part)
+                tagged = True
             continue
         if tagged:  # the discriminator value of the mechanism union
             tagged = False
-            model = MECHANISM_TYPES.get(part)
+            model = MODE_TYPES.get(part) if out[-1:] != ["mechanism"] else None
+            model = model or MECHANISM_TYPES.get(part)
             parent = model
             continue
         if model is None:  # past a value: e.g. 'constrained-int' of an int | Literal field

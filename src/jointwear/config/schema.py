@@ -90,8 +90,20 @@ class ConfigSchema(Section):
         return self
 
     @model_validator(mode="after")
+    def _running_in_updates(self) -> ConfigSchema:
+        # one revolution's wear scaled to the run would keep the new joint's coefficient
+        if self.wear.law == "running-in" and not self.simulation.update_contour:
+            raise ValueError(
+                "wear.law: 'running-in' wears less with every cycle, which a run without "
+                "contour update (one cycle's wear, scaled) cannot follow; set "
+                "simulation.update_contour = true"
+            )
+        return self
+
+    @model_validator(mode="after")
     def _dynamics_fits_mechanism(self) -> ConfigSchema:
-        if self.dynamics.model == "contact-impact" and self.mechanism.type not in DYNAMIC_TYPES:
+        kinds = getattr(self.mechanism, "mode_types", (self.mechanism.type,))
+        if self.dynamics.model == "contact-impact" and set(kinds) - set(DYNAMIC_TYPES):
             raise ValueError(
                 f"dynamics.model: 'contact-impact' needs a mechanism with inertia "
                 f"({', '.join(repr(t) for t in DYNAMIC_TYPES)}); mechanism.type "

@@ -34,6 +34,7 @@ from jointwear.config.fields import (
     WearCoefficient,
     si,
 )
+from jointwear.config.wear_table import check_table
 from jointwear.errors import ConfigError
 from jointwear.units import to_si_unit, ureg
 
@@ -271,6 +272,13 @@ class SimulationConfig(Section):
         return math.ceil(self.revolutions / self.update_every)
 
 
+#: a table's points (SI of wear.table_against) and coefficients [1/Pa], 2 to 1000 each
+TablePoints = Annotated[list[Annotated[float, Field(ge=0)]], Field(min_length=2, max_length=1000)]
+TableCoefficients = Annotated[
+    list[Annotated[float, Field(gt=0)]], Field(min_length=2, max_length=1000)
+]
+
+
 class WearConfig(Section):
     """The wear law and its coefficients (``archard`` uses the bushing's wear coefficient)."""
 
@@ -279,6 +287,21 @@ class WearConfig(Section):
         None
     )
     friction_coefficient: Annotated[float | None, Field(gt=0, le=10)] = None
+    # power-law: K_d (p / reference_pressure)^a (v / reference_speed)^b
+    reference_pressure: Pressure = 1e6
+    reference_speed: Annotated[float, si("velocity"), Field(gt=0)] = 0.01
+    pressure_exponent: Annotated[float, Field(ge=-1, le=5)] = 0.0
+    speed_exponent: Annotated[float, Field(ge=-1, le=5)] = 0.0
+    # running-in: K from initial_wear_coefficient to the bushing's over running_in_distance
+    initial_wear_coefficient: Annotated[
+        Annotated[float, Field(gt=0)] | None, si("wear_coefficient")
+    ] = None
+    running_in_distance: Annotated[Annotated[float, Field(gt=0)] | None, si("length")] = None
+    # tabulated: K at table_points (SI: m/s, Pa m/s or K) of table_against
+    table_against: Literal["speed", "pv", "temperature"] | None = None
+    table_points: TablePoints | None = None
+    table_coefficients: TableCoefficients | None = None
+    temperature: Annotated[float | None, Field(gt=0, le=2000)] = None  # [K]
 
     @field_validator("law")
     @classmethod
@@ -291,6 +314,11 @@ class WearConfig(Section):
             for key in ("energy_coefficient", "friction_coefficient"):
                 if getattr(self, key) is None:
                     raise ValueError(f"wear.{key}: missing (needed by wear.law = 'energy')")
+        if self.law == "running-in":
+            for key in ("initial_wear_coefficient", "running_in_distance"):
+                if getattr(self, key) is None:
+                    raise ValueError(f"wear.{key}: missing (needed by wear.law = 'running-in')")
+        check_table(self)
         return self
 
 

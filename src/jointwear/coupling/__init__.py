@@ -14,6 +14,7 @@ to the next, used by the loop over revolutions (:class:`jointwear.simulation.Sim
 
 from __future__ import annotations
 
+from jointwear.coupling.conditions import revolution_of, wear_law_at
 from jointwear.coupling.dynamics import (
     DYNAMICS_COLUMNS,
     DynamicsSchedule,
@@ -59,6 +60,8 @@ __all__ = [
     "linear_marks",
     "load_change",
     "next_step",
+    "revolution_of",
+    "wear_law_at",
     "wear_signature",
     "worn_cycle",
 ]

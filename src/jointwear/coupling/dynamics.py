@@ -67,7 +67,7 @@ def wear_signature(cycle: LoadCycle, bins: int = SIGNATURE_BINS) -> FloatArray:
     bins : int
         Bins over the circumference [-].
     """
-    weight = cycle.load * np.abs(cycle.relative_rotation)
+    weight = cycle.load * np.abs(cycle.relative_rotation) * cycle.step_share
     position = np.mod(cycle.azimuth, 2.0 * np.pi) * bins / (2.0 * np.pi)
     lower = np.floor(position).astype(int) % bins
     fraction = position - np.floor(position)
@@ -367,7 +367,10 @@ class JointLoad:
         # computed once per load cycle: every contour update asks for it
         if self._sliding is None or self._sliding[0] is not cycle:
             slide = SLIDING_MODELS.get(self.config.simulation.sliding)
-            self._sliding = (cycle, slide(cycle, self.config.joint.bushing_radius))
+            radius = self.config.joint.bushing_radius
+            # a duty cycle's modes each on their own cycle, weighted by their share
+            parts = [share * slide(part, radius) for share, part in cycle.parts()]
+            self._sliding = (cycle, parts[0] if len(parts) == 1 else np.concatenate(parts))
         return self._sliding[1]
 
     @property
@@ -412,7 +415,7 @@ class JointLoad:
         if state.load_depth is not None and not self.given:
             self.use(worn_cycle(self.config, self.joint, state.load_depth))
         steps = self.cycle.steps
-        if steps != self.config.simulation.steps_per_revolution:
+        if steps != self.config.simulation.steps_per_revolution and not self.cycle.duty:
             # a load history brings its own steps: the config says what really ran
             self.config = self.config.replace({"simulation.steps_per_revolution": steps})
         return self.config

@@ -83,6 +83,7 @@ from jointwear.measurement.compare import (
     resolve_profile_method,
 )
 from jointwear.measurement.fit import CircleFit
+from jointwear.measurement.identifiability import not_identifiable
 from jointwear.measurement.pointfit import PointFit, fit_points, interpolation_weights
 from jointwear.measurement.profile import align_profiles, measured_wear_profile
 from jointwear.registry import suggest
@@ -496,6 +497,7 @@ class ProfileCalibration:
     starts: int
     evaluations: int
     simulations: int
+    not_identifiable: dict[str, str] = field(default_factory=dict)
 
     @property
     def values(self) -> dict[str, float]:
@@ -523,11 +525,15 @@ class ProfileCalibration:
 
     @property
     def warnings(self) -> list[str]:
-        """One line per case the fitted model does not explain."""
+        """One line per case the fitted model does not explain, and per parameter the
+        cases do not determine (:mod:`jointwear.measurement.identifiability`)."""
         return [
             _misfit_message(case, fit)
             for case, fit in zip(self.cases, self.fits, strict=True)
             if not fit.explained
+        ] + [
+            f"calibrate: {key} is not identifiable from these cases: {reason}"
+            for key, reason in self.not_identifiable.items()
         ]
 
     def summary(self) -> dict[str, Any]:
@@ -562,6 +568,7 @@ class ProfileCalibration:
                 "uncertainty": "s^2 (J^T J)^-1, centre and rotation profiled out",
                 "interval": "student-t on the fitting scale",
             },
+            "not_identifiable": dict(self.not_identifiable),
             "rms_residual": self.rms_residual,
             "residual_unit": "fraction of each case's measured peak",
             "evaluations": self.evaluations,
@@ -903,6 +910,7 @@ def calibrate_profiles(
         starts=starts,
         evaluations=objective.evaluations,
         simulations=objective.simulations,
+        not_identifiable=spread.not_identifiable,
     )
     for message in outcome.warnings:
         warnings.warn(message, FitMisfitWarning, stacklevel=2)
@@ -1154,6 +1162,7 @@ class _Spread:
     uncertainty: dict[str, float]
     intervals: dict[str, tuple[float, float]]
     correlation: FloatArray
+    not_identifiable: dict[str, str] = field(default_factory=dict)
 
     @classmethod
     def of(
@@ -1178,8 +1187,11 @@ class _Spread:
                 covariance = np.linalg.inv(jac.T @ jac) * float(r @ r) / dof
             except np.linalg.LinAlgError:
                 covariance = None
+        scales = {p.key: p.logarithmic for p in parameters}
         if covariance is None or not np.all(np.isfinite(covariance)):
-            return cls(uncertainty, intervals, correlation)
+            widths = {key: math.nan for key in keys}
+            flagged = not_identifiable(keys, jac, correlation, widths, scales)
+            return cls(uncertainty, intervals, correlation, flagged)
         quantile = float(stdtrit(dof, 0.5 + CONFIDENCE / 2))  # Student's t
         sigma_u = np.sqrt(np.maximum(np.diag(covariance), 0.0))
         with np.errstate(invalid="ignore", divide="ignore"):
@@ -1189,15 +1201,20 @@ class _Spread:
             if p.logarithmic:
                 spread = s * math.log(p.upper / p.lower)  # of ln(value)
                 uncertainty[p.key] = value * spread
-                intervals[p.key] = (
-                    value * math.exp(-quantile * spread),
-                    value * math.exp(quantile * spread),
-                )
+                # (a parameter the data do not fix can have a spread beyond any float)
+                factor = float(np.exp(min(quantile * spread, 700.0)))
+                intervals[p.key] = (value / factor, value * factor)
             else:
                 spread = s * (p.upper - p.lower)
                 uncertainty[p.key] = spread
                 intervals[p.key] = (value - quantile * spread, value + quantile * spread)
-        return cls(uncertainty, intervals, correlation)
+        # the half-widths on the fitting scale: of ln(value), or a fraction of the bounds
+        widths = {
+            p.key: quantile * s * (math.log(p.upper / p.lower) if p.logarithmic else 1.0)
+            for p, s in zip(parameters, sigma_u, strict=True)
+        }
+        flagged = not_identifiable(keys, jac, correlation, widths, scales)
+        return cls(uncertainty, intervals, correlation, flagged)
 
 
 def _cases_at(

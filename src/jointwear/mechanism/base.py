@@ -17,6 +17,8 @@ one per type:
 ``oscillating``   oscillating-bearing test, prescribed load
                   (:mod:`jointwear.mechanism.oscillating`)
 ``load-history``  one period of load read from a file (:mod:`jointwear.mechanism.history`)
+``duty-cycle``    several modes of the types above, each in a share of the cycles
+                  (:mod:`jointwear.mechanism.duty_cycle`)
 ================  =================================================================
 
 A new mechanism is one module (or package) with such an object and one line here.
@@ -117,6 +119,8 @@ MECHANISMS.add("slider-crank", SLIDER_CRANK)
 MECHANISMS.add("four-bar", FOUR_BAR)
 MECHANISMS.add("oscillating", OSCILLATING)
 MECHANISMS.add("load-history", LOAD_HISTORY)
+# (its modes are solved through cycles_of below: a lazy entry, not an import cycle)
+MECHANISMS.add_lazy("duty-cycle", "jointwear.mechanism.duty_cycle:DUTY_CYCLE")
 if set(MECHANISMS) != set(MECHANISM_TYPES):  # pragma: no cover - a programming error
     raise RuntimeError("mechanism registry and config schema disagree on the type names")
 

@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from jointwear.geometry.angles import wrap_angle
 
-__all__ = ["Diagnostic", "LoadCycle", "bushing_azimuth", "crank_extras"]
+__all__ = ["Diagnostic", "DutyModes", "LoadCycle", "bushing_azimuth", "crank_extras"]
 
 FloatArray = NDArray[np.float64]
 
@@ -103,6 +103,38 @@ class Diagnostic:
     long_name: str
 
 
+@dataclass(frozen=True)
+class DutyModes:
+    """The operating modes of a duty cycle, laid one after the other in one load cycle.
+
+    Mode ``i`` runs in a fraction ``shares[i]`` of the cycles; its steps are
+    ``starts[i]`` to ``starts[i + 1] - 1`` of the cycle, its own period ``periods[i]``.
+    The wear of a cycle is the share-weighted sum of the modes' wear: each step's
+    sliding distance is weighted by its mode's share (:meth:`LoadCycle.parts`).
+
+    Attributes
+    ----------
+    names : tuple of str
+        Name of each mode (its ``mechanism.type`` and index, ``"1:oscillating"``).
+    shares : tuple of float
+        Fraction of the cycles in which each mode runs [-]; they sum to one.
+    starts : tuple of int
+        First step of each mode in the cycle [-].
+    periods : tuple of float
+        Duration of each mode's own cycle [s].
+    """
+
+    names: tuple[str, ...]
+    shares: tuple[float, ...]
+    starts: tuple[int, ...]
+    periods: tuple[float, ...]
+
+    @property
+    def mean_period(self) -> float:
+        """Mean duration of a cycle, ``sum_i share_i T_i`` [s]."""
+        return float(sum(s * t for s, t in zip(self.shares, self.periods, strict=True)))
+
+
 @dataclass(frozen=True, eq=False)
 class LoadCycle:
     """Load on a clearance joint over one period of its motion.
@@ -144,6 +176,8 @@ class LoadCycle:
         Mechanism-specific per-step series (crank torque, slider position, ...).
     extras : mapping of str to scalar
         Mechanism-specific scalars for the ``dynamics`` summary (units in the keys).
+    duty : DutyModes, optional
+        The modes of a duty cycle laid one after the other (``None``: one mode).
     """
 
     time: FloatArray
@@ -159,6 +193,7 @@ class LoadCycle:
     converged: bool = True
     diagnostics: Mapping[str, Diagnostic] = field(default_factory=dict)
     extras: Mapping[str, Any] = field(default_factory=dict)
+    duty: DutyModes | None = None
 
     def __post_init__(self) -> None:
         from jointwear.errors import DataError
@@ -237,6 +272,47 @@ class LoadCycle:
         return replace(self, load=np.asarray(load, dtype=float))
 
     # ------------------------------------------------------------ derived
+    def parts(self) -> list[tuple[float, LoadCycle]]:
+        """The cycle's modes: ``(share [-], that mode's own load cycle)`` each.
+
+        A cycle of one mode is ``[(1.0, self)]``. A per-step quantity of a duty cycle
+        (a sliding distance) is computed on each mode's own cycle (a change of the load
+        azimuth closes over the mode's period, not into the next mode) and weighted by
+        the mode's share.
+        """
+        duty = self.duty
+        if duty is None:
+            return [(1.0, self)]
+        ends = (*duty.starts[1:], self.steps)
+        return [
+            (share, self._mode(start, end, period))
+            for share, start, end, period in zip(
+                duty.shares, duty.starts, ends, duty.periods, strict=True
+            )
+        ]
+
+    def _mode(self, start: int, end: int, period: float) -> LoadCycle:
+        """Steps ``start`` to ``end - 1`` as a cycle of their own, of ``period`` [s]."""
+        part = slice(start, end)
+        return LoadCycle(
+            time=self.time[part] - self.time[start],
+            load=self.load[part],
+            azimuth=self.azimuth[part],
+            relative_rotation=self.relative_rotation[part],
+            period=period,
+            mechanism=self.mechanism,
+            model=self.model,
+            joint=self.joint,
+            lost_steps=self.lost_steps[part],
+        )
+
+    @property
+    def step_share(self) -> FloatArray:
+        """Fraction of the cycles in which each step runs [-] (ones for one mode)."""
+        if self.duty is None:
+            return np.ones(self.steps)
+        return np.concatenate([np.full(part.steps, share) for share, part in self.parts()])
+
     @property
     def steps(self) -> int:
         """Number of steps ``N`` per cycle."""
@@ -279,12 +355,19 @@ class LoadCycle:
 
     @property
     def total_relative_rotation(self) -> float:
-        """Sum of the absolute relative-rotation increments over the cycle [rad]."""
+        """Sum of the absolute relative-rotation increments over the cycle [rad] (of a
+        duty cycle: weighted by the modes' shares, the mean over its cycles)."""
+        if self.duty is not None:
+            return float(np.sum(np.abs(self.relative_rotation) * self.step_share))
         return float(np.sum(np.abs(self.relative_rotation)))
 
     @property
     def mean_load(self) -> float:
-        """Time mean of the load magnitude [N]."""
+        """Time mean of the load magnitude [N] (of a duty cycle: over its modes' time)."""
+        if self.duty is not None:
+            parts = self.parts()
+            time = sum(share * part.period for share, part in parts)
+            return sum(share * part.period * part.mean_load for share, part in parts) / time
         duration = self.step_duration
         if np.ptp(duration) <= 1e-12 * duration.mean():
             return float(np.mean(self.load))
@@ -298,7 +381,7 @@ class LoadCycle:
         load that, applied over the total sliding distance, wears as much. Falls
         back to the time mean if pin and bushing do not rotate relatively.
         """
-        weight = np.abs(self.relative_rotation)
+        weight = np.abs(self.relative_rotation) * self.step_share
         total = weight.sum()
         if total == 0.0:
             return self.mean_load

@@ -307,6 +307,8 @@ def _attributes(record: RunRecord) -> dict[str, Any]:
         "dynamics_model": cycle.model,
         "joint": cycle.joint,
         "period_s": cycle.period,
+        # a duty cycle's modes one after the other last period_s; a cycle, on average, this
+        **({"mean_cycle_duration_s": cycle.duty.mean_period} if cycle.duty else {}),
         "stopped_by": record.state.stopped_by or "",
         "dynamics_update": str(config.simulation.dynamics_update),
         "runtime_s": record.runtime,

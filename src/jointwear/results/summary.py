@@ -43,7 +43,9 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
     }
     revolutions = revolution_number(dataset["update_revolution"].values[-1])
     stopped_by = str(dataset.attrs.get("stopped_by", "")) or None
-    period = float(dataset.attrs.get("period_s", math.nan))
+    period = float(
+        dataset.attrs.get("mean_cycle_duration_s", dataset.attrs.get("period_s", math.nan))
+    )
     updates = dataset.sizes.get("dynamics_update", 1)
     out.update(
         {

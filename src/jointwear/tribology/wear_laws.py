@@ -20,6 +20,10 @@ one, and :class:`~jointwear.simulation.Simulation` also takes any callable.
     ``wear.friction_coefficient`` [-]. With a constant ``mu`` it is Archard's law with
     ``K_d = k_E mu``; the two part where the friction coefficient changes with the
     conditions (a callable ``mu(p)`` here).
+``power-law``, ``running-in``, ``tabulated``
+    Archard's coefficient following the pressure and sliding speed, or falling while
+    the joint runs in (:mod:`jointwear.tribology.operating`); these laws are called
+    with the run's :class:`~jointwear.tribology.operating.WearConditions` as well.
 
 References
 ----------
@@ -39,7 +43,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.registry import Registry
-from jointwear.tribology import archard
+from jointwear.tribology import archard, operating
 
 if TYPE_CHECKING:
     from jointwear.config import MaterialConfig, WearConfig
@@ -106,6 +110,9 @@ WEAR_LAWS: Registry[Callable[[WearConfig, MaterialConfig], WearLaw]] = Registry(
 )
 WEAR_LAWS.add("archard", _archard)
 WEAR_LAWS.add("energy", _energy)
+WEAR_LAWS.add("power-law", operating.power_law)
+WEAR_LAWS.add("running-in", operating.running_in)
+WEAR_LAWS.add("tabulated", operating.tabulated)
 
 
 def wear_law(

@@ -165,7 +165,8 @@ def case_checks(result: Any) -> dict[str, Any]:
         engineering_checks(result.joint_data(joint if len(joints) > 1 else None), result.config)
         for joint in joints
     ]
-    out: dict[str, Any] = {"period_s": float(result.joint_data().attrs["period_s"])}
+    attrs = result.joint_data().attrs  # (a duty cycle's: the mean duration of a cycle)
+    out: dict[str, Any] = {"period_s": float(attrs.get("mean_cycle_duration_s", attrs["period_s"]))}
     ratios = []
     for check, column in CHECK_COLUMNS.items():
         values = [c[check]["value"] for c in checked if math.isfinite(c[check]["value"])]
