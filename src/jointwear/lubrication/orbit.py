@@ -58,7 +58,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
-from scipy.interpolate import CubicSpline, RectBivariateSpline
+from scipy.interpolate import CubicSpline, RectBivariateSpline, bisplev
 from scipy.optimize import brentq, root
 
 from jointwear.errors import ConvergenceError
@@ -233,6 +233,21 @@ def shape_table(model: str, ratio: float) -> RectBivariateSpline:
     )
 
 
+def table_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tuple[float, float]]:
+    """:func:`film_shape` of a tabulated model for one state (:func:`scipy.interpolate.bisplev`)."""
+    splines = shape_table(model, ratio)
+    knots = [(*spline.tck, *spline.degrees) for spline in splines]
+
+    def shape(eps: float, beta: float) -> tuple[float, float]:
+        log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), LOG_GAP_MAX)
+        wrapped = math.remainder(beta, 2.0 * math.pi)
+        scale = (1.0 - eps * eps) ** 2.5
+        radial, tangential = (float(bisplev(log_gap, wrapped, tck)) / scale for tck in knots)
+        return radial, tangential
+
+    return shape
+
+
 def film_shape(model: str, ratio: float) -> Callable[[ArrayLike, ArrayLike], FloatArray]:
     """``G(eps, beta)`` of a film model at one ``L/D``, fast for few states [-].
 
@@ -307,7 +322,7 @@ class OrbitSolver:
         self.scalar_shape: Callable[[float, float], tuple[float, float]] = (
             (lambda eps, beta: short_shape_scalar(eps, beta, self.ratio))
             if model == "short"
-            else (lambda eps, beta: tuple(self.shape(eps, beta)))  # type: ignore[misc]
+            else table_shape_scalar(model, self.ratio)
         )
         #: the direction of motion found last: the next search starts there
         self.last_direction: float | None = None
