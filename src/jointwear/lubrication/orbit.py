@@ -26,8 +26,9 @@ integrated with :func:`scipy.integrate.solve_ivp` (LSODA, which switches to a st
 method where the asperities or a thin squeeze film make the orbit stiff) over whole
 cycles until the start of one cycle and its end agree within a tolerance (a fixed
 point of the cycle map; where plain repetition converges slowly, the fixed point is
-found with :func:`scipy.optimize.root`). The orbit's start is the quasi-static
-equilibrium of the first step.
+found with :func:`scipy.optimize.root`). The eccentricity is integrated in the
+stretched coordinate ``e / (1 - eps)`` (:func:`stretched`), in which the wall lies at
+infinity: the pin stays inside its clearance and the gap keeps a relative accuracy.
 
 Through a reversal of the sliding speed the wedge vanishes, but the squeeze film
 still holds the pin off the wall for a time of order ``mu L D (R/c)^2 / W``: the
@@ -107,7 +108,7 @@ class Orbit:
     Attributes
     ----------
     eccentricity_x, eccentricity_y : ndarray
-        Eccentricity ratio components ``e / c`` in the frame of the load [-].
+        Eccentricity ratio components ``e / c`` in the frame of the load's components [-].
     eccentricity_ratio : ndarray
         ``eps = |e| / c`` [-].
     asperity_force : ndarray
