@@ -54,7 +54,6 @@ from bisect import bisect_right
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cache
-from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -484,6 +483,76 @@ def unstretched(stretched_state: ArrayLike) -> FloatArray:
     return q / (1.0 + np.hypot(q[0], q[1]))
 
 
+class CycleMap:
+    """One cycle of the orbit, integrated in the stretched coordinate (:func:`stretched`).
+
+    Calling it with ``q(t_0)`` integrates the cycle with LSODA and returns ``q`` at the
+    samples and at the cycle's end, shape ``(2, M + 1)``; the last call's start and path
+    are kept (``start``, ``path``).
+
+    Parameters
+    ----------
+    solver : OrbitSolver
+        The joint, its film and its asperities.
+    time : array_like, shape (M,)
+        Times of the samples [s].
+    period : float
+        The cycle's duration [s].
+    load_x, load_y : array_like, shape (M,)
+        Load on the pin at ``time`` [N].
+    mean_speed : array_like, shape (M,)
+        ``(omega_pin + omega_bushing) / 2`` at ``time`` [rad/s].
+    """
+
+    def __init__(
+        self,
+        solver: OrbitSolver,
+        time: ArrayLike,
+        period: float,
+        load_x: ArrayLike,
+        load_y: ArrayLike,
+        mean_speed: ArrayLike,
+    ) -> None:
+        times = np.asarray(time, float)
+        samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
+        self.ends = np.append(times, times[0] + period)
+        # a periodic cubic spline: the integrator sees no kink at every sample
+        spline = CubicSpline(
+            self.ends,
+            np.concatenate([samples, samples[:, :1]], axis=1),
+            axis=1,
+            bc_type="periodic",
+        )
+        self.inputs_at = scalar_spline(spline)
+        self.solver = solver
+        self.start = np.zeros(2)
+        self.path = np.zeros((2, self.ends.size))
+
+    def right_hand_side(self, t: float, stretched_state: FloatArray) -> FloatArray:
+        """``dq/dt = v / (1 - eps) + eps (e_r . v) e_r / (1 - eps)^2`` [1/s]."""
+        load_x, load_y, speed = self.inputs_at(t)
+        state = unstretched(stretched_state)
+        velocity = self.solver.velocity(state, float(load_x), float(load_y), float(speed))
+        gap = 1.0 - math.hypot(state[0], state[1])
+        radial = (state @ velocity) / gap**2
+        return velocity / gap + radial * state
+
+    def __call__(self, initial: FloatArray) -> FloatArray:
+        solution = solve_ivp(
+            self.right_hand_side,
+            (self.ends[0], self.ends[-1]),
+            initial,
+            method="LSODA",
+            rtol=INTEGRATION_RTOL,
+            atol=INTEGRATION_ATOL,
+            t_eval=self.ends,
+        )
+        if not solution.success:
+            raise ConvergenceError(f"orbit: the integration failed ({solution.message})")
+        self.start, self.path = np.array(initial, float), solution.y
+        return solution.y
+
+
 def periodic_orbit(
     solver: OrbitSolver,
     time: ArrayLike,
@@ -528,41 +597,7 @@ def periodic_orbit(
     ConvergenceError
         When the orbit does not repeat within the cycles allowed.
     """
-    times = np.asarray(time, float)
-    samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
-    ends = np.append(times, times[0] + period)
-    # a periodic cubic spline: the integrator sees no kink at every sample
-    inputs = CubicSpline(
-        ends, np.concatenate([samples, samples[:, :1]], axis=1), axis=1, bc_type="periodic"
-    )
-
-    inputs_at = scalar_spline(inputs)
-
-    def right_hand_side(t: float, stretched: FloatArray) -> FloatArray:
-        load_xt, load_yt, speed = inputs_at(t)
-        state = unstretched(stretched)
-        velocity = solver.velocity(state, float(load_xt), float(load_yt), float(speed))
-        eps = math.hypot(state[0], state[1])
-        gap = 1.0 - eps
-        radial = (state @ velocity) / gap**2  # eps (e_r . v) / (1 - eps)^2 along e_r
-        return velocity / gap + radial * state
-
-    last: dict[str, Any] = {}
-
-    def cycle(initial: FloatArray) -> FloatArray:
-        solution = solve_ivp(
-            right_hand_side,
-            (ends[0], ends[-1]),
-            initial,
-            method="LSODA",
-            rtol=INTEGRATION_RTOL,
-            atol=INTEGRATION_ATOL,
-            t_eval=ends,
-        )
-        if not solution.success:
-            raise ConvergenceError(f"orbit: the integration failed ({solution.message})")
-        last.update(start=np.array(initial, float), path=solution.y)
-        return solution.y
+    cycle = CycleMap(solver, time, period, load_x, load_y, mean_speed)
 
     # the gap matters against the roughness: a pin on its asperities needs no finer
     floor = GAP_FLOOR * solver.roughness / solver.clearance
@@ -596,10 +631,10 @@ def periodic_orbit(
             options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS},
         )
         cycles += int(found.nfev)
-        if not np.array_equal(last["start"], found.x):
+        if not np.array_equal(cycle.start, found.x):
             cycle(found.x)
             cycles += 1
-        path = last["path"]
+        path = cycle.path
     error, allowed = mismatch(path)
     if error > allowed:
         raise ConvergenceError(
