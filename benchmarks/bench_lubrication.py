@@ -31,7 +31,10 @@ CONFIG = Path(__file__).resolve().parents[1] / "examples" / "paper" / "table3_wi
 #: the lubricated cases: film model and oil
 CASES = {
     "dry": [],
-    "short bearing, 0.3 Pa s": ["lubrication.model=short-bearing", "lubrication.viscosity=0.3 Pa*s"],
+    "short bearing, 0.3 Pa s": [
+        "lubrication.model=short-bearing",
+        "lubrication.viscosity=0.3 Pa*s",
+    ],
     "short bearing, 0.03 Pa s": [
         "lubrication.model=short-bearing",
         "lubrication.viscosity=0.03 Pa*s",
@@ -48,7 +51,8 @@ CASES = {
 def one_revolution(overrides: list[str]) -> float:
     """Seconds of ``Simulation.run()`` for one revolution (built outside the timer)."""
     config = load_config(
-        CONFIG, overrides=["simulation.revolutions=1", "simulation.update_contour=false", *overrides]
+        CONFIG,
+        overrides=["simulation.revolutions=1", "simulation.update_contour=false", *overrides],
     )
     simulation = Simulation(config)
     began = time.perf_counter()

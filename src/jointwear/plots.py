@@ -14,7 +14,7 @@ draws and writes them all:
 * ``joint_load``: load magnitude and azimuth over a cycle;
 * ``wear_history``: peak, width and mass vs revolutions;
 * ``journal_orbit`` and ``film``, of a lubricated run only
-  (:mod:`jointwear.results.film_figures`).
+  (:mod:`jointwear.lubrication.figures`).
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from matplotlib.figure import Figure
 from jointwear.display import depth_unit, revolutions_text
 from jointwear.errors import JointwearError
 from jointwear.io import atomic_path
-from jointwear.results.film_figures import (
+from jointwear.lubrication.figures import (
     LUBRICATION_FIGURES,
     film_figure,
     is_lubricated,

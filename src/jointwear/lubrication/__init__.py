@@ -13,8 +13,12 @@ plain, vectorised SI functions, each checked against closed forms or published v
   film parameter and the lubrication regime;
 * :mod:`jointwear.lubrication.mixed` -- load sharing between film and asperities
   under a steady load;
+* :mod:`jointwear.lubrication.orbit` -- the pin's periodic orbit over a load cycle
+  (mobility method with wedge and squeeze, asperities in the balance);
 * :mod:`jointwear.lubrication.lubricants` -- named lubricants and their viscosity
   at a temperature (ASTM D341).
 
-Runs do not call these models yet: they are the library the lubricated run will use.
+A lubricated run (``[lubrication]`` with a film model) follows the orbit and shares
+each step's load between film, asperities and bulk in
+:mod:`jointwear.contact.lubricated`.
 """

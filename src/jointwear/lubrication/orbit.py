@@ -26,8 +26,9 @@ integrated with :func:`scipy.integrate.solve_ivp` (LSODA, which switches to a st
 method where the asperities or a thin squeeze film make the orbit stiff) over whole
 cycles until the start of one cycle and its end agree within a tolerance (a fixed
 point of the cycle map; where plain repetition converges slowly, the fixed point is
-found with :func:`scipy.optimize.root`). The orbit's start is the quasi-static
-equilibrium of the first step.
+found with :func:`scipy.optimize.root`). The eccentricity is integrated in the
+stretched coordinate ``e / (1 - eps)`` (:func:`stretched`), in which the wall lies at
+infinity: the pin stays inside its clearance and the gap keeps a relative accuracy.
 
 Through a reversal of the sliding speed the wedge vanishes, but the squeeze film
 still holds the pin off the wall for a time of order ``mu L D (R/c)^2 / W``: the
@@ -53,12 +54,11 @@ from bisect import bisect_right
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cache
-from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
-from scipy.interpolate import CubicSpline, RectBivariateSpline
+from scipy.interpolate import CubicSpline, RectBivariateSpline, bisplev
 from scipy.optimize import brentq, root
 
 from jointwear.errors import ConvergenceError
@@ -107,7 +107,7 @@ class Orbit:
     Attributes
     ----------
     eccentricity_x, eccentricity_y : ndarray
-        Eccentricity ratio components ``e / c`` in the frame of the load [-].
+        Eccentricity ratio components ``e / c`` in the frame of the load's components [-].
     eccentricity_ratio : ndarray
         ``eps = |e| / c`` [-].
     asperity_force : ndarray
@@ -233,6 +233,21 @@ def shape_table(model: str, ratio: float) -> RectBivariateSpline:
     )
 
 
+def table_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tuple[float, float]]:
+    """:func:`film_shape` of a tabulated model for one state (:func:`scipy.interpolate.bisplev`)."""
+    splines = shape_table(model, ratio)
+    knots = [(*spline.tck, *spline.degrees) for spline in splines]
+
+    def shape(eps: float, beta: float) -> tuple[float, float]:
+        log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), LOG_GAP_MAX)
+        wrapped = math.remainder(beta, 2.0 * math.pi)
+        scale = (1.0 - eps * eps) ** 2.5
+        radial, tangential = (float(bisplev(log_gap, wrapped, tck)) / scale for tck in knots)
+        return radial, tangential
+
+    return shape
+
+
 def film_shape(model: str, ratio: float) -> Callable[[ArrayLike, ArrayLike], FloatArray]:
     """``G(eps, beta)`` of a film model at one ``L/D``, fast for few states [-].
 
@@ -307,7 +322,7 @@ class OrbitSolver:
         self.scalar_shape: Callable[[float, float], tuple[float, float]] = (
             (lambda eps, beta: short_shape_scalar(eps, beta, self.ratio))
             if model == "short"
-            else (lambda eps, beta: tuple(self.shape(eps, beta)))  # type: ignore[misc]
+            else table_shape_scalar(model, self.ratio)
         )
         #: the direction of motion found last: the next search starts there
         self.last_direction: float | None = None
@@ -468,6 +483,76 @@ def unstretched(stretched_state: ArrayLike) -> FloatArray:
     return q / (1.0 + np.hypot(q[0], q[1]))
 
 
+class CycleMap:
+    """One cycle of the orbit, integrated in the stretched coordinate (:func:`stretched`).
+
+    Calling it with ``q(t_0)`` integrates the cycle with LSODA and returns ``q`` at the
+    samples and at the cycle's end, shape ``(2, M + 1)``; the last call's start and path
+    are kept (``start``, ``path``).
+
+    Parameters
+    ----------
+    solver : OrbitSolver
+        The joint, its film and its asperities.
+    time : array_like, shape (M,)
+        Times of the samples [s].
+    period : float
+        The cycle's duration [s].
+    load_x, load_y : array_like, shape (M,)
+        Load on the pin at ``time`` [N].
+    mean_speed : array_like, shape (M,)
+        ``(omega_pin + omega_bushing) / 2`` at ``time`` [rad/s].
+    """
+
+    def __init__(
+        self,
+        solver: OrbitSolver,
+        time: ArrayLike,
+        period: float,
+        load_x: ArrayLike,
+        load_y: ArrayLike,
+        mean_speed: ArrayLike,
+    ) -> None:
+        times = np.asarray(time, float)
+        samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
+        self.ends = np.append(times, times[0] + period)
+        # a periodic cubic spline: the integrator sees no kink at every sample
+        spline = CubicSpline(
+            self.ends,
+            np.concatenate([samples, samples[:, :1]], axis=1),
+            axis=1,
+            bc_type="periodic",
+        )
+        self.inputs_at = scalar_spline(spline)
+        self.solver = solver
+        self.start = np.zeros(2)
+        self.path = np.zeros((2, self.ends.size))
+
+    def right_hand_side(self, t: float, stretched_state: FloatArray) -> FloatArray:
+        """``dq/dt = v / (1 - eps) + eps (e_r . v) e_r / (1 - eps)^2`` [1/s]."""
+        load_x, load_y, speed = self.inputs_at(t)
+        state = unstretched(stretched_state)
+        velocity = self.solver.velocity(state, float(load_x), float(load_y), float(speed))
+        gap = 1.0 - math.hypot(state[0], state[1])
+        radial = (state @ velocity) / gap**2
+        return velocity / gap + radial * state
+
+    def __call__(self, initial: FloatArray) -> FloatArray:
+        solution = solve_ivp(
+            self.right_hand_side,
+            (self.ends[0], self.ends[-1]),
+            initial,
+            method="LSODA",
+            rtol=INTEGRATION_RTOL,
+            atol=INTEGRATION_ATOL,
+            t_eval=self.ends,
+        )
+        if not solution.success:
+            raise ConvergenceError(f"orbit: the integration failed ({solution.message})")
+        self.start, self.path = np.array(initial, float), solution.y
+        return solution.y
+
+
 def periodic_orbit(
     solver: OrbitSolver,
     time: ArrayLike,
@@ -512,41 +597,7 @@ def periodic_orbit(
     ConvergenceError
         When the orbit does not repeat within the cycles allowed.
     """
-    times = np.asarray(time, float)
-    samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
-    ends = np.append(times, times[0] + period)
-    # a periodic cubic spline: the integrator sees no kink at every sample
-    inputs = CubicSpline(
-        ends, np.concatenate([samples, samples[:, :1]], axis=1), axis=1, bc_type="periodic"
-    )
-
-    inputs_at = scalar_spline(inputs)
-
-    def right_hand_side(t: float, stretched: FloatArray) -> FloatArray:
-        load_xt, load_yt, speed = inputs_at(t)
-        state = unstretched(stretched)
-        velocity = solver.velocity(state, float(load_xt), float(load_yt), float(speed))
-        eps = math.hypot(state[0], state[1])
-        gap = 1.0 - eps
-        radial = (state @ velocity) / gap**2  # eps (e_r . v) / (1 - eps)^2 along e_r
-        return velocity / gap + radial * state
-
-    last: dict[str, Any] = {}
-
-    def cycle(initial: FloatArray) -> FloatArray:
-        solution = solve_ivp(
-            right_hand_side,
-            (ends[0], ends[-1]),
-            initial,
-            method="LSODA",
-            rtol=INTEGRATION_RTOL,
-            atol=INTEGRATION_ATOL,
-            t_eval=ends,
-        )
-        if not solution.success:
-            raise ConvergenceError(f"orbit: the integration failed ({solution.message})")
-        last.update(start=np.array(initial, float), path=solution.y)
-        return solution.y
+    cycle = CycleMap(solver, time, period, load_x, load_y, mean_speed)
 
     # the gap matters against the roughness: a pin on its asperities needs no finer
     floor = GAP_FLOOR * solver.roughness / solver.clearance
@@ -580,10 +631,10 @@ def periodic_orbit(
             options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS},
         )
         cycles += int(found.nfev)
-        if not np.array_equal(last["start"], found.x):
+        if not np.array_equal(cycle.start, found.x):
             cycle(found.x)
             cycles += 1
-        path = last["path"]
+        path = cycle.path
     error, allowed = mismatch(path)
     if error > allowed:
         raise ConvergenceError(
