@@ -190,12 +190,22 @@ class Simulation:
             )
         start = time.perf_counter()
         records = [
-            Simulation(self.config, self.contact_model, cycle, joint, self.wear_law).record(
-                progress, pressures=pressures
-            )
+            self._joint_run(joint, cycle).record(progress, pressures=pressures)
             for joint, cycle in self.load_cycles.items()
         ]
         return WearResult.of_joints(self.config, records, time.perf_counter() - start)
+
+    def _joint_run(self, joint: str, cycle: LoadCycle) -> Simulation:
+        """The run of one of several clearance joints, starting from its unworn ``cycle``
+        (a given cycle where the dynamics are never solved again; else its own, solved
+        again on its own wear)."""
+        coupled = self.load.schedule.coupled
+        run = Simulation(
+            self.config, self.contact_model, None if coupled else cycle, joint, self.wear_law
+        )
+        if coupled:
+            run.load.use(cycle)
+        return run
 
     def record(
         self,
