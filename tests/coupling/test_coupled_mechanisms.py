@@ -53,17 +53,21 @@ FOUR_BAR_CASE = {
 }
 
 
+@pytest.mark.slow  # the four-bar's right-hand side is Python: ~1-5 min
 def test_four_bar_runs_coupled_contact_impact_on_its_worn_joint(capsys) -> None:
-    """The pin settles into the scar the rocker carries: the load gathers where the
-    bushing is worn, so the coupled scar is deeper and narrower than the ideal-joint
-    load's."""
+    """On the worn joint (its scar turning with the rocker) the free pin has more room:
+    its load spreads over the bushing, so the coupled scar is wider and the worn mass
+    larger than under the ideal-joint load, the direction the slider-crank shows
+    (docs/wear-feedback.md). Measured: 114 against 92 degrees, +1.2 % mass, +15 % peak;
+    contact-impact solved once on the unworn joint agrees with the ideal joint (0.2 %)."""
     plain = run_json(FOUR_BAR, {**FOUR_BAR_CASE, "dynamics.model": "massless-link"}, capsys)
     worn = run_json(FOUR_BAR, coupled(FOUR_BAR_CASE), capsys)
     assert plain["dynamics_updates"] == 0
-    assert worn["dynamics_updates"] == 2
+    assert worn["dynamics_updates"] == 1  # solved again before the second update
     assert worn["mechanism"] == "four-bar"
+    assert worn["wear_width_deg"] > plain["wear_width_deg"] + 5.0
+    assert worn["wear_mass_kg"] > plain["wear_mass_kg"]
     assert worn["peak_wear_depth_m"] > plain["peak_wear_depth_m"]
-    assert worn["wear_width_deg"] < plain["wear_width_deg"]
 
 
 OSCILLATING_CASE = {
@@ -87,9 +91,9 @@ def test_oscillating_bearing_runs_coupled_contact_impact(capsys) -> None:
     about ``1 - 1 / sqrt(1 + mu^2)`` (the normal force)."""
     plain = run_json(OSCILLATING, OSCILLATING_CASE, capsys)
     worn = run_json(OSCILLATING, coupled(OSCILLATING_CASE), capsys)
-    assert worn["dynamics_updates"] == 2
+    assert worn["dynamics_updates"] == 1
     assert worn["wear_width_deg"] > plain["wear_width_deg"] + 10.0
-    assert worn["peak_wear_depth_m"] < 0.9 * plain["peak_wear_depth_m"]
+    assert worn["peak_wear_depth_m"] < 0.95 * plain["peak_wear_depth_m"]
     assert worn["wear_mass_kg"] / plain["wear_mass_kg"] == pytest.approx(1 / 1.04**0.5, rel=0.02)
 
 
@@ -134,6 +138,7 @@ def test_every_suggested_setting_runs(paper_config: Config, bushing_body: str) -
             assert result["dynamics_updates"] >= 1
 
 
+@pytest.mark.slow  # ~1-2 min
 def test_four_bar_suggestions_run() -> None:
     """The four-bar's warnings (wear past the clearance) name settings that run."""
     config = load_config(
