@@ -168,6 +168,55 @@ def bench_integration(quick: bool) -> None:
         row(f"one right-hand-side call, {name}", f"{seconds * 1e6:.2f} us")
 
 
+# ---------------------------------------------------------------- worn joint
+
+#: the separation-prone slider-crank of docs/wear-feedback.md (push spring, 1 N preload,
+#: 240 rpm, 0.3 kg rod), the coupled run's dynamics
+SEPARATING = {
+    "mechanism.spring_mode": "push",
+    "mechanism.spring_preload": "1 N",
+    "mechanism.crank_speed": "240 rpm",
+    "mechanism.rod_mass": "0.3 kg",
+    "simulation.steps_per_revolution": 180,
+}
+
+
+def bench_worn(quick: bool) -> None:
+    """One solve of the dynamics on a worn contour (what a coupled run repeats), per case."""
+    from jointwear.mechanism.stage import load_cycles
+
+    nodes = 360
+    theta = 2.0 * np.pi * np.arange(nodes) / nodes
+    # a scar 30 um deep (0.6 of the clearance) where the separating joint's load sits
+    scar = 3e-5 * np.exp(-(np.angle(np.exp(1j * (theta - 2.0))) ** 2) / 0.5)
+    cases = {
+        "separation-prone slider-crank (compiled RHS)": paper(**SEPARATING),
+        "four-bar, coupler-rocker (Python RHS)": load_config(
+            REPO / "examples" / "four_bar.toml",
+            overrides={
+                "dynamics.model": "contact-impact",
+                "mechanism.clearance_joint": "coupler-rocker",
+                "simulation.steps_per_revolution": 180,
+            },
+        ),
+    }
+    repeat = 2 if quick else 5
+    for name, config in cases.items():
+        load_cycles(config, wear_depth=scar)  # compile or load the kernel, warm caches
+        walls = []
+        for _ in range(repeat):
+            w0 = time.perf_counter()
+            cycle = next(iter(load_cycles(config, wear_depth=scar).values()))
+            walls.append(time.perf_counter() - w0)
+        extras = cycle.extras
+        row(
+            f"one solve on a worn contour: {name}",
+            f"{np.median(walls) * 1e3:.0f} ms ({extras['rhs_evaluations']} RHS calls, "
+            f"{extras['impacts']} impacts)",
+            "<= 60 ms",
+        )
+
+
 # ---------------------------------------------------------------- start-up
 
 
@@ -206,10 +255,10 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer repeats")
     parser.add_argument(
-        "--only", nargs="*", default=None, help="sections: revolutions integration start"
+        "--only", nargs="*", default=None, help="sections: revolutions integration worn start"
     )
     args = parser.parse_args()
-    chosen = args.only or ["revolutions", "integration", "start"]
+    chosen = args.only or ["revolutions", "integration", "worn", "start"]
     if ci.impact_kernel() is None:
         raise SystemExit("bench_dynamics: needs numba (and JOINTWEAR_NO_NUMBA unset)")
     load = os.getloadavg()

@@ -42,6 +42,8 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
             "jointwear.interrupts",
             "jointwear.io",
             "jointwear.solvers",
+            # numba's compile time in this process (imports numba only when asked)
+            "jointwear.compile_time",
             "jointwear.state",
             # the materials library: named materials that configs refer to
             "jointwear.materials",

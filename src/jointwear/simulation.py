@@ -185,12 +185,20 @@ class Simulation:
             )
         start = time.perf_counter()
         records = [
-            Simulation(self.config, self.contact_model, cycle, joint, self.wear_law).record(
-                progress, pressures=pressures
-            )
+            self._joint_run(joint, cycle).record(progress, pressures=pressures)
             for joint, cycle in self.load.cycles.items()
         ]
         return WearResult.of_joints(self.config, records, time.perf_counter() - start)
+
+    def _joint_run(self, joint: str, cycle: LoadCycle) -> Simulation:
+        """One of several joints' runs from its unworn ``cycle`` (coupled: solved again)."""
+        coupled = self.load.schedule.coupled
+        run = Simulation(
+            self.config, self.contact_model, None if coupled else cycle, joint, self.wear_law
+        )
+        if coupled:
+            run.load.use(cycle)
+        return run
 
     def record(
         self,

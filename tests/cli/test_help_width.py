@@ -21,6 +21,7 @@ COMMANDS = [
     "life",
     "mechanisms",
     "sweep",
+    "warm-up",
 ]
 
 

@@ -28,6 +28,7 @@ from jointwear.cli import sweep_cmd  # noqa: F401  isort: skip
 from jointwear.cli import life_cmd  # noqa: F401  isort: skip
 from jointwear.cli import sensitivity_cmd  # noqa: F401  isort: skip
 from jointwear.cli import materials_cmd  # noqa: F401  isort: skip
+from jointwear.cli import warm_up_cmd  # noqa: F401  isort: skip
 
 __all__ = ["app", "main"]
 

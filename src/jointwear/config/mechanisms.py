@@ -19,6 +19,7 @@ from jointwear.config.fields import (
     Force,
     Inertia,
     Length,
+    Mass,
     NonNegMass,
     Section,
     Stiffness,
@@ -207,6 +208,8 @@ class OscillatingConfig(Section):
     load_amplitude: Force = 0.0
     load_harmonic: Annotated[int, Field(ge=1, le=1000)] = 1
     load_phase: Annotated[float, si("angle"), Field(ge=-4 * math.pi, le=4 * math.pi)] = 0.0
+    #: mass moving with the pin (pin and loading arm): the contact-impact model's inertia
+    pin_mass: Mass = 0.1
 
     @model_validator(mode="after")
     def _load_positive(self) -> OscillatingConfig:
@@ -267,7 +270,7 @@ SINGLE_TYPES: tuple[type[Section], ...] = (
 )
 
 #: mechanism types whose load comes from dynamics (the others prescribe it)
-DYNAMIC_TYPES: tuple[str, ...] = ("slider-crank", "four-bar")
+DYNAMIC_TYPES: tuple[str, ...] = ("slider-crank", "four-bar", "oscillating")
 
 #: how far the shares of a duty cycle's modes may sum from one [-]
 DUTY_SHARE_TOLERANCE = 1e-9

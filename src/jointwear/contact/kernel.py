@@ -76,6 +76,9 @@ def _compiled():
         return None
     if _COMPILED is None:
         try:
+            from jointwear.compile_time import watch_compiles
+
+            watch_compiles()
             from jointwear.contact import _compiled as module
         except ImportError:
             module = False

@@ -27,7 +27,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear.mechanism.cycle import Diagnostic, LoadCycle
+from jointwear.mechanism.impact.revolution import ContactImpactSolution
 from jointwear.mechanism.inputs import MechanismInputs
+from jointwear.mechanism.oscillating_impact import oscillating_contact_impact
 
 __all__ = ["OSCILLATING", "OscillatingMechanism", "oscillating_cycle"]
 
@@ -79,16 +81,44 @@ def oscillating_cycle(inputs: MechanismInputs) -> dict[str, LoadCycle]:
 
 
 class OscillatingMechanism:
-    """The oscillating bearing as a mechanism type (:class:`jointwear.mechanism.base.Mechanism`)."""
+    """The oscillating bearing as a mechanism type (:class:`jointwear.mechanism.base.Mechanism`).
+
+    The load is prescribed (the pin on the wall along the load, whatever
+    ``dynamics.model`` names) unless ``dynamics.model = "contact-impact"``: then the
+    loaded pin is free in the clearance (:mod:`jointwear.mechanism.oscillating_impact`).
+    """
 
     description = "oscillating-bearing test: pin swinging +-amplitude under a radial load"
-    models = ("prescribed",)
+    models = ("prescribed", "contact-impact")
 
     def load_cycles(
         self, inputs: MechanismInputs, wear_depth: NDArray[np.float64] | None = None
     ) -> dict[str, LoadCycle]:
-        """:func:`oscillating_cycle`; a prescribed load does not depend on the wear [m]."""
+        """:func:`oscillating_cycle`, independent of the wear; with contact–impact the
+        free pin's load on the bushing worn by ``wear_depth`` [m]."""
+        if inputs.dynamics.model == "contact-impact":
+            return {"bearing": self.contact_impact(inputs, wear_depth).load_cycle()}
         return oscillating_cycle(inputs)
+
+    def contact_impact(
+        self,
+        inputs: MechanismInputs,
+        wear_depth: NDArray[np.float64] | None = None,
+        compare: bool = True,
+    ) -> ContactImpactSolution:
+        """The free pin's solution (:func:`.oscillating_impact.oscillating_contact_impact`).
+
+        Parameters
+        ----------
+        inputs : MechanismInputs
+            With the joint's elastic law.
+        wear_depth : ndarray, shape (N,), optional
+            Wear depth of the bushing [m]; ``None``: the unworn joint.
+        compare : bool
+            Also report the difference from the prescribed load.
+        """
+        prescribed = oscillating_cycle(inputs)["bearing"]
+        return oscillating_contact_impact(inputs, prescribed, wear_depth, compare)
 
 
 #: the registry entry

@@ -5,7 +5,7 @@
 :mod:`.kinematics`          coupler and rocker angles, rates, accelerations
 :mod:`.dynamics`            inverse dynamics with ideal joints
 :mod:`.massless_link`       the massless-link model: the ideal-joint reaction
-:mod:`.contact_impact`      the contact–impact model: the pin free in one joint
+:mod:`.contact_impact`      the contact–impact model: the pin free in a joint
 :mod:`.joint_load`          a joint's force as a load cycle in the bushing frame
 ==========================  ===========================================================
 
@@ -14,10 +14,11 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 from numpy.typing import NDArray
 
-from jointwear.errors import ConfigError
 from jointwear.mechanism.cycle import LoadCycle
 from jointwear.mechanism.four_bar.contact_impact import four_bar_contact_impact
 from jointwear.mechanism.four_bar.geometry import check_four_bar
@@ -25,7 +26,7 @@ from jointwear.mechanism.four_bar.massless_link import massless_link_cycles
 from jointwear.mechanism.impact.revolution import ContactImpactSolution
 from jointwear.mechanism.inputs import MechanismInputs
 
-__all__ = ["FOUR_BAR", "FourBarMechanism", "check_four_bar"]
+__all__ = ["FOUR_BAR", "FourBarMechanism", "check_four_bar", "single_joints"]
 
 
 class FourBarMechanism:
@@ -41,14 +42,16 @@ class FourBarMechanism:
 
         ``massless-link``: the ideal-joint reaction at each joint (the clearance's
         ``O(c / l)`` effect on the kinematics is neglected, and so is the wear);
-        ``contact-impact``: the pin free in the clearance of the single configured joint.
+        ``contact-impact``: the pin free in the clearance of each joint in turn, the
+        other joints ideal (:func:`single_joints`), on its worn contour.
 
         Parameters
         ----------
         inputs : MechanismInputs
             The four-bar's section, the joint, the dynamics settings.
         wear_depth : ndarray, shape (N,), optional
-            Wear depth of the bushing [m]; ``None``: the unworn joint.
+            Wear depth of the bushing, in the frame of the body that carries it [m]
+            (every joint's: a run re-solves one joint at a time); ``None``: unworn.
 
         Returns
         -------
@@ -56,17 +59,14 @@ class FourBarMechanism:
             Joint name -> load cycle (force of the pin on the bushing, its azimuth in
             the bushing body's frame, relative rotation pin - bushing per step), in the
             order of ``mechanism.clearance_joint``.
-
-        Raises
-        ------
-        ConfigError
-            Several clearance joints with ``contact-impact``, or contact-impact on a
-            worn joint.
         """
         if inputs.dynamics.model != "contact-impact":
             return massless_link_cycles(inputs)
-        cycle = self.contact_impact(inputs, wear_depth).load_cycle()
-        return {cycle.joint: cycle}
+        cycles = {}
+        for single in single_joints(inputs):
+            cycle = self.contact_impact(single, wear_depth).load_cycle()
+            cycles[cycle.joint] = cycle
+        return cycles
 
     def contact_impact(
         self,
@@ -81,18 +81,36 @@ class FourBarMechanism:
         inputs : MechanismInputs
             A four-bar with one clearance joint, with the joint's elastic law.
         wear_depth : ndarray, shape (N,), optional
-            Must be unworn (``None`` or zeros) [m]: the free pin meeting a worn
-            four-bar bushing is not modelled.
+            Wear depth of the bushing in its body's frame [m]; ``None``: unworn.
         compare : bool
             Also compute the massless-link load and report the difference.
         """
-        # the ideal-joint reactions do not depend on the clearance; the free pin would
-        if wear_depth is not None and np.any(wear_depth):
-            raise ConfigError(
-                "simulation.dynamics_update: contact-impact on a worn four-bar joint is not "
-                "modelled; use 'once' (or the slider-crank)"
-            )
-        return four_bar_contact_impact(inputs, compare)
+        return four_bar_contact_impact(inputs, compare, wear_depth)
+
+
+def single_joints(inputs: MechanismInputs) -> list[MechanismInputs]:
+    """One set of inputs per clearance joint, that joint the only one with clearance.
+
+    With several clearance joints each free pin is solved with the other joints
+    ideal: the joints do not interact through the loads (as in the massless-link
+    model, where each joint's load is the ideal-joint reaction), each meets its own
+    bushing.
+
+    Parameters
+    ----------
+    inputs : MechanismInputs
+        A four-bar with one or more clearance joints.
+    """
+    mech = inputs.mechanism
+    if len(mech.joints) == 1:
+        return [inputs]
+    return [
+        replace(
+            inputs,
+            mechanism=mech.model_copy(update={"clearance_joint": joint, "bushing_body": body}),
+        )
+        for joint, body in zip(mech.joints, mech.bushing_bodies, strict=True)
+    ]
 
 
 #: the registry entry

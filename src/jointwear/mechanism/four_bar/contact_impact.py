@@ -29,6 +29,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import ConfigError
+from jointwear.geometry.contour import BushingContour
 from jointwear.mechanism.four_bar.dynamics import (
     cross,
     inverse_dynamics,
@@ -39,6 +40,7 @@ from jointwear.mechanism.four_bar.geometry import JOINT_BODIES, FourBar
 from jointwear.mechanism.four_bar.joint_load import joint_cycle
 from jointwear.mechanism.four_bar.kinematics import four_bar_motion, ideal_motion
 from jointwear.mechanism.four_bar.massless_link import massless_link_cycles
+from jointwear.mechanism.impact.bushing_frame import contact_force_in_frame, to_bushing_frame
 from jointwear.mechanism.impact.integrator import ContactSystemBase
 from jointwear.mechanism.impact.joint_contact import JointContact
 from jointwear.mechanism.impact.revolution import (
@@ -49,7 +51,12 @@ from jointwear.mechanism.impact.revolution import (
 from jointwear.mechanism.impact.settings import ContactImpactSettings
 from jointwear.mechanism.inputs import MechanismInputs
 
-__all__ = ["FourBarContactSystem", "four_bar_contact", "four_bar_contact_impact"]
+__all__ = [
+    "FourBarContactSystem",
+    "four_bar_contact",
+    "four_bar_contact_impact",
+    "worn_bushing",
+]
 
 FloatArray = NDArray[np.float64]
 
@@ -100,10 +107,19 @@ class FourBarContactSystem(ContactSystemBase):
         the bushing is).
     joint : {"crank-coupler", "coupler-rocker", "rocker-ground"}
         The clearance joint.
+    bushing_body : str, optional
+        The body that carries the bushing (default: the joint's second body). A worn
+        bushing (``contact`` with a worn contour) turns with it: the contact is then
+        evaluated in that body's frame (:meth:`bushing_offset`).
     """
 
     def __init__(
-        self, linkage: FourBar, crank_speed: float, contact: JointContact, joint: str
+        self,
+        linkage: FourBar,
+        crank_speed: float,
+        contact: JointContact,
+        joint: str,
+        bushing_body: str | None = None,
     ) -> None:
         if joint not in _CHAINS:
             raise ConfigError(f"mechanism.clearance_joint: unknown four-bar joint {joint!r}")
@@ -116,6 +132,15 @@ class FourBarContactSystem(ContactSystemBase):
         self._points = {name: (base, s2 * l2, s3 * l3) for name, (base, s2, s3) in chain.items()}
         first, second = JOINT_BODIES[joint]
         self._first, self._second = _ANGLE_INDEX[first], _ANGLE_INDEX[second]
+        body = second if bushing_body is None else bushing_body
+        # e points from the bushing's centre to the pin's when the bushing is on the
+        # second body, the other way when it is on the first
+        self._bushing_sign = 1.0 if body == second else -1.0
+        self._bushing_body = body
+        # only a worn bushing has a direction of its own (an unworn one is a circle,
+        # evaluated in the global frame as before)
+        worn = contact.contour is not None and bool(np.any(contact.contour.wear_depth))
+        self._worn_frame = worn
         inertia = np.diag([linkage.coupler_inertia, linkage.rocker_inertia])
         self._constant_mass = inertia
         self._masses = {"coupler": linkage.coupler_mass, "rocker": linkage.rocker_mass}
@@ -183,8 +208,8 @@ class FourBarContactSystem(ContactSystemBase):
         p1, v1, jac1, _ = self._point("first", t, q, qd)
         p2, v2, jac2, _ = self._point("second", t, q, qd)
         e, v = p1 - p2, v1 - v2
-        jx, jy, normal, tangential, nx, ny, delta, slip = self.contact.force(
-            e[0], e[1], v[0], v[1], self._spin(qd, e), impact_velocity
+        jx, jy, normal, tangential, nx, ny, delta, slip = self.contact_force(
+            t, q, e, v, self._spin(qd, e), impact_velocity
         )
         force = np.array([jx, jy])
         contact_point = p1 + self.contact.friction_arm * np.array([nx, ny])
@@ -213,6 +238,74 @@ class FourBarContactSystem(ContactSystemBase):
             "ex": float(e[0]),
             "ey": float(e[1]),
         }
+
+    def bushing_angle(self, t: float, q: FloatArray) -> float:
+        """Angle of the body that carries the bushing [rad] (crank ``omega t``, ground 0)."""
+        body = self._bushing_body
+        if body == "crank":
+            return self.omega * t
+        index = _ANGLE_INDEX[body]
+        return 0.0 if index is None else float(q[index])
+
+    def bushing_offset(self, t: float, q: FloatArray, ex: float, ey: float) -> tuple[float, float]:
+        """The pin centre's offset from the bushing centre in the bushing body's frame [m].
+
+        ``s R(-theta_b) e`` with ``theta_b`` the bushing body's angle and ``s = +1``
+        when the bushing is on the joint's second body (``e`` then points from the
+        bushing's centre to the pin's), ``-1`` on the first. The identity for an unworn
+        bushing (a circle looks the same in every frame).
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        q : ndarray, shape (2,)
+            Coupler and rocker angles [rad].
+        ex, ey : float
+            Clearance vector ``e`` in the global frame [m].
+        """
+        if not self._worn_frame:
+            return ex, ey
+        return to_bushing_frame(self.bushing_angle(t, q), self._bushing_sign, ex, ey)
+
+    def contact_force(
+        self, t: float, q: FloatArray, e: FloatArray, v: FloatArray, spin: float, approach: float
+    ) -> tuple[float, float, float, float, float, float, float, float]:
+        """:meth:`JointContact.force` for the clearance state, in the global frame.
+
+        On a worn bushing the contact is evaluated in the bushing body's frame, its
+        contour turning with it
+        (:func:`~jointwear.mechanism.impact.bushing_frame.contact_force_in_frame`).
+
+        Parameters
+        ----------
+        t : float
+            Time [s].
+        q : ndarray, shape (2,)
+            Coupler and rocker angles [rad].
+        e, v : ndarray, shape (2,)
+            Clearance vector [m] and its rate [m/s], global.
+        spin : float
+            :meth:`_spin` [rad/s].
+        approach : float
+            ``delta'^-`` of the current contact [m/s].
+        """
+        if not self._worn_frame:
+            return self.contact.force(e[0], e[1], v[0], v[1], spin, approach)
+        angle = self.bushing_angle(t, q)
+        return contact_force_in_frame(
+            self.contact, angle, self._bushing_sign, (e[0], e[1]), (v[0], v[1]), spin, approach
+        )
+
+    def gap(self, t: float, y: FloatArray) -> float:
+        """Signed penetration of the state, on the bushing's own contour [m]."""
+        ex, ey, _, _ = self.clearance_state(t, y)
+        return self.contact.gap(*self.bushing_offset(t, np.asarray(y[:2]), ex, ey))
+
+    def gap_and_rate(self, t: float, y: FloatArray) -> tuple[float, float]:
+        ex, ey, vx, vy = self.clearance_state(t, y)
+        gap = self.contact.gap(*self.bushing_offset(t, np.asarray(y[:2]), ex, ey))
+        return gap, self.contact.gap_rate(ex, ey, vx, vy)
 
     def _spin(self, qd: FloatArray, e: FloatArray) -> float:
         """The spin :meth:`JointContact.force` multiplies by ``rho`` for the slip [rad/s].
@@ -294,7 +387,7 @@ class FourBarContactSystem(ContactSystemBase):
             energy += 0.5 * m * float(vel @ vel) + m * lk.gravity * float(pos[1])
         energy += 0.5 * lk.rocker_spring_stiffness * (q[1] - lk.rocker_spring_angle) ** 2
         ex, ey, _, _ = self.clearance_state(t, y)
-        return float(energy + self.contact.potential(ex, ey))
+        return float(energy + self.contact.potential(*self.bushing_offset(t, q, ex, ey)))
 
     # -------------------------------------------------------------- start
     def initial_state(self, load: ArrayLike, steps: int = 64) -> FloatArray:
@@ -313,7 +406,12 @@ class FourBarContactSystem(ContactSystemBase):
         qd = np.array([motion.coupler_angular_velocity[0], motion.rocker_angular_velocity[0]])
         jx, jy = (float(v) for v in np.asarray(load, dtype=float))
         direction = math.atan2(jy, jx)
-        offset = self.contact.static_offset(math.hypot(jx, jy), direction)
+        seen = direction
+        if self._worn_frame:
+            # the same direction seen from the worn bushing, in its own frame
+            along = self.bushing_offset(0.0, q, math.cos(direction), math.sin(direction))
+            seen = math.atan2(along[1], along[0])
+        offset = self.contact.static_offset(math.hypot(jx, jy), seen)
         target = offset * np.array([math.cos(direction), math.sin(direction)])
         # Newton on the loop residual e(q) = target (a 2x2 system, well conditioned
         # away from the toggle positions a crank-rocker never reaches)
@@ -331,8 +429,28 @@ class FourBarContactSystem(ContactSystemBase):
         return np.array([q[0], q[1], qd[0], qd[1], 0.0])
 
 
+def worn_bushing(inputs: MechanismInputs, wear_depth: FloatArray | None) -> BushingContour | None:
+    """The worn bushing contour in its body's frame, or ``None`` for an unworn one.
+
+    Parameters
+    ----------
+    inputs : MechanismInputs
+        The joint's geometry.
+    wear_depth : ndarray, shape (N,) or None
+        Wear depth on the ``joint.nodes`` grid [m].
+    """
+    if wear_depth is None or not np.any(wear_depth):
+        return None
+    joint = inputs.joint
+    return BushingContour.from_wear_profile(joint.bushing_radius, wear_depth, joint.axial_length)
+
+
 def four_bar_contact(
-    inputs: MechanismInputs, settings: ContactImpactSettings, joint: str, bushing_body: str
+    inputs: MechanismInputs,
+    settings: ContactImpactSettings,
+    joint: str,
+    bushing_body: str,
+    contour: BushingContour | None = None,
 ) -> JointContact:
     """The contact force model of a four-bar joint.
 
@@ -346,6 +464,8 @@ def four_bar_contact(
         The clearance joint.
     bushing_body : str
         The body that carries its bushing.
+    contour : BushingContour, optional
+        The worn bushing in its body's frame (distributed laws: also an unworn one).
 
     Raises
     ------
@@ -362,10 +482,14 @@ def four_bar_contact(
     # -R_b with the bushing there (the slider-crank's rule keys on its own bodies)
     first = JOINT_BODIES[joint][0]
     arm = -geometry.bushing_radius if bushing_body == first else geometry.pin_radius
-    return JointContact.for_joint(settings, inputs.elastic, geometry, arm)
+    return JointContact.for_joint(settings, inputs.elastic, geometry, arm, contour)
 
 
-def four_bar_contact_impact(inputs: MechanismInputs, compare: bool = True) -> ContactImpactSolution:
+def four_bar_contact_impact(
+    inputs: MechanismInputs,
+    compare: bool = True,
+    wear_depth: FloatArray | None = None,
+) -> ContactImpactSolution:
     """Integrate the four-bar with a free pin in its clearance joint; one settled revolution.
 
     Parameters
@@ -375,6 +499,10 @@ def four_bar_contact_impact(inputs: MechanismInputs, compare: bool = True) -> Co
         its elastic law, the ``[dynamics]`` settings and the steps per revolution.
     compare : bool
         Also compute the massless-link load and report the difference.
+    wear_depth : ndarray, shape (N,), optional
+        Wear depth of the bushing on the ``joint.nodes`` grid, in the frame of the body
+        that carries it [m]: the pin meets the worn contour, which turns with that
+        body. ``None``: the unworn bushing.
 
     Returns
     -------
@@ -398,9 +526,8 @@ def four_bar_contact_impact(inputs: MechanismInputs, compare: bool = True) -> Co
     linkage = FourBar.from_config(mech)
     motion = ideal_motion(linkage, mech.crank_speed, steps)
     ideal = joint_force(inverse_dynamics(motion, linkage), joint)
-    system = FourBarContactSystem(
-        linkage, mech.crank_speed, four_bar_contact(inputs, settings, joint, bushing), joint
-    )
+    contact = four_bar_contact(inputs, settings, joint, bushing, worn_bushing(inputs, wear_depth))
+    system = FourBarContactSystem(linkage, mech.crank_speed, contact, joint, bushing)
     run = integrate_revolution(system, system.initial_state(ideal[0]), settings, steps)
 
     states = run.states

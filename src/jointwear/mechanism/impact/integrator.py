@@ -331,7 +331,12 @@ def _root(function: Callable[[float, FloatArray], float], dense: Any, t0: float,
     from scipy.optimize import brentq
 
     eps = float(np.finfo(float).eps)
-    return brentq(lambda t_: function(t_, dense(t_)), t0, t1, xtol=4 * eps, rtol=4 * eps)
+    try:
+        return brentq(lambda t_: function(t_, dense(t_)), t0, t1, xtol=4 * eps, rtol=4 * eps)
+    except ValueError:
+        # the step started on the zero (a state at rest on the wall): the dense output
+        # rounds its start to the far side, so there is no sign change to bracket
+        return t0
 
 
 def _integrate_segment(

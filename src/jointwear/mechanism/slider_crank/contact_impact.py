@@ -78,6 +78,7 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.errors import ConfigError, JointwearError
 from jointwear.geometry.contour import BushingContour
 from jointwear.mechanism.cycle import LoadCycle
+from jointwear.mechanism.impact.bushing_frame import contact_force_in_frame, to_bushing_frame
 from jointwear.mechanism.impact.integrator import ContactSystemBase
 from jointwear.mechanism.impact.joint_contact import JointContact
 from jointwear.mechanism.impact.revolution import (
@@ -127,6 +128,9 @@ def impact_kernel() -> Any:
 @functools.cache
 def _load_kernel() -> Any:
     try:
+        from jointwear.compile_time import watch_compiles
+
+        watch_compiles()
         from jointwear.mechanism.slider_crank import _contact_impact_kernel
     except ImportError:
         return None
@@ -147,6 +151,13 @@ class SliderCrankContactSystem(ContactSystemBase):
         Constant crank angular velocity ``omega`` [rad/s].
     contact : JointContact
         Contact force model of the joint.
+    compiled : bool, optional
+        Run the compiled right-hand side where it can (``None``), never (``False``) or
+        insist on it (``True``).
+    rod_bushing : bool
+        The bushing is in the rod end. Worn, it turns with the rod: the contact is
+        then evaluated in the rod's frame
+        (:mod:`jointwear.mechanism.impact.bushing_frame`), by the Python right-hand side.
     """
 
     def __init__(
@@ -155,10 +166,14 @@ class SliderCrankContactSystem(ContactSystemBase):
         crank_speed: float,
         contact: JointContact,
         compiled: bool | None = None,
+        rod_bushing: bool = False,
     ) -> None:
         self.mechanism = mechanism
         self.omega = float(crank_speed)
         self.contact = contact
+        # a worn bushing in the rod end turns with the rod (an unworn one is a circle)
+        worn = contact.contour is not None and bool(np.any(contact.contour.wear_depth))
+        self._rod_frame = rod_bushing and worn
         m = mechanism
         self._inertia_b = m.rod_inertia + 0.25 * m.rod_mass * m.rod_length**2
         if self._inertia_b <= 0.0 or m.slider_mass <= 0.0:
@@ -168,7 +183,8 @@ class SliderCrankContactSystem(ContactSystemBase):
             )
         # the compiled right-hand side covers the point laws (the distributed laws sum
         # over the contour's nodes with NumPy)
-        kernel = impact_kernel() if compiled is not False and not contact.distributed else None
+        plain = not contact.distributed and not self._rod_frame
+        kernel = impact_kernel() if compiled is not False and plain else None
         if compiled and kernel is None:
             raise ConfigError(
                 "dynamics: the compiled right-hand side needs numba and a point force law"
@@ -231,9 +247,19 @@ class SliderCrankContactSystem(ContactSystemBase):
         vy = w * m.crank_length * cphi + m.rod_length * ct * theta_dot
         return float(ex), float(ey), float(vx), float(vy)
 
+    def bushing_offset(self, y: FloatArray, ex: float, ey: float) -> tuple[float, float]:
+        """The pin centre's offset from the bushing centre in the bushing's frame [m]
+        (``e`` itself but for a worn bushing in the rod end: ``-R(-theta) e``)."""
+        if not self._rod_frame:
+            return ex, ey
+        return to_bushing_frame(float(y[0]), -1.0, ex, ey)
+
     def gap(self, t: float, y: FloatArray) -> float:
         if self._kernel is not None:
             return self._kernel.gap(t, y, self._parameters, self._wear)
+        if self._rod_frame:
+            ex, ey, _, _ = self.clearance_state(t, y)
+            return self.contact.gap(*self.bushing_offset(y, ex, ey))
         return super().gap(t, y)
 
     def gap_rate(self, t: float, y: FloatArray) -> float:
@@ -244,6 +270,8 @@ class SliderCrankContactSystem(ContactSystemBase):
     def gap_and_rate(self, t: float, y: FloatArray) -> tuple[float, float]:
         if self._kernel is not None:
             return self._kernel.gap_and_rate(t, y, self._parameters, self._wear)
+        if self._rod_frame:
+            return self.gap(t, y), self.gap_rate(t, y)
         return super().gap_and_rate(t, y)
 
     def rhs_function(self, impact_velocity: float) -> Callable[[float, FloatArray], FloatArray]:
@@ -311,9 +339,15 @@ class SliderCrankContactSystem(ContactSystemBase):
         ey = by + l2 * st
         vx = -w * by - l2 * st * theta_dot - x3_dot
         vy = w * bx + l2 * ct * theta_dot
-        jx, jy, normal, tangential, nx, ny, delta, slip = self.contact.force(
-            ex, ey, vx, vy, theta_dot, impact_velocity
-        )
+        if self._rod_frame:
+            # the bushing in the rod end, e from its centre to the pin's reversed
+            jx, jy, normal, tangential, nx, ny, delta, slip = contact_force_in_frame(
+                self.contact, theta, -1.0, (ex, ey), (vx, vy), theta_dot, impact_velocity
+            )
+        else:
+            jx, jy, normal, tangential, nx, ny, delta, slip = self.contact.force(
+                ex, ey, vx, vy, theta_dot, impact_velocity
+            )
         half = 0.5 * l2
         # t_theta = (-st, ct)
         theta_ddot = (
@@ -376,8 +410,10 @@ class SliderCrankContactSystem(ContactSystemBase):
         )
         y_g = l1 * math.sin(phi) + 0.5 * l2 * math.sin(theta)
         gravity = m.gravity * (m.rod_mass * y_g + m.crank_mass * 0.5 * l1 * math.sin(phi))
-        ex, ey, _, _ = self.clearance_state(t, np.asarray(y, dtype=float))
-        return kinetic + gravity + self.spring_energy(x3) + self.contact.potential(ex, ey)
+        state = np.asarray(y, dtype=float)
+        ex, ey, _, _ = self.clearance_state(t, state)
+        contact = self.contact.potential(*self.bushing_offset(state, ex, ey))
+        return kinetic + gravity + self.spring_energy(x3) + contact
 
 
 def slider_crank_contact(
@@ -442,7 +478,13 @@ def initial_state(system: SliderCrankContactSystem, steps: int) -> tuple[FloatAr
     jx, jy = float(reaction.force_x[0]), float(reaction.force_y[0])
     load = math.hypot(jx, jy)
     direction = math.atan2(jy, jx)
-    offset = system.contact.static_offset(load, direction)
+    seen = direction
+    if system._rod_frame:
+        # the load's direction seen from the worn bushing in the rod end
+        rod = np.array([float(motion.rod_angle[0]), 0.0])
+        along = system.bushing_offset(rod, math.cos(direction), math.sin(direction))
+        seen = math.atan2(along[1], along[0])
+    offset = system.contact.static_offset(load, seen)
     ex, ey = offset * math.cos(direction), offset * math.sin(direction)
     # loop closure at phi_1 = 0: l2 sin(theta) = e_y, x_3 = l1 + l2 cos(theta) - e_x
     theta = math.asin(ey / m.rod_length)
@@ -503,7 +545,8 @@ def solve_contact_impact(
     if compiled is None and contact.film is not None:
         # the film's force in Python costs far more than loading the compiled kernel
         choice = None
-    system = SliderCrankContactSystem(mechanism, omega, contact, choice)
+    rod = inputs.mechanism.bushing_body == "rod"
+    system = SliderCrankContactSystem(mechanism, omega, contact, choice, rod_bushing=rod)
     y0, _ = initial_state(system, max(steps, 64))
     run = integrate_revolution(system, y0, settings, steps, dense=False)
     states = run.states
@@ -539,18 +582,11 @@ def worn_contour(inputs: MechanismInputs, wear_depth: FloatArray | None) -> Bush
     wear_depth : ndarray, shape (N,) or None
         Wear depth of the bushing on the ``joint.nodes`` grid [m].
 
-    Raises
-    ------
-    ConfigError
-        If the bushing is in the rod end (it turns with the rod).
+    The contour is in the frame of the body that carries the bushing (the rod's for a
+    bushing in the rod end).
     """
     if wear_depth is None or not np.any(wear_depth):
         return None
-    if inputs.mechanism.bushing_body != "slider":
-        raise ConfigError(
-            "simulation.dynamics_update: contact-impact on a worn bushing needs the bushing "
-            "on a body that does not turn (mechanism.bushing_body = 'slider')"
-        )
     joint = inputs.joint
     return BushingContour.from_wear_profile(joint.bushing_radius, wear_depth, joint.axial_length)
 
