@@ -345,11 +345,12 @@ CASES: list[Bad] = [
     Bad(
         "contact-impact-for-a-prescribed-load",
         "config",
-        ["dynamics", "{tmp}/swing.toml", "--set", "dynamics.model=contact-impact"],
+        ["dynamics", "{tmp}/history.toml", "--set", "dynamics.model=contact-impact"],
         ["dynamics.model", "prescribes its load"],
         files={
-            "swing.toml": '[mechanism]\ntype = "oscillating"\nload = "1 kN"\n'
-            'amplitude = "25 deg"\nfrequency = "1 Hz"\n'
+            "history.toml": '[mechanism]\ntype = "load-history"\nfile = "loads.csv"\n',
+            "loads.csv": "time [ms],force_x [kN],force_y [kN],rotation [deg]\n0,1,0,0\n"
+            "500,0,1,90\n1000,1,0,180\n",
         },
     ),
     Bad(

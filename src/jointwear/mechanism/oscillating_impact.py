@@ -102,7 +102,8 @@ class OscillatingContactSystem(ContactSystemBase):
         dict
             ``ax``/``ay`` [m/s^2], ``force_x``/``force_y`` (``J``, on the bushing) [N],
             ``normal_force``/``friction_force`` [N], ``normal_x``/``normal_y`` [-],
-            ``penetration`` [m], ``slip`` [m/s], ``load_x``/``load_y`` [N].
+            ``penetration`` [m], ``slip`` [m/s], ``load_x``/``load_y`` [N], the pin's
+            offset ``ex``/``ey`` [m].
         """
         ex, ey, vx, vy = (float(v) for v in np.asarray(y, dtype=float)[:4])
         spin = self.pin_angle(t)[1]
@@ -123,6 +124,8 @@ class OscillatingContactSystem(ContactSystemBase):
             "slip": slip,
             "load_x": fx,
             "load_y": fy,
+            "ex": ex,
+            "ey": ey,
         }
 
     def rhs(self, t: float, y: FloatArray, impact_velocity: float) -> FloatArray:

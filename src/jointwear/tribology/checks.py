@@ -108,6 +108,21 @@ def _widest(solutions: list[ContactSolution]) -> float:
     )
 
 
+def _free_liner_ends(config: Any) -> str | None:
+    """The message for slices along the pin on a liner whose free ends bulge, else ``None``."""
+    joint, bushing = config.joint, config.materials.bushing
+    if getattr(joint, "axial_slices", 1) == 1 or bushing.poisson_ratio <= FREE_END_POISSON:
+        return None
+    return (
+        f"joint.axial_slices: each slice is a confined section, but a liner with Poisson's "
+        f"ratio {bushing.poisson_ratio:g} is softer within about a wall thickness "
+        f"({joint.bushing_thickness * 1e3:.3g} mm) of its free ends, so the end slices' load "
+        f"and wear are overstated (finite elements of a PTFE liner under a tilted pin: "
+        f"edge-to-mid line load 1.15 against the slices' 1.74); read the edge wear as an "
+        f"upper bound"
+    )
+
+
 def model_validity(
     config: Any,
     model: Any,
@@ -158,18 +173,8 @@ def model_validity(
             f"normal (peak depth and volume about {0.2 * peak / joint.bushing_radius:.1%} low "
             f"against the exact conformal wear); stop the run earlier with life.peak_wear_depth"
         )
-    if (
-        getattr(joint, "axial_slices", 1) > 1
-        and config.materials.bushing.poisson_ratio > FREE_END_POISSON
-    ):
-        out["free_liner_ends"] = (
-            f"joint.axial_slices: each slice is a confined section, but a liner with Poisson's "
-            f"ratio {config.materials.bushing.poisson_ratio:g} is softer within about a wall "
-            f"thickness ({joint.bushing_thickness * 1e3:.3g} mm) of its free ends, so the end "
-            f"slices' load and wear are overstated (finite elements of a PTFE liner under a "
-            f"tilted pin: edge-to-mid line load 1.15 against the slices' 1.74); read the edge "
-            f"wear as an upper bound"
-        )
+    if liner_ends := _free_liner_ends(config):
+        out["free_liner_ends"] = liner_ends
     if not solutions:
         return out
 
