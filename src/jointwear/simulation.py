@@ -18,8 +18,7 @@ from numpy.typing import NDArray
 from jointwear import coupling
 from jointwear.config import Config
 from jointwear.contact import ContactSolution
-from jointwear.contact.sliced import solver_of
-from jointwear.contact.solver import WarmStart
+from jointwear.contact.solver import ContactSolver, WarmStart
 from jointwear.errors import ConfigError
 from jointwear.geometry.contour import BushingContour
 from jointwear.record import ContactSnapshot, RunRecord, UpdateRecorder
@@ -81,7 +80,11 @@ class Simulation:
         self.contact_model = config.contact.model if contact_model is None else contact_model
         # the fused kernel accumulates Archard's wear inside the contact solve
         archard = wear_law in (None, "archard") and config.wear.law == "archard"
-        self.solver = solver_of(config, self.contact_model, fused_archard=archard)
+        self.solver = ContactSolver.from_config(config, self.contact_model, fused_archard=archard)
+        if config.joint.axial_slices > 1:  # (a planar run never loads the slices' modules)
+            from jointwear.contact.sliced import SlicedSolver
+
+            self.solver = SlicedSolver.from_config(config, self.solver)
         self.law, self.pin = self.solver.law, self.solver.pin
         self.parameters = self.solver.parameters
         if joint is not None and joint not in config.joints:

@@ -66,7 +66,6 @@ from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import brentq, root
 
 from jointwear.contact.balance.window import PIN_REACH
 from jointwear.contact.laws import CallableSpringLaw, SpringLaw
@@ -610,6 +609,8 @@ class _Balance:
             return lower
         # to round-off: a few ulps of the offsets (rtol alone fails where delta_0 ~ 0)
         ulps = 2 * _EPS * max(abs(lower), abs(upper), float(np.abs(base).max()))
+        from scipy.optimize import brentq  # (a run of one slice never loads scipy.optimize)
+
         return brentq(excess, lower, upper, xtol=ulps, rtol=4 * _EPS, maxiter=500)
 
     def free_tilt(self, centre: float) -> tuple[float, float] | None:
@@ -625,6 +626,8 @@ class _Balance:
             k, kz = slope.sum(), slope @ z
             jac = np.array([[k, kz], [kz, slope @ z**2]])
             return f * scale, jac * scale[:, None]
+
+        from scipy.optimize import root
 
         found = root(residual, [centre, 0.0], jac=True, method="hybr", options={"xtol": 1e-15})
         if not np.all(np.isfinite(found.x)):
@@ -661,6 +664,8 @@ class _Balance:
         # to round-off: a tilt moving the end slices by a few ulps of the pin's offset
         ulps = 2 * _EPS * max(abs(centre), float(np.abs(z).max() * max(abs(lower), abs(upper))))
         ulps /= float(np.abs(z).max())
+        from scipy.optimize import brentq
+
         return brentq(moment, lower, upper, xtol=ulps, rtol=4 * _EPS, maxiter=500)
 
     def bent(self, free: bool, rigid: tuple[float, float, FloatArray]):
@@ -714,6 +719,8 @@ class _Balance:
             return f * scale, jac * scale[:, None]
 
         x0 = np.concatenate([[start[0]], [tilt] if free else [], start[2]])
+        from scipy.optimize import root
+
         found = root(residual, x0, jac=True, method="hybr", options={"xtol": 1e-15})
         if not np.all(np.isfinite(found.x)):
             return None

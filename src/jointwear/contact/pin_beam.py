@@ -54,13 +54,15 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import scipy.sparse as sparse
 from numpy.typing import ArrayLike, NDArray
-from scipy.sparse.linalg import splu
 
 from jointwear.errors import ConfigError, GeometryError
+
+if TYPE_CHECKING:
+    import scipy.sparse as sparse
 
 __all__ = [
     "Cantilever",
@@ -317,6 +319,8 @@ class _Mesh:
         rows = np.broadcast_to(dofs[:, :, None], local.shape).ravel()
         cols = np.broadcast_to(dofs[:, None, :], local.shape).ravel()
         size = 2 * self.nodes.size
+        import scipy.sparse as sparse  # (loaded only for a bending pin)
+
         return sparse.coo_matrix((local.ravel(), (rows, cols)), shape=(size, size)).tocsc()
 
 
@@ -331,6 +335,8 @@ def _solve(
     fixed = {2 * int(mesh.index(z)[0]) + dof for z, dof in held}
     free = np.setdiff1d(np.arange(matrix.shape[0]), np.fromiter(fixed, int, len(fixed)))
     try:
+        from scipy.sparse.linalg import splu
+
         factor = splu(matrix[free][:, free].tocsc())
         reduced = factor.solve(np.ascontiguousarray(right[free]))
     except RuntimeError as error:  # splu: "Factor is exactly singular"
@@ -401,6 +407,8 @@ def beam_on_foundation(
     size = 2 * mesh.nodes.size
     matrix = mesh.stiffness(beam)
     spring_dofs = 2 * mesh.index(positions)
+    import scipy.sparse as sparse
+
     matrix = matrix + sparse.csc_matrix((springs, (spring_dofs, spring_dofs)), shape=(size, size))
     right = np.zeros(size)
     for offset, loads in ((0, forces), (1, moments)):

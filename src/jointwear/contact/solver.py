@@ -44,13 +44,13 @@ from jointwear.contact import (
 )
 from jointwear.contact.kernel import WarmRevolutions, revolution_wear
 from jointwear.contact.laws import SpringLaw
-from jointwear.contact.lubricated import FilmRecord, LubricatedContact
 from jointwear.geometry.contour import BushingContour, Pin
 
 if TYPE_CHECKING:
     from collections.abc import Callable
 
     from jointwear.config import Config
+    from jointwear.contact.lubricated import FilmRecord, LubricatedContact
     from jointwear.mechanism.cycle import LoadCycle
 
 __all__ = ["COMPILED_KERNEL_SOLVES", "ContactSolver", "WarmStart", "compiled_kernel"]
@@ -200,6 +200,9 @@ class ContactSolver:
         cfg = config.contact
         lubrication = None
         if config.lubrication.lubricated:
+            # the film's libraries (scipy's integrators, the mobility tables) load only here
+            from jointwear.contact.lubricated import LubricatedContact
+
             lubrication = LubricatedContact(config.lubrication, parameters)
         return cls(
             law,

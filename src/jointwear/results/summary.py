@@ -13,7 +13,6 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from jointwear.lubrication.asperity import lubrication_regime
 from jointwear.results.axial import axial_summary
 from jointwear.state import revolution_number
 from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS, engineering_checks
@@ -78,6 +77,9 @@ def film_summary(dataset: xr.Dataset) -> dict[str, Any]:
     """
     if "film_parameter" not in dataset:
         return {}
+    # (a dry run's summary never loads the film's libraries: scipy's integrators)
+    from jointwear.lubrication.asperity import lubrication_regime
+
     time = np.asarray(dataset["time"].values, float)
     period = float(dataset.attrs.get("period_s", math.nan))
     duration = np.diff(np.append(time, period))
