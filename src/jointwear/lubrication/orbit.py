@@ -562,6 +562,8 @@ class CycleMap:
         self.arguments = solver.kernel_arguments() if self.kernel is not None else ()
         #: right-hand side evaluations of the last cycle (compiled path)
         self.evaluations = 0
+        #: cycles integrated (a call from the last start again is not integrated again)
+        self.integrations = 0
         self.start = np.zeros(2)
         self.path = np.zeros((2, self.ends.size))
 
@@ -575,6 +577,9 @@ class CycleMap:
         return velocity / gap + radial * state
 
     def __call__(self, initial: FloatArray) -> FloatArray:
+        if self.integrations and np.array_equal(initial, self.start):
+            return self.path
+        self.integrations += 1
         if self.kernel is not None:
             return self.compiled_cycle(initial)
         solution = solve_ivp(
@@ -687,11 +692,9 @@ def periodic_orbit(
             method="hybr",
             options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS},
         )
-        cycles += int(found.nfev)
-        if not np.array_equal(cycle.start, found.x):
-            cycle(found.x)
-            cycles += 1
-        path = cycle.path
+        # (the cycle map integrates a start it integrated last only once)
+        path = cycle(found.x)
+    cycles = cycle.integrations
     error, allowed = mismatch(path)
     if error > allowed:
         raise ConvergenceError(
