@@ -22,8 +22,9 @@ of the cycle, in the frame of the bushing (the film sees only ``omega_pin +
 omega_bushing - 2 dphi/dt``, the same in every frame).
 
 The cycle is periodic, and so is the orbit it settles on: the eccentricity ODE is
-integrated with :func:`scipy.integrate.solve_ivp` (LSODA, which switches to a stiff
-method where the asperities or a thin squeeze film make the orbit stiff) over whole
+integrated by the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`, numba,
+Dormand--Prince 5(4); :func:`compiled_kernel`) or, without numba, with
+:func:`scipy.integrate.solve_ivp` (LSODA) and the right-hand side in Python, over whole
 cycles until the start of one cycle and its end agree within a tolerance (a fixed
 point of the cycle map; where plain repetition converges slowly, the fixed point is
 found with :func:`scipy.optimize.root`). The eccentricity is integrated in the
