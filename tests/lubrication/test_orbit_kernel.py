@@ -75,7 +75,7 @@ def cycle_inputs(steps: int = 60, period: float = 0.2):
 
 
 @pytest.mark.parametrize("model", ["short", "finite"])
-def test_a_compiled_cycle_lands_where_lsoda_lands(model):
+def test_a_compiled_cycle_lands_where_lsoda_lands(kernel, model):
     solver = OrbitSolver(RADIUS, 0.01, CLEARANCE, 0.05, 0.2e-6, MODULUS, model)
     inputs = cycle_inputs()
     start = np.array([0.3, -0.5])
@@ -87,7 +87,7 @@ def test_a_compiled_cycle_lands_where_lsoda_lands(model):
     np.testing.assert_allclose(gap_compiled, gap_lsoda, rtol=1e-5)
 
 
-def test_the_periodic_orbit_is_the_same_on_both_paths():
+def test_the_periodic_orbit_is_the_same_on_both_paths(kernel):
     solver = OrbitSolver(RADIUS, 0.01, CLEARANCE, 0.05, 0.2e-6, MODULUS, "short")
     inputs = cycle_inputs()
     python = periodic_orbit(solver, *inputs, start=[0.0, 0.0], compiled=False)
