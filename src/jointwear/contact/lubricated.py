@@ -157,6 +157,8 @@ class LubricatedContact:
         )
         #: the cycle and its orbit last solved (one per load cycle)
         self._kept: tuple[Any, Orbit, FilmRecord] | None = None
+        #: the cycle, the node count and the asperity pressure along its orbit last found
+        self._pressure: tuple[Any, int, FloatArray] | None = None
 
     def first_guess(self, cycle: LoadCycle) -> FloatArray:
         """The quasi-static equilibrium of the first step, at most 0.9 off centre [-]."""
@@ -223,7 +225,15 @@ class LubricatedContact:
         return self.orbit(cycle)[1]
 
     def asperity_pressure(self, cycle: LoadCycle, nodes: int) -> FloatArray:
-        """The asperity pressure at every node and step along the orbit, (M, N) [Pa]."""
+        """The asperity pressure at every node and step along the orbit, (M, N) [Pa].
+
+        A new array each call; the pressure along the orbit of one load cycle is
+        computed once (the film's geometry is the unworn bushing's: it does not change
+        as the contour wears).
+        """
+        kept = self._pressure
+        if kept is not None and kept[0] is cycle and kept[1] == nodes:
+            return kept[2].copy()
         orbit, _ = self.orbit(cycle)
         angles = 2.0 * np.pi * np.arange(nodes) / nodes
         offset = orbit.eccentricity_x[:, None] * np.cos(angles) + orbit.eccentricity_y[
@@ -232,7 +242,9 @@ class LubricatedContact:
         pressure = asperity_pressure(
             self.clearance * (1.0 - offset), self.roughness, self.modulus, **self.asperity
         )
-        return np.where((cycle.load > 0.0)[:, None], pressure, 0.0)
+        pressure = np.where((cycle.load > 0.0)[:, None], pressure, 0.0)
+        self._pressure = (cycle, nodes, pressure)
+        return pressure.copy()
 
     def centre(self, cycle: LoadCycle) -> FloatArray:
         """The pin centre's offset from the bushing centre at every step [m], (M, 2)."""

@@ -55,6 +55,7 @@ References
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -67,6 +68,7 @@ __all__ = [
     "long_bearing_force",
     "min_film_thickness",
     "short_bearing_force",
+    "short_shape_scalar",
     "sommerfeld_angle",
     "to_xy",
     "wedge_speed",
@@ -480,4 +482,40 @@ def long_bearing_force(
     return FilmForce(
         scale * (rotation * rot_cos + squeeze * sq_cos),
         scale * (rotation * rot_sin + squeeze * sq_sin),
+    )
+
+
+def short_shape_scalar(eps: float, beta: float, ratio: float) -> tuple[float, float]:
+    """``G(eps, beta; L/D)`` of the short bearing for one state, with :mod:`math` [-].
+
+    :func:`short_bearing_force` at ``R = c = 1``, ``mu = 1/6`` and unit motion in the
+    direction ``beta`` (the film starts at ``theta_1 = beta``): the closed form of
+    :func:`jointwear.lubrication.orbit.short_shape` without array overhead, plain
+    enough for numba to compile (:mod:`jointwear.lubrication._orbit_kernel`).
+
+    Parameters
+    ----------
+    eps : float
+        Eccentricity ratio [-].
+    beta : float
+        Direction of the motion [rad].
+    ratio : float
+        ``L / D`` [-].
+    """
+    one_minus = 1.0 - eps * eps
+    b = eps / (1.0 + math.sqrt(one_minus))
+    sin_b, cos_b = math.sin(beta), math.cos(beta)
+    g0 = beta - 2.0 * math.atan(b * sin_b / (1.0 + b * cos_b))
+    g1 = beta + math.pi + 2.0 * math.atan(b * sin_b / (1.0 - b * cos_b))
+    s0, s1 = math.sin(g0), math.sin(g1)
+    d_sin2 = math.sin(2.0 * g1) - math.sin(2.0 * g0)
+    sin_sin = (0.5 * (g1 - g0) - 0.25 * d_sin2) / one_minus**1.5
+    cos_cos = ((0.5 + eps * eps) * (g1 - g0) + 0.25 * d_sin2 - 2.0 * eps * (s1 - s0)) / (
+        one_minus**2.5
+    )
+    sin_cos = (0.5 * (s1 * s1 - s0 * s0) + eps * (math.cos(g1) - math.cos(g0))) / one_minus**2
+    scale = 2.0 * ratio**3 / 3.0
+    return (
+        scale * (cos_b * sin_cos - sin_b * cos_cos),
+        scale * (cos_b * sin_sin - sin_b * sin_cos),
     )

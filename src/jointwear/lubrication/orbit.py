@@ -22,8 +22,9 @@ of the cycle, in the frame of the bushing (the film sees only ``omega_pin +
 omega_bushing - 2 dphi/dt``, the same in every frame).
 
 The cycle is periodic, and so is the orbit it settles on: the eccentricity ODE is
-integrated with :func:`scipy.integrate.solve_ivp` (LSODA, which switches to a stiff
-method where the asperities or a thin squeeze film make the orbit stiff) over whole
+integrated by the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`, numba,
+Dormand--Prince 5(4); :func:`compiled_kernel`) or, without numba, with
+:func:`scipy.integrate.solve_ivp` (LSODA) and the right-hand side in Python, over whole
 cycles until the start of one cycle and its end agree within a tolerance (a fixed
 point of the cycle map; where plain repetition converges slowly, the fixed point is
 found with :func:`scipy.optimize.root`). The eccentricity is integrated in the
@@ -50,10 +51,12 @@ References
 from __future__ import annotations
 
 import math
+import os
 from bisect import bisect_right
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cache
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -69,6 +72,7 @@ from jointwear.lubrication.asperity import (
     FIT_OMEGA,
     journal_asperity_force,
 )
+from jointwear.lubrication.film import short_shape_scalar
 from jointwear.lubrication.mobility import (
     DIRECTION_NODES,
     LOG_GAP_MAX,
@@ -98,6 +102,26 @@ ROUND_OFF = 1e-12
 #: the periodicity tolerance scales with the smallest gap, but not below this many
 #: roughnesses (the asperity pressure varies on the scale of sigma)
 GAP_FLOOR = 1.0
+#: the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`), imported on first use
+_KERNEL: Any = None
+
+
+def compiled_kernel() -> Any:
+    """The compiled orbit kernel, imported on first use (None without numba).
+
+    ``JOINTWEAR_NO_NUMBA=1`` switches it off: the orbit is then integrated with
+    :func:`scipy.integrate.solve_ivp` and the Python right-hand side.
+    """
+    global _KERNEL
+    if os.environ.get("JOINTWEAR_NO_NUMBA", "") not in ("", "0"):
+        return None
+    if _KERNEL is None:
+        try:
+            from jointwear.lubrication import _orbit_kernel as module
+        except ImportError:
+            module = False
+        _KERNEL = module
+    return _KERNEL or None
 
 
 @dataclass(frozen=True)
@@ -179,27 +203,6 @@ def short_shape(eccentricity_ratio: ArrayLike, direction: ArrayLike, ratio: floa
     scale = 2.0 * ratio**3 / 3.0
     return np.stack(
         [scale * (cos_b * sin_cos - sin_b * cos_cos), scale * (cos_b * sin_sin - sin_b * sin_cos)]
-    )
-
-
-def short_shape_scalar(eps: float, beta: float, ratio: float) -> tuple[float, float]:
-    """:func:`short_shape` of one state with :mod:`math` (no array overhead) [-]."""
-    one_minus = 1.0 - eps * eps
-    b = eps / (1.0 + math.sqrt(one_minus))
-    sin_b, cos_b = math.sin(beta), math.cos(beta)
-    g0 = beta - 2.0 * math.atan(b * sin_b / (1.0 + b * cos_b))
-    g1 = beta + math.pi + 2.0 * math.atan(b * sin_b / (1.0 - b * cos_b))
-    s0, s1 = math.sin(g0), math.sin(g1)
-    d_sin2 = math.sin(2.0 * g1) - math.sin(2.0 * g0)
-    sin_sin = (0.5 * (g1 - g0) - 0.25 * d_sin2) / one_minus**1.5
-    cos_cos = ((0.5 + eps * eps) * (g1 - g0) + 0.25 * d_sin2 - 2.0 * eps * (s1 - s0)) / (
-        one_minus**2.5
-    )
-    sin_cos = (0.5 * (s1 * s1 - s0 * s0) + eps * (math.cos(g1) - math.cos(g0))) / one_minus**2
-    scale = 2.0 * ratio**3 / 3.0
-    return (
-        scale * (cos_b * sin_cos - sin_b * cos_cos),
-        scale * (cos_b * sin_sin - sin_b * sin_cos),
     )
 
 
@@ -349,6 +352,32 @@ class OrbitSolver:
         self.asperity_at = scalar_spline(self.asperity_spline)
         self.cutoff = cutoff
         self.roughness = roughness
+        #: the compiled kernel's last direction of motion (NaN: none yet) [rad]
+        self.memory = np.array([math.nan])
+
+    def kernel_arguments(self) -> tuple[Any, ...]:
+        """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity."""
+        codes = {"short": 0.0, "long": 1.0, "finite": 1.0}
+        joint = (
+            self.clearance,
+            self.roughness,
+            float(self.cutoff),
+            self.mobility_scale,
+            self.ratio,
+            codes[self.model],
+            float(LOG_GAP_MAX),
+        )
+        spline = self.asperity_spline
+        asperity = (np.ascontiguousarray(spline.x), np.ascontiguousarray(spline.c[:, :, None]))
+        if self.model == "short":
+            unused = np.zeros(8)
+            tables = (unused, unused, unused, unused)
+        else:
+            radial, tangential = shape_table(self.model, self.ratio)
+            tx, ty, radial_c = radial.tck
+            tables = (tx, ty, radial_c, tangential.tck[2])
+        tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
+        return joint, asperity, self.memory, tables, DIRECTION_NODES
 
     def asperity_force(self, eccentricity_ratio: ArrayLike) -> FloatArray:
         """Radial asperity force at ``eps`` (tabulated, linear between nodes) [N]."""
@@ -502,6 +531,9 @@ class CycleMap:
         Load on the pin at ``time`` [N].
     mean_speed : array_like, shape (M,)
         ``(omega_pin + omega_bushing) / 2`` at ``time`` [rad/s].
+    compiled : bool
+        Integrate with the compiled kernel where numba is installed (else
+        :func:`scipy.integrate.solve_ivp`, LSODA, with the Python right-hand side).
     """
 
     def __init__(
@@ -512,6 +544,7 @@ class CycleMap:
         load_x: ArrayLike,
         load_y: ArrayLike,
         mean_speed: ArrayLike,
+        compiled: bool = True,
     ) -> None:
         times = np.asarray(time, float)
         samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
@@ -524,7 +557,14 @@ class CycleMap:
             bc_type="periodic",
         )
         self.inputs_at = scalar_spline(spline)
+        self.inputs = (np.ascontiguousarray(self.ends), np.ascontiguousarray(spline.c))
         self.solver = solver
+        self.kernel = compiled_kernel() if compiled else None
+        self.arguments = solver.kernel_arguments() if self.kernel is not None else ()
+        #: right-hand side evaluations of the last cycle (compiled path)
+        self.evaluations = 0
+        #: cycles integrated (a call from the last start again is not integrated again)
+        self.integrations = 0
         self.start = np.zeros(2)
         self.path = np.zeros((2, self.ends.size))
 
@@ -538,6 +578,11 @@ class CycleMap:
         return velocity / gap + radial * state
 
     def __call__(self, initial: FloatArray) -> FloatArray:
+        if self.integrations and np.array_equal(initial, self.start):
+            return self.path
+        self.integrations += 1
+        if self.kernel is not None:
+            return self.compiled_cycle(initial)
         solution = solve_ivp(
             self.right_hand_side,
             (self.ends[0], self.ends[-1]),
@@ -552,6 +597,21 @@ class CycleMap:
         self.start, self.path = np.array(initial, float), solution.y
         return solution.y
 
+    def compiled_cycle(self, initial: FloatArray) -> FloatArray:
+        """The cycle integrated by the compiled kernel (Dormand--Prince 5(4))."""
+        kernel = self.kernel
+        path = np.empty((2, self.ends.size))
+        start = np.array(initial, float)
+        status, self.evaluations = kernel.cycle(
+            start, self.ends, INTEGRATION_RTOL, INTEGRATION_ATOL, self.inputs, *self.arguments, path
+        )
+        if status != kernel.DONE or not np.all(np.isfinite(path)):
+            raise ConvergenceError(
+                f"orbit: the integration failed (compiled kernel, status {status})"
+            )
+        self.start, self.path = start, path
+        return path
+
 
 def periodic_orbit(
     solver: OrbitSolver,
@@ -562,6 +622,7 @@ def periodic_orbit(
     mean_speed: ArrayLike,
     start: ArrayLike,
     tolerance: float = 1e-3,
+    compiled: bool = True,
 ) -> Orbit:
     """The periodic orbit of a pin over a load cycle (module text).
 
@@ -586,6 +647,8 @@ def periodic_orbit(
         The orbit repeats when ``|e(T) - e(0)|`` is below ``tolerance`` times the
         smallest gap ``c (1 - eps)`` of the cycle, or times ``sigma`` if that is
         larger [-].
+    compiled : bool
+        Integrate with the compiled kernel where numba is installed (:class:`CycleMap`).
 
     Returns
     -------
@@ -597,7 +660,7 @@ def periodic_orbit(
     ConvergenceError
         When the orbit does not repeat within the cycles allowed.
     """
-    cycle = CycleMap(solver, time, period, load_x, load_y, mean_speed)
+    cycle = CycleMap(solver, time, period, load_x, load_y, mean_speed, compiled)
 
     # the gap matters against the roughness: a pin on its asperities needs no finer
     floor = GAP_FLOOR * solver.roughness / solver.clearance
@@ -630,11 +693,9 @@ def periodic_orbit(
             method="hybr",
             options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS},
         )
-        cycles += int(found.nfev)
-        if not np.array_equal(cycle.start, found.x):
-            cycle(found.x)
-            cycles += 1
-        path = cycle.path
+        # (the cycle map integrates a start it integrated last only once)
+        path = cycle(found.x)
+    cycles = cycle.integrations
     error, allowed = mismatch(path)
     if error > allowed:
         raise ConvergenceError(

@@ -1,0 +1,392 @@
+"""The pin's orbit over one load cycle, compiled by numba.
+
+The physics of :class:`jointwear.lubrication.orbit.OrbitSolver` and
+:class:`jointwear.lubrication.orbit.CycleMap` in one compiled loop: the film's force
+factor (the short bearing in closed form, the long and finite bearings from the
+bicubic B-spline of :func:`jointwear.lubrication.orbit.shape_table`, evaluated as
+FITPACK's ``bisplev`` does), the direction of motion whose film force balances the
+load (bracketed as :meth:`OrbitSolver.direction_of_motion` does, refined with the
+algorithm of :func:`scipy.optimize.brentq`, which numba cannot call), the
+Greenwood--Tripp asperity force from its cubic spline, the centre's velocity and the
+right-hand side in the stretched coordinate. The cycle is integrated with the
+Dormand--Prince 5(4) pair and its continuous extension (the coefficients of
+:class:`scipy.integrate.RK45`, Hairer, Norsett & Wanner, *Solving Ordinary
+Differential Equations I*, 1993, II.5-6), the error controlled as there.
+
+Imported by :mod:`jointwear.lubrication.orbit` on first use only (loading numba costs
+a few tenths of a second).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from jointwear.lubrication.film import short_shape_scalar
+
+#: ``status`` of a cycle's integration
+DONE, TOO_MANY_STEPS, STEP_TOO_SMALL = 0, 1, 2
+#: model codes
+SHORT, TABULATED = 0, 1
+_TWO_PI = 2.0 * math.pi
+#: the largest eccentricity ratio the orbit reaches (h_min = 1e-12 c), as the orbit module
+_LARGEST = 1.0 - 1e-12
+_ROUND_OFF = 1e-12
+_STEPS = 200_000
+
+# Dormand-Prince 5(4): nodes, stages, weights, error weights, continuous extension
+_C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0])
+_A = np.array(
+    [
+        [0.0, 0.0, 0.0, 0.0, 0.0],
+        [1 / 5, 0.0, 0.0, 0.0, 0.0],
+        [3 / 40, 9 / 40, 0.0, 0.0, 0.0],
+        [44 / 45, -56 / 15, 32 / 9, 0.0, 0.0],
+        [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0.0],
+        [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656],
+    ]
+)
+_B = np.array([35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84])
+_E = np.array([-71 / 57600, 0.0, 71 / 16695, -71 / 1920, 17253 / 339200, -22 / 525, 1 / 40])
+_P = np.array(
+    [
+        [1.0, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
+        [0.0, 0.0, 0.0, 0.0],
+        [
+            0.0,
+            131558114200 / 32700410799,
+            -68118460800 / 10900136933,
+            87487479700 / 32700410799,
+        ],
+        [
+            0.0,
+            -1754552775 / 470086768,
+            14199869525 / 1410260304,
+            -10690763975 / 1880347072,
+        ],
+        [
+            0.0,
+            127303824393 / 49829197408,
+            -318862633887 / 49829197408,
+            701980252875 / 199316789632,
+        ],
+        [0.0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
+        [0.0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423],
+    ]
+)
+
+
+@njit(cache=True)
+def _wrap(angle):
+    """``angle`` wrapped to ``[-pi, pi]`` (``math.remainder(angle, 2 pi)``) [rad]."""
+    return angle - _TWO_PI * np.rint(angle / _TWO_PI)
+
+
+@njit(cache=True)
+def _interval(breaks, x, lowest, highest):
+    """``k`` with ``breaks[k] <= x < breaks[k + 1]``, clipped to ``[lowest, highest]``."""
+    k = np.searchsorted(breaks, x, side="right") - 1
+    return min(max(k, lowest), highest)
+
+
+@njit(cache=True)
+def _basis(knots, x, span, out):
+    """The four cubic B-splines nonzero at ``x`` in ``span`` (FITPACK ``fpbspl``)."""
+    saved = np.empty(3)
+    out[0] = 1.0
+    for j in range(1, 4):
+        for i in range(j):
+            saved[i] = out[i]
+        out[0] = 0.0
+        for i in range(j):
+            right = span + i + 1
+            left = right - j
+            factor = saved[i] / (knots[right] - knots[left])
+            out[i] += factor * (knots[right] - x)
+            out[i + 1] = factor * (x - knots[left])
+
+
+@njit(cache=True)
+def bicubic(tx, ty, coefficients, x, y):
+    """A bicubic B-spline at one point (FITPACK ``bisplev``, ``kx = ky = 3``)."""
+    x = min(max(x, tx[3]), tx[tx.size - 4])
+    y = min(max(y, ty[3]), ty[ty.size - 4])
+    span_x = _interval(tx, x, 3, tx.size - 5)
+    span_y = _interval(ty, y, 3, ty.size - 5)
+    wx, wy = np.empty(4), np.empty(4)
+    _basis(tx, x, span_x, wx)
+    _basis(ty, y, span_y, wy)
+    columns = ty.size - 4
+    total = 0.0
+    for i in range(4):
+        row = (span_x - 3 + i) * columns + span_y - 3
+        inner = 0.0
+        for j in range(4):
+            inner += wy[j] * coefficients[row + j]
+        total += wx[i] * inner
+    return total
+
+
+#: ``G(eps, beta; L/D)`` of the short bearing in closed form [-]
+short_shape = njit(cache=True)(short_shape_scalar)
+
+
+@njit(cache=True)
+def shape(eps, beta, model, ratio, log_gap_max, tx, ty, radial, tangential):
+    """``G(eps, beta)`` of the film model (``orbit.OrbitSolver.scalar_shape``) [-]."""
+    if model == SHORT:
+        return short_shape(eps, beta, ratio)
+    log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
+    wrapped = _wrap(beta)
+    scale = (1.0 - eps * eps) ** 2.5
+    return (
+        bicubic(tx, ty, radial, log_gap, wrapped) / scale,
+        bicubic(tx, ty, tangential, log_gap, wrapped) / scale,
+    )
+
+
+@njit(cache=True)
+def _mismatch(direction, eps, target, model, ratio, log_gap_max, tx, ty, radial, tangential):
+    g_r, g_t = shape(eps, direction, model, ratio, log_gap_max, tx, ty, radial, tangential)
+    return _wrap(math.atan2(g_t, g_r) - target)
+
+
+@njit(cache=True)
+def _brent(low, high, f_low, f_high, eps, target, model, ratio, log_gap_max, tx, ty, rr, tt):
+    """The root of the mismatch in ``[low, high]``: scipy's ``brentq`` (xtol 1e-13, rtol 1e-15)."""
+    xtol, rtol = 1e-13, 1e-15
+    xpre, xcur, fpre, fcur = low, high, f_low, f_high
+    xblk = fblk = spre = scur = 0.0
+    if fpre == 0.0:
+        return xpre
+    if fcur == 0.0:
+        return xcur
+    for _ in range(100):
+        if fpre != 0.0 and fcur != 0.0 and (fpre < 0.0) != (fcur < 0.0):
+            xblk, fblk = xpre, fpre
+            spre = scur = xcur - xpre
+        if abs(fblk) < abs(fcur):
+            xpre, xcur, xblk = xcur, xblk, xcur
+            fpre, fcur, fblk = fcur, fblk, fcur
+        delta = 0.5 * (xtol + rtol * abs(xcur))
+        sbis = 0.5 * (xblk - xcur)
+        if fcur == 0.0 or abs(sbis) < delta:
+            return xcur
+        if abs(spre) > delta and abs(fcur) < abs(fpre):
+            if xpre == xblk:
+                stry = -fcur * (xcur - xpre) / (fcur - fpre)
+            else:
+                dpre = (fpre - fcur) / (xpre - xcur)
+                dblk = (fblk - fcur) / (xblk - xcur)
+                stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
+            if 2.0 * abs(stry) < min(abs(spre), 3.0 * abs(sbis) - delta):
+                spre, scur = scur, stry
+            else:
+                spre = scur = sbis
+        else:
+            spre = scur = sbis
+        xpre, fpre = xcur, fcur
+        if abs(scur) > delta:
+            xcur += scur
+        else:
+            xcur += delta if sbis > 0.0 else -delta
+        fcur = _mismatch(xcur, eps, target, model, ratio, log_gap_max, tx, ty, rr, tt)
+    return xcur
+
+
+@njit(cache=True)
+def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, nodes):
+    """``beta`` whose film force points at ``target`` (``OrbitSolver.direction_of_motion``).
+
+    ``memory[0]`` holds the last root (NaN: none); returns NaN where none is found.
+    """
+    args = (eps, target, model, ratio, log_gap_max, tx, ty, rr, tt)
+    for search in range(2):
+        found = False
+        if search == 0:
+            centre = memory[0]
+            if math.isnan(centre):
+                continue
+            width = 0.05
+            low, high = centre - width, centre + width
+            below, above = _mismatch(low, *args), _mismatch(high, *args)
+            while width < 1.0:
+                if below <= 0.0 < above and above - below < math.pi:
+                    found = True
+                    break
+                width *= 3.0
+                if below > 0.0:
+                    low = centre - width
+                    below = _mismatch(low, *args)
+                else:
+                    high = centre + width
+                    above = _mismatch(high, *args)
+            if not found:
+                continue
+        else:
+            step = _TWO_PI / nodes
+            previous = _wrap(_mismatch(-math.pi, *args))
+            cell = 0
+            for k in range(1, nodes + 1):
+                current = _mismatch(-math.pi + step * k, *args)
+                if previous <= 0.0 < current and current - previous < math.pi:
+                    cell = k - 1
+                    break
+                previous = current
+            low = -math.pi + step * cell
+            high = low + step
+            if cell + 1 == nodes:
+                high = math.pi
+            below, above = _mismatch(low, *args), _mismatch(high, *args)
+        if min(abs(below), abs(above)) <= _ROUND_OFF:
+            root = low if abs(below) <= abs(above) else high
+        elif below < 0.0 < above and above - below < math.pi:
+            root = _brent(low, high, below, above, *args)
+        else:
+            continue
+        memory[0] = root
+        return root
+    return math.nan
+
+
+@njit(cache=True)
+def _spline(breaks, coefficients, x, channel):
+    """A cubic spline (``c[power, interval, channel]``) at ``x``, its ends extended."""
+    k = _interval(breaks, x, 0, breaks.size - 2)
+    dx = x - breaks[k]
+    c = coefficients
+    return ((c[0, k, channel] * dx + c[1, k, channel]) * dx + c[2, k, channel]) * dx + c[
+        3, k, channel
+    ]
+
+
+@njit(cache=True)
+def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, nodes):
+    """``de/dt / c`` at ``e / c = (x, y)`` (``OrbitSolver.velocity``) [1/s].
+
+    ``joint = (clearance, roughness, cutoff, mobility_scale, ratio, model, log_gap_max)``,
+    ``asperity = (breaks, coefficients)`` of the force's spline over the gap,
+    ``tables = (tx, ty, radial, tangential)`` of the tabulated models. Returns NaN
+    where no direction of motion is found.
+    """
+    clearance, roughness, cutoff, scale, ratio, model_code, log_gap_max = joint
+    model = int(model_code)
+    tx, ty, rr, tt = tables
+    eps, phi = math.hypot(x, y), math.atan2(y, x)
+    eps = min(max(eps, 1e-6), _LARGEST)
+    cos_phi, sin_phi = math.cos(phi), math.sin(phi)
+    gap = (1.0 - eps) * clearance / roughness
+    force = _spline(asperity[0], asperity[1], gap, 0) if gap < cutoff else 0.0
+    film_x, film_y = load_x + force * cos_phi, load_y + force * sin_phi
+    carried = math.hypot(film_x, film_y)
+    radial = tangential = 0.0
+    if carried > 0.0:
+        target = math.atan2(film_y, film_x) - phi + math.pi
+        beta = direction_of_motion(
+            eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, nodes
+        )
+        if math.isnan(beta):
+            return math.nan, math.nan
+        g_r, g_t = shape(eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt)
+        size = ratio / (3.0 * math.hypot(g_r, g_t))
+        rate = carried * scale * size
+        radial, tangential = rate * math.sin(beta), -rate * math.cos(beta)
+    tangential += mean_speed * eps
+    return radial * cos_phi - tangential * sin_phi, radial * sin_phi + tangential * cos_phi
+
+
+@njit(cache=True)
+def right_hand_side(t, qx, qy, inputs, joint, asperity, memory, tables, nodes):
+    """``dq/dt`` in the stretched coordinate (``CycleMap.right_hand_side``) [1/s]."""
+    breaks, coefficients = inputs
+    load_x = _spline(breaks, coefficients, t, 0)
+    load_y = _spline(breaks, coefficients, t, 1)
+    speed = _spline(breaks, coefficients, t, 2)
+    norm = 1.0 + math.hypot(qx, qy)
+    x, y = qx / norm, qy / norm
+    vx, vy = velocity(x, y, load_x, load_y, speed, joint, asperity, memory, tables, nodes)
+    gap = 1.0 - math.hypot(x, y)
+    radial = (x * vx + y * vy) / gap**2
+    return vx / gap + radial * x, vy / gap + radial * y
+
+
+@njit(cache=True)
+def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, path):
+    """``q`` over one cycle from ``q0`` at ``ends[0]``, written to ``path[:, k]`` at ``ends``.
+
+    Dormand--Prince 5(4) with its continuous extension and the step control of
+    :class:`scipy.integrate.RK45`. Returns ``(status, evaluations)``.
+    """
+    k = np.empty((7, 2))
+    y = np.array([q0[0], q0[1]])
+    new = np.empty(2)
+    stage = np.empty(2)
+    t, t_end = ends[0], ends[-1]
+    args = (inputs, joint, asperity, memory, tables, nodes)
+    fx, fy = right_hand_side(t, y[0], y[1], *args)
+    evaluations = 1
+    k[0, 0], k[0, 1] = fx, fy
+    path[0, 0], path[1, 0] = y[0], y[1]
+    sample = 1
+    # the first step as scipy's select_initial_step, order 4, simplified: 1e-2 of the
+    # scaled ratio of state and rate, at most the whole cycle
+    scale0 = atol + np.abs(y) * rtol
+    d0 = math.sqrt(np.mean((y / scale0) ** 2))
+    d1 = math.sqrt(np.mean((k[0] / scale0) ** 2))
+    h = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
+    h = min(h, t_end - t)
+    for _ in range(_STEPS):
+        if sample >= ends.size:
+            return DONE, evaluations
+        if h < 10.0 * abs(np.nextafter(t, math.inf) - t):
+            return STEP_TOO_SMALL, evaluations
+        last = h >= t_end - t
+        if last:
+            h = t_end - t
+        for s in range(1, 6):
+            stage[:] = y
+            for j in range(s):
+                stage += h * _A[s, j] * k[j]
+            fx, fy = right_hand_side(t + _C[s] * h, stage[0], stage[1], *args)
+            k[s, 0], k[s, 1] = fx, fy
+        new[:] = y
+        for j in range(6):
+            new += h * _B[j] * k[j]
+        fx, fy = right_hand_side(t + h, new[0], new[1], *args)
+        k[6, 0], k[6, 1] = fx, fy
+        evaluations += 6
+        error = np.zeros(2)
+        for j in range(7):
+            error += h * _E[j] * k[j]
+        scale = atol + np.maximum(np.abs(y), np.abs(new)) * rtol
+        norm = math.sqrt(np.mean((error / scale) ** 2))
+        if not np.isfinite(norm):
+            h *= 0.2
+            continue
+        if norm < 1.0:
+            t_new = t_end if last else t + h
+            # the samples within the step from the continuous extension
+            while sample < ends.size and ends[sample] <= t_new:
+                theta = (ends[sample] - t) / h
+                powers = np.array([theta, theta**2, theta**3, theta**4])
+                for c in range(2):
+                    increment = 0.0
+                    for j in range(7):
+                        increment += k[j, c] * (
+                            _P[j, 0] * powers[0]
+                            + _P[j, 1] * powers[1]
+                            + _P[j, 2] * powers[2]
+                            + _P[j, 3] * powers[3]
+                        )
+                    path[c, sample] = y[c] + h * increment
+                sample += 1
+            factor = 10.0 if norm == 0.0 else min(10.0, 0.9 * norm**-0.2)
+            t = t_new
+            y[:] = new
+            k[0] = k[6]
+            h *= factor
+        else:
+            h *= max(0.2, 0.9 * norm**-0.2)
+    return TOO_MANY_STEPS, evaluations

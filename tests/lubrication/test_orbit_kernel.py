@@ -1,0 +1,97 @@
+"""The compiled orbit kernel against the Python mobility method it compiles.
+
+The right-hand side (film force factor of every model, direction of motion, asperity
+force, centre velocity) equals :meth:`OrbitSolver.velocity` to round-off; a cycle
+integrated by the compiled Dormand--Prince pair lands where LSODA with the Python
+right-hand side lands, within the integration tolerance; the periodic orbits of both
+paths agree within the orbit's periodicity tolerance.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.interpolate import bisplev
+
+from jointwear.lubrication.orbit import CycleMap, OrbitSolver, compiled_kernel, periodic_orbit
+
+pytest.importorskip("numba")
+
+RADIUS, LENGTH, CLEARANCE, ROUGHNESS, MODULUS = 0.01, 0.025, 20e-6, 0.4e-6, 115e9
+
+
+@pytest.fixture(scope="module")
+def kernel():
+    module = compiled_kernel()
+    if module is None:
+        pytest.skip("the compiled kernel is switched off")
+    return module
+
+
+@pytest.mark.parametrize("model", ["short", "long", "finite"])
+def test_the_compiled_velocity_is_the_python_velocity(kernel, model):
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, model)
+    joint, asperity, memory, tables, nodes = solver.kernel_arguments()
+    rng = np.random.default_rng(7)
+    worst = 0.0
+    # up to eps = 0.99: beyond it the short bearing's direction of motion is
+    # ill-conditioned (both paths find it to their round-off only)
+    for _ in range(200):
+        eps, phi = rng.uniform(0.0, 0.99), rng.uniform(-np.pi, np.pi)
+        # within the asperities' reach too (the gap down to a tenth of sigma)
+        if rng.uniform() < 0.25:
+            eps = 1.0 - rng.uniform(0.1, 3.0) * ROUGHNESS / CLEARANCE
+        state = np.array([eps * math.cos(phi), eps * math.sin(phi)])
+        load_x, load_y, speed = rng.normal(size=3) * [2000.0, 2000.0, 20.0]
+        solver.last_direction, memory[0] = None, math.nan
+        python = solver.velocity(state, load_x, load_y, speed)
+        compiled = kernel.velocity(
+            *state, load_x, load_y, speed, joint, asperity, memory, tables, nodes
+        )
+        worst = max(worst, np.max(np.abs(python - compiled)) / np.max(np.abs(python)))
+    # both find the direction of motion to brentq's 1e-13 rad; near the wall the short
+    # bearing's force turns slowly with it, which magnifies that up to a hundredfold
+    assert worst < (1e-11 if model == "short" else 1e-12)
+
+
+def test_the_compiled_bicubic_spline_is_fitpacks(kernel):
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, "finite")
+    _, _, _, (tx, ty, radial, _), _ = solver.kernel_arguments()
+    rng = np.random.default_rng(3)
+    # inside the table and beyond both ends (held at the end values, as FITPACK)
+    for x, y in rng.uniform([-0.5, -3.5], [3.5, 3.5], size=(100, 2)):
+        expected = bisplev(x, y, (tx, ty, radial, 3, 3))
+        assert kernel.bicubic(tx, ty, radial, x, y) == pytest.approx(expected, rel=1e-13, abs=1e-15)
+
+
+def cycle_inputs(steps: int = 60, period: float = 0.2):
+    time = np.arange(steps) * period / steps
+    phase = 2 * math.pi * time / period
+    load = 300.0 * (1.0 + 0.5 * np.sin(phase))
+    speed = 20.0 * np.cos(phase)  # a rocking pin: the wedge reverses twice a cycle
+    return time, period, load * np.cos(phase), load * np.sin(phase), speed
+
+
+@pytest.mark.parametrize("model", ["short", "finite"])
+def test_a_compiled_cycle_lands_where_lsoda_lands(kernel, model):
+    solver = OrbitSolver(RADIUS, 0.01, CLEARANCE, 0.05, 0.2e-6, MODULUS, model)
+    inputs = cycle_inputs()
+    start = np.array([0.3, -0.5])
+    lsoda = CycleMap(solver, *inputs, compiled=False)(start)
+    compiled = CycleMap(solver, *inputs)(start)
+    # the gap 1 - eps to the integration's relative tolerance (rtol 1e-7) and a margin
+    gap_lsoda = 1.0 - np.hypot(*(lsoda / (1.0 + np.hypot(*lsoda))))
+    gap_compiled = 1.0 - np.hypot(*(compiled / (1.0 + np.hypot(*compiled))))
+    np.testing.assert_allclose(gap_compiled, gap_lsoda, rtol=1e-5)
+
+
+def test_the_periodic_orbit_is_the_same_on_both_paths(kernel):
+    solver = OrbitSolver(RADIUS, 0.01, CLEARANCE, 0.05, 0.2e-6, MODULUS, "short")
+    inputs = cycle_inputs()
+    python = periodic_orbit(solver, *inputs, start=[0.0, 0.0], compiled=False)
+    compiled = periodic_orbit(solver, *inputs, start=[0.0, 0.0])
+    gap = 1.0 - python.eccentricity_ratio.max()
+    np.testing.assert_allclose(compiled.eccentricity_x, python.eccentricity_x, atol=1e-3 * gap)
+    np.testing.assert_allclose(compiled.eccentricity_y, python.eccentricity_y, atol=1e-3 * gap)
