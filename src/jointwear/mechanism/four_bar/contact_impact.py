@@ -184,7 +184,7 @@ class FourBarContactSystem(ContactSystemBase):
         p2, v2, jac2, _ = self._point("second", t, q, qd)
         e, v = p1 - p2, v1 - v2
         jx, jy, normal, tangential, nx, ny, delta, slip = self.contact.force(
-            e[0], e[1], v[0], v[1], self._spin(qd, e), impact_velocity
+            e[0], e[1], v[0], v[1], self._spin(qd, e), impact_velocity, self._film_spin(qd)
         )
         force = np.array([jx, jy])
         contact_point = p1 + self.contact.friction_arm * np.array([nx, ny])
@@ -226,6 +226,13 @@ class FourBarContactSystem(ContactSystemBase):
         omega2 = 0.0 if second == "ground" else float(qd[_ANGLE_INDEX[second]])
         rho = self.contact.friction_arm
         return (omega1 - omega2) - omega2 * math.hypot(e[0], e[1]) / rho if rho else 0.0
+
+    def _film_spin(self, qd: FloatArray) -> float:
+        """The sum of the two bodies' angular velocities, the film's wedge [rad/s]."""
+        first, second = JOINT_BODIES[self.joint]
+        omega1 = self.omega if first == "crank" else float(qd[_ANGLE_INDEX[first]])
+        omega2 = 0.0 if second == "ground" else float(qd[_ANGLE_INDEX[second]])
+        return omega1 + omega2
 
     def _mass_and_forces(
         self, t: float, q: FloatArray, qd: FloatArray
@@ -339,7 +346,7 @@ def four_bar_contact(
     Parameters
     ----------
     inputs : MechanismInputs
-        The joint and its elastic law.
+        The joint, its elastic law and its oil film.
     settings : ContactImpactSettings
         The ``[dynamics]`` settings of the contact–impact model.
     joint : str
@@ -362,7 +369,7 @@ def four_bar_contact(
     # -R_b with the bushing there (the slider-crank's rule keys on its own bodies)
     first = JOINT_BODIES[joint][0]
     arm = -geometry.bushing_radius if bushing_body == first else geometry.pin_radius
-    return JointContact.for_joint(settings, inputs.elastic, geometry, arm)
+    return JointContact.for_joint(settings, inputs.elastic, geometry, arm, film=inputs.film)
 
 
 def four_bar_contact_impact(inputs: MechanismInputs, compare: bool = True) -> ContactImpactSolution:
