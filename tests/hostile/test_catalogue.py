@@ -35,6 +35,15 @@ from tests.hostile.harness import (  # noqa: F401
     tiny_toml,
 )
 
+#: a run of the paper's joint in the contact-impact dynamics, oiled
+OILED_IMPACT = [
+    "run",
+    "{paper}",
+    "--set",
+    "dynamics.model=contact-impact",
+    "--set",
+    "lubrication.viscosity=0.1 Pa*s",
+]
 CASES: list[Bad] = [
     # ------------------------------------------------------------ config files
     Bad(
@@ -352,6 +361,24 @@ CASES: list[Bad] = [
             "loads.csv": "time [ms],force_x [kN],force_y [kN],rotation [deg]\n0,1,0,0\n"
             "500,0,1,90\n1000,1,0,180\n",
         },
+    ),
+    Bad(
+        "finite-length-film-in-contact-impact",
+        "config",
+        [*OILED_IMPACT, "--set", "lubrication.model=finite-length"],
+        ["lubrication.model", "has no film in dynamics.model", "use 'long-bearing'"],
+    ),
+    Bad(
+        "film-band-wider-than-the-clearance",
+        "config",
+        [
+            *OILED_IMPACT,
+            "--set",
+            "lubrication.model=short-bearing",
+            "--set",
+            "lubrication.roughness=20 um",
+        ],
+        ["lubrication.roughness", "transition band", "narrower than the clearance"],
     ),
     Bad(
         "duty-cycle-shares-not-one",

@@ -16,6 +16,8 @@ import pytest
 from jointwear.config import Config, load_config
 from jointwear.contact import ContactParameters, contact_law
 from jointwear.errors import ConfigError
+from jointwear.lubrication.lubricants import dynamic_viscosity
+from jointwear.mechanism.impact.film import FilmParameters
 from jointwear.mechanism.stage import (
     compiled_dynamics,
     elastic_law,
@@ -102,3 +104,48 @@ def test_compiled_dynamics_follows_from_the_config_alone(
     config = impact_config(paper_config, **settings)
     assert compiled_dynamics(config) is compiled
     assert mechanism_inputs(config).compiled is compiled
+
+
+def test_a_lubricated_contact_impact_joint_carries_the_configured_film(
+    paper_config: Config,
+) -> None:
+    oil = {"lubrication.model": "long-bearing", "lubrication.lubricant": "iso-vg-68"}
+    warm = impact_config(
+        paper_config,
+        **oil,
+        **{"lubrication.temperature": "60 degC", "lubrication.roughness": "0.8 um"},
+    )
+    film = mechanism_inputs(warm).film
+    # the library's oil at 60 degC: thinner than at the 40 degC of its grade
+    mu_60 = float(dynamic_viscosity("iso-vg-68", 333.15))
+    assert film == FilmParameters("long-bearing", mu_60, roughness=0.8e-6)
+    assert mu_60 < float(dynamic_viscosity("iso-vg-68", 313.15))
+    # a lubricant without a temperature is taken at 40 degC
+    assert mechanism_inputs(impact_config(paper_config, **oil)).film.viscosity == pytest.approx(
+        float(dynamic_viscosity("iso-vg-68", 313.15)), rel=1e-15
+    )
+    given = impact_config(
+        paper_config, **{"lubrication.model": "short-bearing", "lubrication.viscosity": "1 Pa*s"}
+    )
+    assert mechanism_inputs(given).film == FilmParameters("short-bearing", 1.0, roughness=0.4e-6)
+    # no film where the dynamics have none to carry: the massless link, a dry joint
+    massless = paper_config.replace(
+        {"lubrication.model": "short-bearing", "lubrication.viscosity": "1 Pa*s"}
+    )
+    assert mechanism_inputs(massless).film is None
+    assert mechanism_inputs(impact_config(paper_config)).film is None
+
+
+def test_a_finite_length_film_is_refused_in_the_contact_impact_dynamics(
+    paper_config: Config,
+) -> None:
+    with pytest.raises(ConfigError, match="has no film in dynamics.model") as error:
+        impact_config(
+            paper_config,
+            **{"lubrication.model": "finite-length", "lubrication.viscosity": "0.1 Pa*s"},
+        )
+    assert "\n" not in str(error.value)
+    # the load cycle's film sharing keeps it
+    paper_config.replace(
+        {"lubrication.model": "finite-length", "lubrication.viscosity": "0.1 Pa*s"}
+    )

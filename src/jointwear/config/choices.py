@@ -22,6 +22,7 @@ __all__ = [
     "CONTACT_MODEL",
     "DYNAMICS_MODEL",
     "FOUR_BAR_GEOMETRY",
+    "IMPACT_FILM",
     "LUBRICANT",
     "MODEL_CHOICE",
     "NLCP_STIFFNESS",
@@ -97,5 +98,8 @@ NLCP_STIFFNESS = Lazy("jointwear.contact.nlcp:stiffness", "contact.stiffness")
 MODEL_CHOICE = Lazy("jointwear.contact:check_model_choice", "contact.model")
 #: ``get_lubricant(name, key)``: a lubricant of the library (an unknown name: the best match)
 LUBRICANT = Lazy("jointwear.lubrication.lubricants:get_lubricant", "lubrication.lubricant")
+#: ``check_film_band(model, roughness, clearance)``: the contact-impact film's transition
+#: band is narrower than the clearance
+IMPACT_FILM = Lazy("jointwear.mechanism.impact.film:check_film_band", "lubrication.roughness")
 #: ``check_paper_spring_area(spring_area, node_area, nodes)``: NLCP's paper form fits the mesh
 PAPER_SPRING_AREA = Lazy("jointwear.contact:check_paper_spring_area", "contact.nlcp_variant")

@@ -13,7 +13,7 @@ from typing import Any
 
 from pydantic import field_validator, model_validator
 
-from jointwear.config.choices import MODEL_CHOICE, NLCP_STIFFNESS, PAPER_SPRING_AREA
+from jointwear.config.choices import IMPACT_FILM, MODEL_CHOICE, NLCP_STIFFNESS, PAPER_SPRING_AREA
 from jointwear.config.fields import MAX_INTEGRATOR_STEPS, Section, one_of
 from jointwear.config.mechanisms import DYNAMIC_TYPES, MechanismConfig
 from jointwear.config.parameter_sets import PARAMETER_SETS
@@ -109,6 +109,24 @@ class ConfigSchema(Section):
                 f"({', '.join(repr(t) for t in DYNAMIC_TYPES)}); mechanism.type "
                 f"{self.mechanism.type!r} prescribes its load"
             )
+        return self
+
+    @model_validator(mode="after")
+    def _film_fits_dynamics(self) -> ConfigSchema:
+        # the contact-impact dynamics compile the short and the long bearing only
+        lubrication = self.lubrication
+        if self.dynamics.model != "contact-impact" or not lubrication.lubricated:
+            return self
+        if lubrication.model == "finite-length":
+            ratio = self.joint.axial_length / (2.0 * self.joint.pin_radius)
+            nearer = "short-bearing" if ratio < 1.0 else "long-bearing"
+            raise ValueError(
+                "lubrication.model: 'finite-length' has no film in dynamics.model = "
+                f"'contact-impact'; use {nearer!r} (the nearer at the joint's L/D = "
+                f"{ratio:.3g}), or dynamics.model = 'massless-link' for the finite-length film "
+                "on the load cycle"
+            )
+        IMPACT_FILM(lubrication.model, lubrication.roughness, self.joint.clearance)
         return self
 
     @model_validator(mode="after")

@@ -35,7 +35,7 @@ from numpy.typing import NDArray
 
 from jointwear.geometry.angles import wrap_angle
 from jointwear.lubrication.asperity import asperity_pressure, composite_modulus
-from jointwear.lubrication.lubricants import dynamic_viscosity
+from jointwear.lubrication.lubricants import section_viscosity
 from jointwear.lubrication.mixed import steady_load_sharing
 from jointwear.lubrication.orbit import Orbit, OrbitSolver, periodic_orbit
 
@@ -126,10 +126,7 @@ class LubricatedContact:
 
     def __init__(self, section: LubricationConfig, parameters: ContactParameters) -> None:
         self.model = FILM_MODEL_OF[section.model]
-        if section.viscosity is not None:
-            self.viscosity = float(section.viscosity)
-        else:
-            self.viscosity = float(dynamic_viscosity(section.lubricant, section.oil_temperature))
+        self.viscosity = section_viscosity(section)
         self.roughness = section.roughness
         self.asperity = {
             "eta_beta_sigma": section.eta_beta_sigma,

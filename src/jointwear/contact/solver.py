@@ -17,7 +17,11 @@ every contact solve of the run:
 A lubricated joint (``[lubrication]`` with a film model) takes none of these: film,
 asperities and bulk share each step's load along the pin's periodic orbit
 (:class:`~jointwear.contact.lubricated.LubricatedContact`), and the solution's pressure
-is the asperity pressure plus the bulk's share solved dry (by path 1 or 3).
+is the asperity pressure plus the bulk's share solved dry (by path 1 or 3). Under the
+contact–impact dynamics the film is already in the dynamics (its force acts on the pin
+there, and the load cycle's ``load`` is the solid contact force alone, zero while the
+film carries the pin): that load is solved dry as it is, and the film is not shared
+a second time.
 
 The fused kernel is the one exception to "contact computes pressure, tribology the
 wear": it accumulates Archard's wear ``K_d p ds`` of every node inside the same
@@ -199,7 +203,8 @@ class ContactSolver:
             check_paper_spring_area(law.force_area, node_area, nodes)
         cfg = config.contact
         lubrication = None
-        if config.lubrication.lubricated:
+        # contact-impact: the film acted in the dynamics; the load is the solid contact's
+        if config.lubrication.lubricated and config.dynamics.model != "contact-impact":
             # the film's libraries (scipy's integrators, the mobility tables) load only here
             from jointwear.contact.lubricated import LubricatedContact
 

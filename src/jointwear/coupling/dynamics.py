@@ -281,6 +281,16 @@ DYNAMICS_COLUMNS: dict[str, tuple[str, str]] = {
     "free_flight_fraction": ("1", "fraction of the cycle in free flight"),
     "load_change": ("1", "RMS change of the load vector since the last solve over RMS load"),
     "max_clearance": ("m", "largest radial play of the pin when the dynamics were solved"),
+    # an oil film in the contact-impact dynamics (its rows only): the film the solve met
+    "max_eccentricity_ratio": ("1", "largest eccentricity ratio |e| / c of the pin"),
+    "min_film_thickness": ("m", "least film thickness c - max |e| (negative: solids touched)"),
+    "peak_joint_force": ("N", "largest joint force, film and contact, impacts included"),
+}
+#: the film's columns: :data:`DYNAMICS_COLUMNS` name -> its key in ``LoadCycle.extras``
+FILM_EXTRAS: dict[str, str] = {
+    "max_eccentricity_ratio": "max_eccentricity_ratio",
+    "min_film_thickness": "min_film_thickness_m",
+    "peak_joint_force": "peak_joint_force_n",
 }
 
 
@@ -295,7 +305,9 @@ def dynamics_row(
 
     The peak contact force, the impacts and the free flight are the dynamics model's
     scalars (``cycle.extras``) where it has them; a model whose pin stays on the wall
-    has no impacts and its largest load for the peak.
+    has no impacts and its largest load for the peak. A cycle whose dynamics carried
+    an oil film (``film_model`` in its extras) adds the film's columns
+    (:data:`FILM_EXTRAS`).
 
     Parameters
     ----------
@@ -311,6 +323,9 @@ def dynamics_row(
         :func:`load_change` from the previous cycle [-] (``None``: the first solve).
     """
     extras = cycle.extras
+    film = {}
+    if "film_model" in extras:
+        film = {name: float(extras[key]) for name, key in FILM_EXTRAS.items()}
     return {
         "revolution": float(revolution),
         "load_max": float(cycle.load.max()),
@@ -320,6 +335,7 @@ def dynamics_row(
         "free_flight_fraction": float(extras.get("free_flight_fraction", 0.0)),
         "load_change": math.nan if change is None else float(change),
         "max_clearance": clearance + float(wear_depth.max()),
+        **film,
     }
 
 

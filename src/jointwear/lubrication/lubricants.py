@@ -36,6 +36,7 @@ from dataclasses import dataclass
 from functools import cache
 from importlib.resources import files
 from types import MappingProxyType
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -43,6 +44,9 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.errors import ConfigError
 from jointwear.registry import suggest
 from jointwear.units import to_si, to_si_unit
+
+if TYPE_CHECKING:
+    from jointwear.config import LubricationConfig
 
 __all__ = [
     "REGIMES",
@@ -52,6 +56,7 @@ __all__ = [
     "get_lubricant",
     "kinematic_viscosity",
     "library",
+    "section_viscosity",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -227,3 +232,22 @@ def dynamic_viscosity(lubricant: str | Lubricant, temperature: ArrayLike) -> Flo
         For an unknown lubricant name (with the closest name).
     """
     return kinematic_viscosity(lubricant, temperature) * density(lubricant, temperature)
+
+
+def section_viscosity(section: LubricationConfig) -> float:
+    """The dynamic viscosity a ``[lubrication]`` section names [Pa s].
+
+    ``viscosity`` where given, else the ``lubricant``'s at the section's temperature
+    (:func:`dynamic_viscosity`, ASTM D341; 40 degC if no temperature is given): the one
+    value both the load cycle's film (:mod:`jointwear.contact.lubricated`) and the
+    contact–impact dynamics' film (:func:`jointwear.mechanism.stage.film_parameters`)
+    run with.
+
+    Parameters
+    ----------
+    section : jointwear.config.LubricationConfig
+        The validated section (SI), a film model chosen.
+    """
+    if section.viscosity is not None:
+        return float(section.viscosity)
+    return float(dynamic_viscosity(section.lubricant, section.oil_temperature))

@@ -95,7 +95,8 @@ def join_modes(cycles: list[LoadCycle], shares: list[float], names: list[str]) -
 
 
 def _extras(cycles: list[LoadCycle], shares: list[float], names: list[str], duty: DutyModes):
-    """The dynamics summary's scalars of a duty cycle: its modes and their largest loads."""
+    """The dynamics summary's scalars of a duty cycle: its modes and their largest loads
+    (and, with an oil film, its largest eccentricity and joint force, its least film)."""
     extras: dict[str, object] = {
         "duty_modes": list(names),
         "duty_shares": [float(s) for s in shares],
@@ -106,6 +107,11 @@ def _extras(cycles: list[LoadCycle], shares: list[float], names: list[str], duty
     extras["peak_load_n"] = max(peaks)
     for key in ("impacts", "free_flight_fraction"):
         extras[key] = sum(s * c.extras.get(key, 0) for c, s in zip(cycles, shares, strict=True))
+    if all("film_model" in c.extras for c in cycles):  # an oil film in every mode's dynamics
+        extras["film_model"] = cycles[0].extras["film_model"]
+        extras["max_eccentricity_ratio"] = max(c.extras["max_eccentricity_ratio"] for c in cycles)
+        extras["min_film_thickness_m"] = min(c.extras["min_film_thickness_m"] for c in cycles)
+        extras["peak_joint_force_n"] = max(c.extras["peak_joint_force_n"] for c in cycles)
     return extras
 
 

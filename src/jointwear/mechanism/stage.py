@@ -10,7 +10,10 @@ This module sits above the contact layer (``tests/test_layering.py``): the
 contact–impact model's elastic law is the contact stage's own (Hertz's stiffness,
 eq. (2); the ``nlcp`` and ``winkler`` spring laws), resolved here
 (:func:`elastic_law`) and passed down, so that the mechanism layer imports nothing
-from the contact layer above it and each formula keeps one implementation.
+from the contact layer above it and each formula keeps one implementation. The oil
+film of a lubricated joint in the contact–impact dynamics is resolved here too
+(:func:`film_parameters`: the viscosity of the ``[lubrication]`` section from the
+lubricants library, which lies above the mechanism layer).
 """
 
 from __future__ import annotations
@@ -21,8 +24,10 @@ from numpy.typing import NDArray
 from jointwear.config import Config
 from jointwear.contact import ContactParameters, contact_law, hertz
 from jointwear.errors import ConfigError
+from jointwear.lubrication.lubricants import section_viscosity
 from jointwear.mechanism.base import cycles_of
 from jointwear.mechanism.cycle import LoadCycle
+from jointwear.mechanism.impact.film import FilmParameters
 from jointwear.mechanism.impact.force_laws import DISTRIBUTED_LAWS
 from jointwear.mechanism.inputs import ElasticLaw, JointGeometry, MechanismInputs
 from jointwear.registry import suggest
@@ -31,6 +36,7 @@ __all__ = [
     "COMPILED_DYNAMICS_REVOLUTIONS",
     "compiled_dynamics",
     "elastic_law",
+    "film_parameters",
     "load_cycle",
     "load_cycles",
     "mechanism_inputs",
@@ -96,8 +102,8 @@ def mechanism_inputs(config: Config) -> MechanismInputs:
     config : jointwear.config.Config
         Uses ``[mechanism]``, ``[dynamics]``, ``[joint]``, ``contact.nodes``,
         ``simulation.steps_per_revolution`` and, for ``dynamics.model =
-        "contact-impact"``, the elastic data of :func:`elastic_law` and the run plan
-        of :func:`compiled_dynamics`.
+        "contact-impact"``, the elastic data of :func:`elastic_law`, the run plan
+        of :func:`compiled_dynamics` and the film of :func:`film_parameters`.
     """
     joint = config.joint
     geometry = JointGeometry(
@@ -114,6 +120,31 @@ def mechanism_inputs(config: Config) -> MechanismInputs:
         dynamics=config.dynamics,
         elastic=elastic_law(config) if impact else None,
         compiled=compiled_dynamics(config) if impact else None,
+        film=film_parameters(config) if impact else None,
+    )
+
+
+def film_parameters(config: Config) -> FilmParameters | None:
+    """The oil film of the contact–impact dynamics, from ``[lubrication]`` (``None``: dry).
+
+    The film model (``"short-bearing"`` or ``"long-bearing"``; the configuration refuses
+    ``"finite-length"`` with ``dynamics.model = "contact-impact"``), the viscosity
+    (:func:`jointwear.lubrication.lubricants.section_viscosity`: ``viscosity``, or the
+    ``lubricant``'s at its ``temperature``) and the composite ``roughness``, which sets
+    the band where the film hands over to the contact law
+    (:meth:`~jointwear.mechanism.impact.film.FilmParameters.band`). The film's length
+    is the joint's axial length.
+
+    Parameters
+    ----------
+    config : jointwear.config.Config
+        Uses ``[lubrication]``.
+    """
+    section = config.lubrication
+    if not section.lubricated:
+        return None
+    return FilmParameters(
+        model=section.model, viscosity=section_viscosity(section), roughness=section.roughness
     )
 
 

@@ -295,6 +295,14 @@ def _record_variables(
     return variables, coords
 
 
+def _film_model(record: RunRecord) -> dict[str, str]:
+    """The film model of a lubricated run: the dynamics' (a given cycle's too) or the
+    load cycle's sharing (``[lubrication]``); none for a dry run."""
+    section = record.config.lubrication
+    model = record.cycle.extras.get("film_model") or (section.model if section.lubricated else "")
+    return {"film_model": str(model)} if model else {}
+
+
 def _attributes(record: RunRecord) -> dict[str, Any]:
     """The global attributes: what ran, how it ended, and the configuration as TOML."""
     from jointwear.version import package_version
@@ -309,6 +317,7 @@ def _attributes(record: RunRecord) -> dict[str, Any]:
         "period_s": cycle.period,
         # a duty cycle's modes one after the other last period_s; a cycle, on average, this
         **({"mean_cycle_duration_s": cycle.duty.mean_period} if cycle.duty else {}),
+        **_film_model(record),
         "stopped_by": record.state.stopped_by or "",
         "dynamics_update": str(config.simulation.dynamics_update),
         "runtime_s": record.runtime,

@@ -70,14 +70,35 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
 def film_summary(dataset: xr.Dataset) -> dict[str, Any]:
     """A lubricated run's film over the cycle; empty for a dry run (the keys are absent).
 
-    ``min_film_thickness_m`` and ``min_film_parameter`` are the cycle's least,
-    ``asperity_load_fraction`` the time-weighted mean over the cycle's steps, and
-    ``lubrication_regime`` the regime of the least film parameter (hydrodynamic above
-    3, mixed above 1, else boundary).
+    Every lubricated run has ``film_model``, ``max_eccentricity_ratio`` (the largest
+    ``|e| / c`` of the pin over the cycle), ``min_film_thickness_m`` (the least gap
+    ``c (1 - max |e| / c)`` between the unworn surfaces; negative only where the solids
+    overlapped, in the contact-impact dynamics) and ``peak_joint_force_n`` (the largest
+    force between pin and bushing, film and solids together). Where the film shares the
+    load cycle's load (``[lubrication]`` under the massless link) these are the orbit's
+    and the cycle's largest load, and ``min_film_parameter`` (the least),
+    ``asperity_load_fraction`` (the time-weighted mean over the cycle's steps) and
+    ``lubrication_regime`` (that of the least film parameter: hydrodynamic above 3,
+    mixed above 1, else boundary) follow. Where the film acts in the contact-impact
+    dynamics they are the last solve's (``dynamics_*`` record; the integrated peak
+    between the samples included).
     """
-    if "film_parameter" not in dataset:
-        return {}
-    # (a dry run's summary never loads the film's libraries: scipy's integrators)
+    model = dataset.attrs.get("film_model")
+    if "film_parameter" in dataset:
+        return {"film_model": model, **_orbit_summary(dataset)}
+    if "dynamics_min_film_thickness" in dataset:
+        return {
+            "film_model": model,
+            "max_eccentricity_ratio": float(dataset["dynamics_max_eccentricity_ratio"].values[-1]),
+            "min_film_thickness_m": float(dataset["dynamics_min_film_thickness"].values[-1]),
+            "peak_joint_force_n": float(dataset["dynamics_peak_joint_force"].values[-1]),
+        }
+    return {}
+
+
+def _orbit_summary(dataset: xr.Dataset) -> dict[str, Any]:
+    """The film keys of a load cycle shared along the pin's orbit."""
+    # (only a lubricated run's summary loads the film's libraries: scipy's integrators)
     from jointwear.lubrication.asperity import lubrication_regime
 
     time = np.asarray(dataset["time"].values, float)
@@ -85,8 +106,13 @@ def film_summary(dataset: xr.Dataset) -> dict[str, Any]:
     duration = np.diff(np.append(time, period))
     least = float(dataset["film_parameter"].values.min())
     fraction = np.asarray(dataset["asperity_load_fraction"].values, float)
+    eccentricity = np.hypot(
+        dataset["eccentricity_ratio_x"].values, dataset["eccentricity_ratio_y"].values
+    )
     return {
+        "max_eccentricity_ratio": float(eccentricity.max()),
         "min_film_thickness_m": float(dataset["min_film_thickness"].values.min()),
+        "peak_joint_force_n": float(dataset["joint_load"].values.max()),
         "min_film_parameter": least,
         "asperity_load_fraction": float(np.sum(fraction * duration) / np.sum(duration)),
         "lubrication_regime": str(lubrication_regime(least)),

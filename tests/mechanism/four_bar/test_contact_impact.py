@@ -7,6 +7,7 @@ torques.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -15,9 +16,13 @@ import pytest
 from jointwear.config import load_config
 from jointwear.mechanism.four_bar.contact_impact import (
     FourBarContactSystem,
+    four_bar_contact,
     four_bar_contact_impact,
 )
+from jointwear.mechanism.four_bar.dynamics import FourBar
 from jointwear.mechanism.four_bar.massless_link import massless_link_cycles
+from jointwear.mechanism.impact.film import joint_film_force
+from jointwear.mechanism.impact.settings import ContactImpactSettings
 from jointwear.mechanism.stage import load_cycles, mechanism_inputs
 
 EXAMPLE = Path(__file__).resolve().parents[3] / "examples" / "four_bar.toml"
@@ -122,3 +127,37 @@ def test_energy_balance_of_the_free_pin(example, joint: str) -> None:
     work = np.abs(states[:, 4]).max()
     assert work > 0.05
     assert np.abs(residue).max() < 1e-5 * work
+
+
+def test_an_oiled_joint_adds_the_film_force_of_both_bodies_spins(example) -> None:
+    # crank-coupler: the film's wedge turns with omega_crank + omega_coupler
+    joint = "crank-coupler"
+    oil = {"lubrication.model": "short-bearing", "lubrication.viscosity": "0.1 Pa*s"}
+    systems = []
+    for overrides in ({}, oil):
+        inputs = mechanism_inputs(
+            impact_config(example, joint, "coupler", **{"joint.clearance": "0.2 mm", **overrides})
+        )
+        settings = ContactImpactSettings.from_config(inputs.dynamics)
+        contact = four_bar_contact(inputs, settings, joint, "coupler")
+        linkage = FourBar.from_config(inputs.mechanism)
+        systems.append(FourBarContactSystem(linkage, inputs.mechanism.crank_speed, contact, joint))
+    dry, oiled = systems
+    assert dry.contact.film is None
+    assert oiled.contact.film is not None
+    # the pin on the wall at the start, its rates disturbed so that it moves across
+    t, y = 0.0, dry.initial_state(np.array([10.0, 5.0])) + np.array([0, 0, 0.5, -0.3, 0])
+    here = oiled.evaluate(t, y, 1e-3)
+    step = 1e-7
+    rates = np.array([0.0, 0.0, 0.0, 0.0, 0.0])
+    rates[:2] = y[2:4]
+    ahead = oiled.evaluate(t + step, y + step * rates, 1e-3)
+    behind = oiled.evaluate(t - step, y - step * rates, 1e-3)
+    vx = (ahead["ex"] - behind["ex"]) / (2 * step)
+    vy = (ahead["ey"] - behind["ey"]) / (2 * step)
+    spin = oiled.omega + y[2]
+    film = joint_film_force(here["ex"], here["ey"], vx, vy, spin, *oiled.contact.film_arguments)
+    without = dry.evaluate(t, y, 1e-3)
+    assert math.hypot(*film) > 1.0
+    assert here["force_x"] - without["force_x"] == pytest.approx(film[0], rel=1e-5)
+    assert here["force_y"] - without["force_y"] == pytest.approx(film[1], rel=1e-5)

@@ -209,7 +209,7 @@ class FourBarContactSystem(ContactSystemBase):
         p2, v2, jac2, _ = self._point("second", t, q, qd)
         e, v = p1 - p2, v1 - v2
         jx, jy, normal, tangential, nx, ny, delta, slip = self.contact_force(
-            t, q, e, v, self._spin(qd, e), impact_velocity
+            t, q, e, v, self._spin(qd, e), impact_velocity, self._film_spin(qd)
         )
         force = np.array([jx, jy])
         contact_point = p1 + self.contact.friction_arm * np.array([nx, ny])
@@ -269,7 +269,14 @@ class FourBarContactSystem(ContactSystemBase):
         return to_bushing_frame(self.bushing_angle(t, q), self._bushing_sign, ex, ey)
 
     def contact_force(
-        self, t: float, q: FloatArray, e: FloatArray, v: FloatArray, spin: float, approach: float
+        self,
+        t: float,
+        q: FloatArray,
+        e: FloatArray,
+        v: FloatArray,
+        spin: float,
+        approach: float,
+        film_spin: float | None = None,
     ) -> tuple[float, float, float, float, float, float, float, float]:
         """:meth:`JointContact.force` for the clearance state, in the global frame.
 
@@ -289,13 +296,16 @@ class FourBarContactSystem(ContactSystemBase):
             :meth:`_spin` [rad/s].
         approach : float
             ``delta'^-`` of the current contact [m/s].
+        film_spin : float, optional
+            Sum of the two bodies' angular velocities, for an oil film [rad/s].
         """
         if not self._worn_frame:
-            return self.contact.force(e[0], e[1], v[0], v[1], spin, approach)
+            return self.contact.force(e[0], e[1], v[0], v[1], spin, approach, film_spin)
         angle = self.bushing_angle(t, q)
         return contact_force_in_frame(
-            self.contact, angle, self._bushing_sign, (e[0], e[1]), (v[0], v[1]), spin, approach
-        )
+            self.contact, angle, self._bushing_sign, (e[0], e[1]), (v[0], v[1]), spin, approach,
+            film_spin,
+        )  # fmt: skip
 
     def gap(self, t: float, y: FloatArray) -> float:
         """Signed penetration of the state, on the bushing's own contour [m]."""
@@ -319,6 +329,13 @@ class FourBarContactSystem(ContactSystemBase):
         omega2 = 0.0 if second == "ground" else float(qd[_ANGLE_INDEX[second]])
         rho = self.contact.friction_arm
         return (omega1 - omega2) - omega2 * math.hypot(e[0], e[1]) / rho if rho else 0.0
+
+    def _film_spin(self, qd: FloatArray) -> float:
+        """The sum of the two bodies' angular velocities, the film's wedge [rad/s]."""
+        first, second = JOINT_BODIES[self.joint]
+        omega1 = self.omega if first == "crank" else float(qd[_ANGLE_INDEX[first]])
+        omega2 = 0.0 if second == "ground" else float(qd[_ANGLE_INDEX[second]])
+        return omega1 + omega2
 
     def _mass_and_forces(
         self, t: float, q: FloatArray, qd: FloatArray
@@ -457,7 +474,7 @@ def four_bar_contact(
     Parameters
     ----------
     inputs : MechanismInputs
-        The joint and its elastic law.
+        The joint, its elastic law and its oil film.
     settings : ContactImpactSettings
         The ``[dynamics]`` settings of the contact–impact model.
     joint : str
@@ -482,7 +499,9 @@ def four_bar_contact(
     # -R_b with the bushing there (the slider-crank's rule keys on its own bodies)
     first = JOINT_BODIES[joint][0]
     arm = -geometry.bushing_radius if bushing_body == first else geometry.pin_radius
-    return JointContact.for_joint(settings, inputs.elastic, geometry, arm, contour)
+    return JointContact.for_joint(
+        settings, inputs.elastic, geometry, arm, contour, film=inputs.film
+    )
 
 
 def four_bar_contact_impact(

@@ -53,6 +53,7 @@ def contact_force_in_frame(
     v: tuple[float, float],
     spin: float,
     approach: float,
+    film_spin: float | None = None,
 ) -> tuple[float, float, float, float, float, float, float, float]:
     """:meth:`JointContact.force` on a bushing turned by ``angle``, returned in the global frame.
 
@@ -70,6 +71,9 @@ def contact_force_in_frame(
         The spin the contact multiplies by its friction arm [rad/s].
     approach : float
         ``delta'^-`` of the current contact [m/s].
+    film_spin : float, optional
+        Sum of the two bodies' angular velocities, for an oil film [rad/s] (a scalar: the
+        frame's turn by ``s R(-theta_b)`` is a rotation and leaves it as it is).
 
     Returns
     -------
@@ -78,7 +82,9 @@ def contact_force_in_frame(
     """
     ex, ey = to_bushing_frame(angle, sign, e[0], e[1])
     vx, vy = to_bushing_frame(angle, sign, v[0], v[1])
-    jx, jy, normal, tangential, nx, ny, delta, slip = contact.force(ex, ey, vx, vy, spin, approach)
+    jx, jy, normal, tangential, nx, ny, delta, slip = contact.force(
+        ex, ey, vx, vy, spin, approach, film_spin
+    )
     # back: s R(theta_b) is the inverse of s R(-theta_b)
     jx, jy = to_bushing_frame(-angle, sign, jx, jy)
     nx, ny = to_bushing_frame(-angle, sign, nx, ny)

@@ -96,6 +96,7 @@ from jointwear.errors import ConfigError
 __all__ = [
     "FILM_MODELS",
     "FilmParameters",
+    "check_film_band",
     "film_eccentricity",
     "joint_film_force",
     "long_bearing",
@@ -209,6 +210,26 @@ class FilmParameters:
                 f"than the clearance {clearance:.4g} m"
             )
         return band
+
+
+def check_film_band(model: str, roughness: float, clearance: float) -> None:
+    """Refuse a film whose default transition band is not narrower than the clearance.
+
+    Parameters
+    ----------
+    model : str
+        ``lubrication.model`` (a film model of the contact–impact dynamics).
+    roughness : float
+        Composite roughness ``sigma`` [m].
+    clearance : float
+        Radial clearance ``c`` [m].
+
+    Raises
+    ------
+    ConfigError
+        One line naming ``lubrication.roughness``: ``3 sigma >= c``.
+    """
+    FilmParameters(model, roughness=roughness).band(clearance)
 
 
 def sommerfeld_angle(theta: float, eps: float) -> float:
