@@ -42,8 +42,18 @@ _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contra
 
 
 @njit(inline="always", **_FLAGS)
-def _window(centre, tilt, tilt_across, z, gap_min, cos_e, sin_e, cpsi, spsi, nodes, reach):
-    """First node and width of the window of a load (indices into the padded arrays)."""
+def _window(centre, tilt, tilt_across, z, gap_min, cos_e, sin_e, cpsi, spsi, nodes, reach,
+            smallest):  # fmt: skip
+    """First node and width of the window of a load (indices into the padded arrays).
+
+    A node at ``phi`` from the load can touch only if ``d cos(phi) + e |sin(phi)| >
+    g_min`` (``d`` the deepest slice's offset, ``e`` the largest lateral offset);
+    ``d cos(phi) + e |sin(phi)| = r cos(|phi| - alpha)`` with ``r = hypot(d, e)``,
+    ``alpha = atan2(e, d)``, and ``g_min >= smallest`` (the smallest gap of all [m]),
+    so none lies beyond ``|phi| = alpha + arccos(smallest / r)``: each side is scanned
+    in from there (two nodes further for round-off) to its outermost node that can
+    touch, the same node a scan of the whole half circle finds.
+    """
     deepest = -1e300
     for i in range(z.size):
         deepest = max(deepest, centre + tilt * z[i])
@@ -51,20 +61,30 @@ def _window(centre, tilt, tilt_across, z, gap_min, cos_e, sin_e, cpsi, spsi, nod
     side = abs(tilt_across) * np.abs(z).max()
     centre_node = math.floor(math.atan2(spsi, cpsi) / (2 * math.pi) * nodes + 0.5) % nodes
     low, high = centre_node + nodes, centre_node + nodes
+    radius = math.hypot(deepest, side)
+    counter, clockwise = (nodes - 1) // 2, nodes // 2
+    if smallest > 0.0:
+        if radius <= smallest:
+            return low, 1, deepest
+        bound = math.atan2(side, deepest) + math.acos(smallest / radius)
+        steps = math.floor(bound / (2 * math.pi) * nodes + 0.5) + 2
+        counter, clockwise = min(counter, steps), min(clockwise, steps)
     # counter-clockwise, then clockwise: the outermost node that can touch (a window of
     # at most a turn, which a lateral tilt may need beyond the quarter circles)
-    for step in range(1, (nodes - 1) // 2 + 1):
+    for step in range(counter, 0, -1):
         j = centre_node + nodes + step
         c = cos_e[j] * cpsi + sin_e[j] * spsi
         sn = sin_e[j] * cpsi - cos_e[j] * spsi
         if deepest * c + side * abs(sn) > gap_min[j]:
             high = j
-    for step in range(1, nodes // 2 + 1):
+            break
+    for step in range(clockwise, 0, -1):
         j = centre_node + nodes - step
         c = cos_e[j] * cpsi + sin_e[j] * spsi
         sn = sin_e[j] * cpsi - cos_e[j] * spsi
         if deepest * c + side * abs(sn) > gap_min[j]:
             low = j
+            break
     return low, high - low + 1, deepest
 
 
@@ -192,6 +212,7 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
     count, nodes = z.size, gap.shape[1] // 3
     half = 0.5 * (z[-1] - z[0]) * count / max(count - 1, 1)
     extent = np.abs(z).max()
+    smallest = gap_min.min()
     c = np.empty(nodes)
     sn = np.empty(nodes)
     kept = np.empty((count, nodes))  # the last evaluation's pressure of the window
@@ -209,7 +230,7 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
         status[k] = NOT_CONVERGED
         reach = _REACH
         start, width, covered = _window(centre, tilt, across_tilt, z, gap_min, cos_e, sin_e,
-                                        cpsi, spsi, nodes, reach)  # fmt: skip
+                                        cpsi, spsi, nodes, reach, smallest)  # fmt: skip
         for jj in range(width):
             c[jj] = cos_e[start + jj] * cpsi + sin_e[start + jj] * spsi
             sn[jj] = sin_e[start + jj] * cpsi - cos_e[start + jj] * spsi
@@ -260,7 +281,7 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
                 # beyond the window: widen it about the balance found and go on
                 reach *= 4.0
                 start, width, covered = _window(centre, tilt, across_tilt, z, gap_min, cos_e,
-                                                sin_e, cpsi, spsi, nodes, reach)  # fmt: skip
+                                                sin_e, cpsi, spsi, nodes, reach, smallest)  # fmt: skip
                 for jj in range(width):
                     c[jj] = cos_e[start + jj] * cpsi + sin_e[start + jj] * spsi
                     sn[jj] = sin_e[start + jj] * cpsi - cos_e[start + jj] * spsi
