@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, uint64
 
 #: ``status`` of a load
 CONVERGED, NOT_CONVERGED = 0, 1
@@ -131,7 +131,7 @@ def _spring(depth, coefficient, exponent, law):
 
 
 @njit(inline="always", **_FLAGS)
-def _full(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent, law, series, kept,
+def _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent, law, series, kept,
           depth, rate, bend):  # fmt: skip
     """One slice at offsets ``s``, ``t`` [m]: resultant along the load [N], ``dF/ds``
     [N/m] and ``sum |f|`` [N]; each node's pressure into ``kept`` [Pa], its depth [m]
@@ -139,25 +139,26 @@ def _full(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent, law, 
     ``rate``, ``bend`` (for :func:`_moved`). Called with ``law`` and ``series`` as
     literals: a loop without branches is vectorised."""
     force, slope, magnitude = 0.0, 0.0, 0.0
-    for jj in range(width):
+    row, first = uint64(i), uint64(start)
+    for jj in range(uint64(width)):
         across = t * c[jj] - s * sn[jj]
         curvature, extra, second = _curvature(across, rp, series)
-        d = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
+        d = s * c[jj] + t * sn[jj] - gap[row, first + jj] - curvature
         r = c[jj] + sn[jj] * extra
-        depth[jj] = d
-        rate[jj] = r
-        bend[jj] = -sn[jj] * sn[jj] * second
+        depth[row, jj] = d
+        rate[row, jj] = r
+        bend[row, jj] = -sn[jj] * sn[jj] * second
         p, stiffness = _spring(d, coefficient, exponent, law)
-        kept[jj] = p
-        f = p * area[start + jj]
+        kept[row, jj] = p
+        f = p * area[row, first + jj]
         force += f * c[jj]
         magnitude += f
-        slope += stiffness * area[start + jj] * c[jj] * r
+        slope += stiffness * area[row, first + jj] * c[jj] * r
     return force, slope, magnitude
 
 
 @njit(inline="always", **_FLAGS)
-def _moved(step, c, area, start, width, coefficient, exponent, law, kept, depth, rate, bend):
+def _moved(i, step, c, area, start, width, coefficient, exponent, law, kept, depth, rate, bend):
     """:func:`_full` after a small step ``step`` [m] of the slice from its last full
     evaluation or move: the depth moved by its Taylor polynomial, ``delta += step
     delta' + step^2 delta'' / 2``, ``delta' += step delta''`` (the neglected terms are
@@ -165,54 +166,55 @@ def _moved(step, c, area, start, width, coefficient, exponent, law, kept, depth,
     geometry or the pin's curvature."""
     force, slope, magnitude = 0.0, 0.0, 0.0
     half = 0.5 * step
-    for jj in range(width):
-        d = depth[jj] + step * (rate[jj] + half * bend[jj])
-        r = rate[jj] + step * bend[jj]
-        depth[jj] = d
-        rate[jj] = r
+    row, first = uint64(i), uint64(start)
+    for jj in range(uint64(width)):
+        d = depth[row, jj] + step * (rate[row, jj] + half * bend[row, jj])
+        r = rate[row, jj] + step * bend[row, jj]
+        depth[row, jj] = d
+        rate[row, jj] = r
         p, stiffness = _spring(d, coefficient, exponent, law)
-        kept[jj] = p
-        f = p * area[start + jj]
+        kept[row, jj] = p
+        f = p * area[row, first + jj]
         force += f * c[jj]
         magnitude += f
-        slope += stiffness * area[start + jj] * c[jj] * r
+        slope += stiffness * area[row, first + jj] * c[jj] * r
     return force, slope, magnitude
 
 
 @njit(inline="always", **_FLAGS)
-def _slice(s, t, c, sn, gap, area, start, width, rp, law, kept, depth, rate, bend):
+def _slice(i, s, t, c, sn, gap, area, start, width, rp, law, kept, depth, rate, bend):
     """:func:`_full` with the law ``law`` (``R_p``, ``c``, ``n``) and the series chosen."""
     coefficient, exponent = law[1], law[2]
     if (abs(s) + abs(t)) ** 2 <= _SERIES * rp * rp:
         if exponent == 1.0:
-            return _full(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+            return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
                          _LINEAR, True, kept, depth, rate, bend)  # fmt: skip
         if exponent == 1.5:
-            return _full(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+            return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
                          _HERTZIAN, True, kept, depth, rate, bend)  # fmt: skip
-        return _full(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+        return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
                      _POWER, True, kept, depth, rate, bend)  # fmt: skip
     if exponent == 1.0:
-        return _full(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+        return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
                      _LINEAR, False, kept, depth, rate, bend)  # fmt: skip
     if exponent == 1.5:
-        return _full(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+        return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
                      _HERTZIAN, False, kept, depth, rate, bend)  # fmt: skip
-    return _full(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+    return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
                  _POWER, False, kept, depth, rate, bend)  # fmt: skip
 
 
 @njit(inline="always", **_FLAGS)
-def _slice_moved(step, c, area, start, width, law, kept, depth, rate, bend):
+def _slice_moved(i, step, c, area, start, width, law, kept, depth, rate, bend):
     """:func:`_moved` with the law ``law`` (``R_p``, ``c``, ``n``)."""
     coefficient, exponent = law[1], law[2]
     if exponent == 1.0:
-        return _moved(step, c, area, start, width, coefficient, exponent, _LINEAR, kept,
+        return _moved(i, step, c, area, start, width, coefficient, exponent, _LINEAR, kept,
                       depth, rate, bend)  # fmt: skip
     if exponent == 1.5:
-        return _moved(step, c, area, start, width, coefficient, exponent, _HERTZIAN, kept,
+        return _moved(i, step, c, area, start, width, coefficient, exponent, _HERTZIAN, kept,
                       depth, rate, bend)  # fmt: skip
-    return _moved(step, c, area, start, width, coefficient, exponent, _POWER, kept, depth,
+    return _moved(i, step, c, area, start, width, coefficient, exponent, _POWER, kept, depth,
                   rate, bend)  # fmt: skip
 
 
@@ -280,13 +282,13 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
                 s, t = centre + tilt * z[i], across_tilt * z[i]
                 if reuse:
                     step = (centre - last_centre) + (tilt - last_tilt) * z[i]
-                    sums = _slice_moved(step, c, area[i], start, width, law, kept[i], depth[i],
-                                        rate[i], bend[i])  # fmt: skip
+                    sums = _slice_moved(i, step, c, area, start, width, law, kept, depth, rate,
+                                        bend)  # fmt: skip
                 else:
                     if abs(s) + abs(t) > 0.5 * rp:
                         small = 0.0  # (the curvature's third derivative bounded up to R_p / 2)
-                    sums = _slice(s, t, c, sn, gap[i], area[i], start, width, rp, law, kept[i],
-                                  depth[i], rate[i], bend[i])  # fmt: skip
+                    sums = _slice(i, s, t, c, sn, gap, area, start, width, rp, law, kept, depth,
+                                  rate, bend)  # fmt: skip
                 force, slope, magnitude = sums
                 force_sum += force
                 moment_sum += force * z[i]
