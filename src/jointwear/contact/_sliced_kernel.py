@@ -16,9 +16,13 @@ direction, so ``cos`` and ``sin`` of every node's angle from the load are comput
 per load; only a window of nodes is visited, those that the pin, a little further in
 than its warm start, could touch on any slice (the smallest gap of every node over the
 slices against the deepest slice's offset; the window is widened and the load solved
-again where the balance goes beyond it); arrays are repeated three times so that a
-window never wraps; and the pressure of the balanced load is kept from its last evaluation, to
-be added to the wear (``K_d p ds``) or written out.
+again where the balance goes beyond it; the scan of each side starts from the angle the
+smallest gap of all bounds); arrays are repeated three times so that a window never wraps;
+a Newton step within ``(eps / 64)^(1/3) R_p`` of the last full evaluation moves every
+slice's depths by their second-order Taylor polynomial, without the geometry (the planar
+kernel's reuse: a warm load costs one full evaluation of the slices and one move); and
+the pressure of the balanced load is kept from its last evaluation, to be added to the
+wear (``K_d p ds``) or written out.
 
 Imported by :mod:`jointwear.contact.sliced` on first use only (loading numba costs a few
 tenths of a second).
