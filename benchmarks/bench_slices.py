@@ -2,7 +2,7 @@
 
 Run from the repository root::
 
-    python benchmarks/bench_slices.py            # everything, ~6 minutes
+    python benchmarks/bench_slices.py            # everything, ~6 minutes (CPU ~2 minutes)
     python benchmarks/bench_slices.py --quick    # a smoke run, ~1 minute
 
 Prints one Markdown table: the median CPU time of one contour update of the
@@ -117,7 +117,8 @@ def main() -> None:
     peak = result.summary()["peak_wear_depth_m"]
     table.add(
         f"20 slices x {revolutions} revolutions, misaligned, updated every revolution",
-        f"{took:.1f} s, CPU {cpu:.1f} s (peak wear {peak * 1e6:.2f} um)",
+        f"{took:.1f} s, CPU {cpu:.1f} s, {cpu / revolutions * 1e3:.2f} ms a revolution "
+        f"(peak wear {peak * 1e6:.2f} um)",
         "15000 revolutions <= 60 s",
     )
     memory = {n: allocated(n, "misaligned") for n in (5, 10, 20)}

@@ -16,9 +16,13 @@ direction, so ``cos`` and ``sin`` of every node's angle from the load are comput
 per load; only a window of nodes is visited, those that the pin, a little further in
 than its warm start, could touch on any slice (the smallest gap of every node over the
 slices against the deepest slice's offset; the window is widened and the load solved
-again where the balance goes beyond it); arrays are repeated three times so that a
-window never wraps; and the pressure of the balanced load is kept from its last evaluation, to
-be added to the wear (``K_d p ds``) or written out.
+again where the balance goes beyond it; the scan of each side starts from the angle the
+smallest gap of all bounds); arrays are repeated three times so that a window never wraps;
+a Newton step within ``(eps / 64)^(1/3) R_p`` of the last full evaluation moves every
+slice's depths by their second-order Taylor polynomial, without the geometry (the planar
+kernel's reuse: a warm load costs one full evaluation of the slices and one move); and
+the pressure of the balanced load is kept from its last evaluation, to be added to the
+wear (``K_d p ds``) or written out.
 
 Imported by :mod:`jointwear.contact.sliced` on first use only (loading numba costs a few
 tenths of a second).
@@ -29,7 +33,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, uint64
 
 #: ``status`` of a load
 CONVERGED, NOT_CONVERGED = 0, 1
@@ -38,12 +42,27 @@ _EPS = 2.220446049250313e-16
 _SERIES = 1e-4
 #: the window holds the nodes the pin could touch this much further in than its start [-]
 _REACH = 1e-2
+#: steps from the last full evaluation up to ``_REUSE R_p`` in all move the depths by
+#: their second-order Taylor polynomial to within ``eps s / 16`` (:func:`_moved`)
+_REUSE = (_EPS / 64.0) ** (1.0 / 3.0)
+#: spring laws ``p = c delta``, ``p = c delta^1.5``, ``p = c delta^n``
+_LINEAR, _HERTZIAN, _POWER = 1, 2, 3
 _FLAGS = {"cache": True, "error_model": "numpy", "fastmath": {"reassoc", "contract"}}
 
 
 @njit(inline="always", **_FLAGS)
-def _window(centre, tilt, tilt_across, z, gap_min, cos_e, sin_e, cpsi, spsi, nodes, reach):
-    """First node and width of the window of a load (indices into the padded arrays)."""
+def _window(centre, tilt, tilt_across, z, gap_min, cos_e, sin_e, cpsi, spsi, nodes, reach,
+            smallest):  # fmt: skip
+    """First node and width of the window of a load (indices into the padded arrays).
+
+    A node at ``phi`` from the load can touch only if ``d cos(phi) + e |sin(phi)| >
+    g_min`` (``d`` the deepest slice's offset, ``e`` the largest lateral offset);
+    ``d cos(phi) + e |sin(phi)| = r cos(|phi| - alpha)`` with ``r = hypot(d, e)``,
+    ``alpha = atan2(e, d)``, and ``g_min >= smallest`` (the smallest gap of all [m]),
+    so none lies beyond ``|phi| = alpha + arccos(smallest / r)``: each side is scanned
+    in from there (two nodes further for round-off) to its outermost node that can
+    touch, the same node a scan of the whole half circle finds.
+    """
     deepest = -1e300
     for i in range(z.size):
         deepest = max(deepest, centre + tilt * z[i])
@@ -51,126 +70,156 @@ def _window(centre, tilt, tilt_across, z, gap_min, cos_e, sin_e, cpsi, spsi, nod
     side = abs(tilt_across) * np.abs(z).max()
     centre_node = math.floor(math.atan2(spsi, cpsi) / (2 * math.pi) * nodes + 0.5) % nodes
     low, high = centre_node + nodes, centre_node + nodes
+    radius = math.hypot(deepest, side)
+    counter, clockwise = (nodes - 1) // 2, nodes // 2
+    if smallest > 0.0:
+        if radius <= smallest:
+            return low, 1, deepest
+        bound = math.atan2(side, deepest) + math.acos(smallest / radius)
+        steps = math.floor(bound / (2 * math.pi) * nodes + 0.5) + 2
+        counter, clockwise = min(counter, steps), min(clockwise, steps)
     # counter-clockwise, then clockwise: the outermost node that can touch (a window of
     # at most a turn, which a lateral tilt may need beyond the quarter circles)
-    for step in range(1, (nodes - 1) // 2 + 1):
+    for step in range(counter, 0, -1):
         j = centre_node + nodes + step
         c = cos_e[j] * cpsi + sin_e[j] * spsi
         sn = sin_e[j] * cpsi - cos_e[j] * spsi
         if deepest * c + side * abs(sn) > gap_min[j]:
             high = j
-    for step in range(1, nodes // 2 + 1):
+            break
+    for step in range(clockwise, 0, -1):
         j = centre_node + nodes - step
         c = cos_e[j] * cpsi + sin_e[j] * spsi
         sn = sin_e[j] * cpsi - cos_e[j] * spsi
         if deepest * c + side * abs(sn) > gap_min[j]:
             low = j
+            break
     return low, high - low + 1, deepest
 
 
 @njit(inline="always", **_FLAGS)
 def _curvature(across, rp, series):
-    """The pin's curvature term of a node's penetration, ``y^2 / (sqrt(R^2 - y^2) + R)``
-    [m], and ``y / sqrt(R^2 - y^2)`` [-] for the pin ``y`` [m] across the node's ray
-    (:func:`jointwear.geometry.contour.pin_penetration`); with ``series``
-    (``y^2 <= 1e-4 R^2`` on the whole slice) from their series to ``u^2``, ``u = y^2 /
-    R^2``, within ``u^3`` of each (no square root, no division)."""
+    """The pin's curvature term of a node's penetration ``g = y^2 / (sqrt(R^2 - y^2) +
+    R)`` [m], ``g' = y / sqrt(R^2 - y^2)`` [-] and ``g'' = R^2 / (R^2 - y^2)^1.5``
+    [1/m] for the pin ``y`` [m] across the node's ray
+    (:func:`jointwear.geometry.contour.pin_penetration`); with ``series`` (``y^2 <= 1e-4
+    R^2`` on the whole slice) from their series to ``u^2``, ``u = y^2 / R^2``, within
+    ``u^3`` of each (no square root, no division)."""
     if series:
         lateral = across * across
-        u = lateral * (1.0 / (rp * rp))
-        return lateral * (0.5 / rp) * (1.0 + u * (0.25 + 0.125 * u)), (across / rp) * (
-            1.0 + u * (0.5 + 0.375 * u)
+        inverse = 1.0 / rp
+        u = lateral * (inverse * inverse)
+        return (
+            lateral * (0.5 * inverse) * (1.0 + u * (0.25 + 0.125 * u)),
+            (across * inverse) * (1.0 + u * (0.5 + 0.375 * u)),
+            inverse * (1.0 + u * (1.5 + 1.875 * u)),
         )
     lateral = min(across * across, rp * rp * (1.0 - _EPS))
     root = math.sqrt(rp * rp - lateral)
-    return lateral / (root + rp), across / root
+    return lateral / (root + rp), across / root, rp * rp / (root * root * root)
 
 
 @njit(inline="always", **_FLAGS)
-def _linear(s, t, c, sn, gap, area, start, width, rp, coefficient, kept, series):
-    """One slice under ``p = c delta``: resultant along the load [N], ``dF/ds`` [N/m] and
-    ``sum |f|`` [N]; each node's pressure into ``kept`` [Pa]. (One loop for each branch of
-    :func:`_curvature`: a loop without branches is vectorised.)"""
-    force, slope, magnitude = 0.0, 0.0, 0.0
-    if series:
-        for jj in range(width):
-            across = t * c[jj] - s * sn[jj]
-            curvature, extra = _curvature(across, rp, True)
-            depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
-            p = coefficient * max(depth, 0.0)
-            kept[jj] = p
-            f = p * area[start + jj]
-            force += f * c[jj]
-            magnitude += f
-            dp = coefficient if depth > 0.0 else 0.0
-            slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
-        return force, slope, magnitude
-    for jj in range(width):
-        across = t * c[jj] - s * sn[jj]
-        curvature, extra = _curvature(across, rp, False)
-        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
-        p = coefficient * max(depth, 0.0)
-        kept[jj] = p
-        f = p * area[start + jj]
-        force += f * c[jj]
-        magnitude += f
-        dp = coefficient if depth > 0.0 else 0.0
-        slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
-    return force, slope, magnitude
-
-
-@njit(inline="always", **_FLAGS)
-def _hertzian(s, t, c, sn, gap, area, start, width, rp, coefficient, kept, series):
-    """:func:`_linear` under ``p = c delta^1.5``."""
-    force, slope, magnitude = 0.0, 0.0, 0.0
-    if series:
-        for jj in range(width):
-            across = t * c[jj] - s * sn[jj]
-            curvature, extra = _curvature(across, rp, True)
-            depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
-            positive = max(depth, 0.0)
-            half = math.sqrt(positive)
-            p = coefficient * positive * half
-            kept[jj] = p
-            f = p * area[start + jj]
-            force += f * c[jj]
-            magnitude += f
-            slope += 1.5 * coefficient * half * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
-        return force, slope, magnitude
-    for jj in range(width):
-        across = t * c[jj] - s * sn[jj]
-        curvature, extra = _curvature(across, rp, False)
-        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
-        positive = max(depth, 0.0)
+def _spring(depth, coefficient, exponent, law):
+    """Pressure [Pa] and its derivative in the depth [Pa/m] of ``p = c delta^n``."""
+    positive = max(depth, 0.0)
+    if law == _LINEAR:
+        return coefficient * positive, coefficient if depth > 0.0 else 0.0
+    if law == _HERTZIAN:
         half = math.sqrt(positive)
-        p = coefficient * positive * half
-        kept[jj] = p
-        f = p * area[start + jj]
+        return coefficient * positive * half, 1.5 * coefficient * half
+    stiffness = 0.0
+    if depth > 0.0:
+        stiffness = coefficient * exponent * positive ** (exponent - 1.0)
+    return coefficient * positive**exponent, stiffness
+
+
+@njit(inline="always", **_FLAGS)
+def _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent, law, series, kept,
+          depth, rate, bend):  # fmt: skip
+    """One slice at offsets ``s``, ``t`` [m]: resultant along the load [N], ``dF/ds``
+    [N/m] and ``sum |f|`` [N]; each node's pressure into ``kept`` [Pa], its depth [m]
+    and the depth's first and second derivative in ``s`` [-, 1/m] into ``depth``,
+    ``rate``, ``bend`` (for :func:`_moved`). Called with ``law`` and ``series`` as
+    literals: a loop without branches is vectorised."""
+    force, slope, magnitude = 0.0, 0.0, 0.0
+    row, first = uint64(i), uint64(start)
+    for jj in range(uint64(width)):
+        across = t * c[jj] - s * sn[jj]
+        curvature, extra, second = _curvature(across, rp, series)
+        d = s * c[jj] + t * sn[jj] - gap[row, first + jj] - curvature
+        r = c[jj] + sn[jj] * extra
+        depth[row, jj] = d
+        rate[row, jj] = r
+        bend[row, jj] = -sn[jj] * sn[jj] * second
+        p, stiffness = _spring(d, coefficient, exponent, law)
+        kept[row, jj] = p
+        f = p * area[row, first + jj]
         force += f * c[jj]
         magnitude += f
-        slope += 1.5 * coefficient * half * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
+        slope += stiffness * area[row, first + jj] * c[jj] * r
     return force, slope, magnitude
 
 
 @njit(inline="always", **_FLAGS)
-def _power(s, t, c, sn, gap, area, start, width, rp, coefficient, exponent, kept, series):
-    """:func:`_linear` under ``p = c delta^n``."""
+def _moved(i, step, c, area, start, width, coefficient, exponent, law, kept, depth, rate, bend):
+    """:func:`_full` after a small step ``step`` [m] of the slice from its last full
+    evaluation or move: the depth moved by its Taylor polynomial, ``delta += step
+    delta' + step^2 delta'' / 2``, ``delta' += step delta''`` (the neglected terms are
+    below ``eps s / 16`` within ``_REUSE R_p``, as in the planar kernel), without the
+    geometry or the pin's curvature."""
     force, slope, magnitude = 0.0, 0.0, 0.0
-    for jj in range(width):
-        across = t * c[jj] - s * sn[jj]
-        curvature, extra = _curvature(across, rp, series)
-        depth = s * c[jj] + t * sn[jj] - gap[start + jj] - curvature
-        positive = max(depth, 0.0)
-        p = coefficient * positive**exponent
-        dp = 0.0
-        if depth > 0.0:
-            dp = coefficient * exponent * positive ** (exponent - 1.0)
-        kept[jj] = p
-        f = p * area[start + jj]
+    half = 0.5 * step
+    row, first = uint64(i), uint64(start)
+    for jj in range(uint64(width)):
+        d = depth[row, jj] + step * (rate[row, jj] + half * bend[row, jj])
+        r = rate[row, jj] + step * bend[row, jj]
+        depth[row, jj] = d
+        rate[row, jj] = r
+        p, stiffness = _spring(d, coefficient, exponent, law)
+        kept[row, jj] = p
+        f = p * area[row, first + jj]
         force += f * c[jj]
         magnitude += f
-        slope += dp * area[start + jj] * c[jj] * (c[jj] + sn[jj] * extra)
+        slope += stiffness * area[row, first + jj] * c[jj] * r
     return force, slope, magnitude
+
+
+@njit(inline="always", **_FLAGS)
+def _slice(i, s, t, c, sn, gap, area, start, width, rp, law, kept, depth, rate, bend):
+    """:func:`_full` with the law ``law`` (``R_p``, ``c``, ``n``) and the series chosen."""
+    coefficient, exponent = law[1], law[2]
+    if (abs(s) + abs(t)) ** 2 <= _SERIES * rp * rp:
+        if exponent == 1.0:
+            return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+                         _LINEAR, True, kept, depth, rate, bend)  # fmt: skip
+        if exponent == 1.5:
+            return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+                         _HERTZIAN, True, kept, depth, rate, bend)  # fmt: skip
+        return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+                     _POWER, True, kept, depth, rate, bend)  # fmt: skip
+    if exponent == 1.0:
+        return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+                     _LINEAR, False, kept, depth, rate, bend)  # fmt: skip
+    if exponent == 1.5:
+        return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+                     _HERTZIAN, False, kept, depth, rate, bend)  # fmt: skip
+    return _full(i, s, t, c, sn, gap, area, start, width, rp, coefficient, exponent,
+                 _POWER, False, kept, depth, rate, bend)  # fmt: skip
+
+
+@njit(inline="always", **_FLAGS)
+def _slice_moved(i, step, c, area, start, width, law, kept, depth, rate, bend):
+    """:func:`_moved` with the law ``law`` (``R_p``, ``c``, ``n``)."""
+    coefficient, exponent = law[1], law[2]
+    if exponent == 1.0:
+        return _moved(i, step, c, area, start, width, coefficient, exponent, _LINEAR, kept,
+                      depth, rate, bend)  # fmt: skip
+    if exponent == 1.5:
+        return _moved(i, step, c, area, start, width, coefficient, exponent, _HERTZIAN, kept,
+                      depth, rate, bend)  # fmt: skip
+    return _moved(i, step, c, area, start, width, coefficient, exponent, _POWER, kept, depth,
+                  rate, bend)  # fmt: skip
 
 
 @njit(**_FLAGS)
@@ -188,13 +237,15 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
     from a touch), doubled until the slices carry the load, then Newton's method from
     that side (the resultant grows and is convex in the offset).
     """
-    rp, coefficient, exponent = law[0], law[1], law[2]
+    rp = law[0]
     count, nodes = z.size, gap.shape[1] // 3
     half = 0.5 * (z[-1] - z[0]) * count / max(count - 1, 1)
     extent = np.abs(z).max()
+    smallest = gap_min.min()
     c = np.empty(nodes)
     sn = np.empty(nodes)
     kept = np.empty((count, nodes))  # the last evaluation's pressure of the window
+    depth, rate, bend = np.empty((count, nodes)), np.empty((count, nodes)), np.empty((count, nodes))
     approach = 1e-9 * rp
     for k in range(load.size):
         cpsi, spsi = math.cos(azimuth[k]), math.sin(azimuth[k])
@@ -209,27 +260,39 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
         status[k] = NOT_CONVERGED
         reach = _REACH
         start, width, covered = _window(centre, tilt, across_tilt, z, gap_min, cos_e, sin_e,
-                                        cpsi, spsi, nodes, reach)  # fmt: skip
+                                        cpsi, spsi, nodes, reach, smallest)  # fmt: skip
         for jj in range(width):
             c[jj] = cos_e[start + jj] * cpsi + sin_e[start + jj] * spsi
             sn[jj] = sin_e[start + jj] * cpsi - cos_e[start + jj] * spsi
         used = 0
+        travel = math.inf  # how far the slices moved since the last full evaluation [m]
+        small = 0.0
+        last_centre, last_tilt = centre, tilt
         while used < max_iterations:
             used += 1
             force_sum, moment_sum, k0, k1, k2, total, k_abs, kz_abs = (0.0,) * 8
+            move = abs(centre - last_centre) + abs(tilt - last_tilt) * extent
+            reuse = travel + move <= small
+            if reuse:
+                travel += move
+                deepest = -1e300
+                for i in range(count):
+                    deepest = max(deepest, centre + tilt * z[i])
+                reuse = deepest <= covered
+            if not reuse:
+                travel = 0.0
+                small = _REUSE * rp
             for i in range(count):
                 s, t = centre + tilt * z[i], across_tilt * z[i]
-                row, areas, out = gap[i], area[i], kept[i]
-                series = (abs(s) + abs(t)) ** 2 <= _SERIES * rp * rp
-                if exponent == 1.0:
-                    sums = _linear(s, t, c, sn, row, areas, start, width, rp, coefficient, out,
-                                   series)  # fmt: skip
-                elif exponent == 1.5:
-                    sums = _hertzian(s, t, c, sn, row, areas, start, width, rp, coefficient, out,
-                                     series)  # fmt: skip
+                if reuse:
+                    step = (centre - last_centre) + (tilt - last_tilt) * z[i]
+                    sums = _slice_moved(i, step, c, area, start, width, law, kept, depth, rate,
+                                        bend)  # fmt: skip
                 else:
-                    sums = _power(s, t, c, sn, row, areas, start, width, rp, coefficient,
-                                  exponent, out, series)  # fmt: skip
+                    if abs(s) + abs(t) > 0.5 * rp:
+                        small = 0.0  # (the curvature's third derivative bounded up to R_p / 2)
+                    sums = _slice(i, s, t, c, sn, gap, area, start, width, rp, law, kept, depth,
+                                  rate, bend)  # fmt: skip
                 force, slope, magnitude = sums
                 force_sum += force
                 moment_sum += force * z[i]
@@ -239,6 +302,7 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
                 total += magnitude
                 k_abs += abs(slope)
                 kz_abs += abs(slope * z[i])
+            last_centre, last_tilt = centre, tilt
             size = max(abs(centre), abs(tilt) * extent)
             floor = max(tolerance, 8.0 * _EPS * total)
             residual = force_sum - load[k]
@@ -259,11 +323,13 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
                     break
                 # beyond the window: widen it about the balance found and go on
                 reach *= 4.0
-                start, width, covered = _window(centre, tilt, across_tilt, z, gap_min, cos_e,
-                                                sin_e, cpsi, spsi, nodes, reach)  # fmt: skip
+                start, width, covered = _window(centre, tilt, across_tilt, z, gap_min,
+                                                cos_e, sin_e, cpsi, spsi, nodes, reach,
+                                                smallest)  # fmt: skip
                 for jj in range(width):
                     c[jj] = cos_e[start + jj] * cpsi + sin_e[start + jj] * spsi
                     sn[jj] = sin_e[start + jj] * cpsi - cos_e[start + jj] * spsi
+                travel = math.inf
                 continue
             if free:
                 det = k0 * k2 - k1 * k1

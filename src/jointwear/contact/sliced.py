@@ -139,6 +139,7 @@ class SlicedSolver:
         self.slices = slices
         self.misalignment, self.misalignment_plane = misalignment, misalignment_plane
         self.load_offset, self.matrix, self.play = load_offset, matrix, play
+        self._padded: tuple[FloatArray, FloatArray] | None = None
 
     @classmethod
     def from_config(cls, config: Config, planar: ContactSolver) -> SlicedSolver:
@@ -265,13 +266,23 @@ class SlicedSolver:
         relative = self.misalignment_plane - azimuth
         return self.misalignment * np.cos(relative), self.misalignment * np.sin(relative)
 
-    def _areas(self, contour: SlicedContour) -> FloatArray:
-        """Every node's spring area [m^2], shape (N, nodes) (:class:`SliceContact`'s)."""
-        radius, width = contour.radius, self.slices.width
+    def _areas(self, contour: SlicedContour, radius: FloatArray) -> FloatArray:
+        """Every node's spring area [m^2], shape (N, nodes) (:class:`SliceContact`'s), of
+        the slices' radius ``radius`` [m]."""
+        width = self.slices.width
         if self.slice_law.force_area is None:
             return radius * contour.dtheta * width
         share = self.slice_law.force_area * width / self.slices.length
         return np.full(radius.shape, share)
+
+    def _padded_angles(self, theta: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """``cos`` and ``sin`` of the node angles ``theta`` [rad], each three times (the
+        compiled balance's windows never wrap); the same for every revolution."""
+        padded = self._padded
+        if padded is None or padded[0].size != 3 * theta.size:
+            padded = (np.tile(np.cos(theta), 3), np.tile(np.sin(theta), 3))
+            self._padded = padded
+        return padded
 
     def _compiled(
         self,
@@ -287,9 +298,11 @@ class SlicedSolver:
         load, azimuth = (np.ascontiguousarray(a, dtype=float) for a in (cycle.load, cycle.azimuth))
         along, across = self._tilts(azimuth)
         law = np.array([self.pin.radius, self.slice_law.coefficient, self.slice_law.exponent])
-        gap, area = contour.radius - self.pin.radius, self._areas(contour)
+        radius = contour.radius
+        gap, area = radius - self.pin.radius, self._areas(contour, radius)
         theta, z = contour.theta, self.slices.centres
         count, nodes = gap.shape
+        cos_e, sin_e = self._padded_angles(theta)
         state = np.zeros((load.size, 2)) if guess is None else np.array(guess, dtype=float)
         status = np.zeros(load.size, dtype=np.int64)
         evaluations = np.zeros(load.size, dtype=np.int64)
@@ -298,8 +311,7 @@ class SlicedSolver:
         pressure = np.zeros((0, 0, 0)) if fused else np.zeros((count, load.size, nodes))
         kernel.revolution(
             load, azimuth, along, across, self.misalignment == 0, self.load_offset, z,
-            np.tile(gap, 3), np.tile(area, 3), np.tile(gap.min(axis=0), 3),
-            np.tile(np.cos(theta), 3), np.tile(np.sin(theta), 3), law,
+            np.tile(gap, 3), np.tile(area, 3), np.tile(gap.min(axis=0), 3), cos_e, sin_e, law,
             self.planar.tolerance, self.planar.max_iterations, state, status, evaluations,
             np.zeros(load.size) if sliding is None else np.asarray(sliding, dtype=float),
             self.planar.wear_coefficient if fused else 0.0, wear, pressure, guess is None,

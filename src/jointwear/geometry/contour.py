@@ -185,10 +185,17 @@ class BushingContour:
             wear = wear.copy()
             wear.setflags(write=False)
         radii.setflags(write=False)
+        return cls._of_valid(radii, axial_length, float(radius), wear)
+
+    @classmethod
+    def _of_valid(
+        cls, radii: FloatArray, axial_length: float, radius: float, wear: FloatArray
+    ) -> BushingContour:
+        """The contour of read-only ``radii`` [m] and ``wear`` [m] that the checks of
+        ``__post_init__`` would pass (the caller checked them), built as it leaves them."""
         contour = object.__new__(cls)
-        # the fields as __post_init__ leaves them
         contour.__dict__.update(
-            radius=radii, axial_length=axial_length, original_radius=float(radius), wear=wear
+            radius=radii, axial_length=axial_length, original_radius=radius, wear=wear
         )
         return contour
 

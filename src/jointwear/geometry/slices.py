@@ -46,7 +46,20 @@ class SlicedContour:
                 f"axial slices: the wear map must have shape (slices, nodes), got {wear.shape}"
             )
         width = axial_length / wear.shape[0]
-        return cls(tuple(BushingContour._of_depth(radius, row, width) for row in wear))
+        radii = radius + wear
+        if not (
+            wear.dtype == np.float64
+            and wear.shape[1] >= 16
+            and 0.0 < width < np.inf
+            and radii.min() > 0.0
+            and radii.max() < np.inf
+        ):  # (the checks of every row at once; a map they refuse goes through each row's)
+            return cls(tuple(BushingContour._of_depth(radius, row, width) for row in wear))
+        wear = wear.copy()
+        wear.setflags(write=False)
+        radii.setflags(write=False)
+        rows = zip(radii, wear, strict=True)
+        return cls(tuple(BushingContour._of_valid(r, width, float(radius), w) for r, w in rows))
 
     @property
     def count(self) -> int:
