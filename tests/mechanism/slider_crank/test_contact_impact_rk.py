@@ -16,8 +16,11 @@ import pytest
 
 from jointwear.config import Config
 from jointwear.mechanism.impact.free_pin import free_pin_impact
+from jointwear.mechanism.impact.integrator import integrate_contacts
+from jointwear.mechanism.impact.settings import ContactImpactSettings
 from jointwear.mechanism.slider_crank import contact_impact as ci
 from jointwear.mechanism.slider_crank.contact_impact import impact_kernel
+from jointwear.mechanism.slider_crank.dynamics import SliderCrank
 from jointwear.mechanism.stage import mechanism_inputs
 
 from ..joints import joint_contact
@@ -117,3 +120,30 @@ def test_other_systems_run_scipys_rk45(paper_config: Config) -> None:
     named = free_pin_impact(contact, mass=0.4, impact_velocity=0.1, method="RK45-compiled")
     assert named[0] == plain[0]
     assert named[1].evaluations == plain[1].evaluations
+
+
+def test_compiled_steps_are_scipys_rk45(paper_config: Config) -> None:
+    # without contact events the compiled loop takes RK45's steps: the same number of
+    # right-hand sides, the same states but for the rounding of the sums
+    config = paper_config.replace({"dynamics.model": "contact-impact"})
+    inputs = mechanism_inputs(config)
+    settings = ContactImpactSettings.from_config(config.dynamics)
+    mechanism = SliderCrank.from_config(config.mechanism)
+    contact = ci.slider_crank_contact(inputs, settings)
+    system = ci.SliderCrankContactSystem(mechanism, config.mechanism.crank_speed, contact)
+    y0, _ = ci.initial_state(system, 360)
+    period = 2.0 * np.pi / system.omega
+    samples = np.linspace(0.0, period, 361)
+    scipy_run = integrate_contacts(
+        system, (0.0, period), y0, in_contact=True, method="RK45", max_step=period / 360,
+        keep=samples,
+    )  # fmt: skip
+    compiled, states, _ = system.integrate_compiled(
+        (0.0, period), y0, True, settings, period / 360, samples
+    )
+    assert compiled.evaluations == scipy_run.evaluations
+    assert not compiled.impact_times
+    assert not scipy_run.impact_times
+    expected, _ = scipy_run.state(samples)
+    scale = np.max(np.abs(expected), axis=0)
+    np.testing.assert_array_less(np.max(np.abs(states - expected), axis=0), 1e-11 * scale)
