@@ -43,6 +43,10 @@ from benchmarks.bench_simulation import (  # noqa: E402
     row,
 )
 from tests.mechanism.impact.test_integrator import reference_contacts  # noqa: E402
+from tests.mechanism.slider_crank.test_contact_impact_rk import (  # noqa: E402
+    SEPARATION_PRONE,  # the separation-prone slider-crank of docs/wear-feedback.md
+    scar,
+)
 
 from jointwear import load_config  # noqa: E402
 from jointwear.config import Config  # noqa: E402
@@ -170,27 +174,18 @@ def bench_integration(quick: bool) -> None:
 
 # ---------------------------------------------------------------- worn joint
 
-#: the separation-prone slider-crank of docs/wear-feedback.md (push spring, 1 N preload,
-#: 240 rpm, 0.3 kg rod), the coupled run's dynamics
-SEPARATING = {
-    "mechanism.spring_mode": "push",
-    "mechanism.spring_preload": "1 N",
-    "mechanism.crank_speed": "240 rpm",
-    "mechanism.rod_mass": "0.3 kg",
-    "simulation.steps_per_revolution": 180,
-}
-
 
 def bench_worn(quick: bool) -> None:
-    """One solve of the dynamics on a worn contour (what a coupled run repeats), per case."""
+    """One solve of the dynamics on a worn contour (what a coupled run repeats), per case;
+    the slider-crank with LSODA (the default) and the compiled Dormand-Prince integration
+    (``dynamics.integrator = "RK45-compiled"``), alternately in the same run."""
     from jointwear.mechanism.stage import load_cycles
 
-    nodes = 360
-    theta = 2.0 * np.pi * np.arange(nodes) / nodes
-    # a scar 30 um deep (0.6 of the clearance) where the separating joint's load sits
-    scar = 3e-5 * np.exp(-(np.angle(np.exp(1j * (theta - 2.0))) ** 2) / 0.5)
+    wear = scar()
+    compiled = {"dynamics.integrator": "RK45-compiled"}
     cases = {
-        "separation-prone slider-crank (compiled RHS)": paper(**SEPARATING),
+        "separation-prone slider-crank (compiled RHS, LSODA)": paper(**SEPARATION_PRONE),
+        "separation-prone slider-crank (RK45-compiled)": paper(**SEPARATION_PRONE, **compiled),
         "four-bar, coupler-rocker (Python RHS)": load_config(
             REPO / "examples" / "four_bar.toml",
             overrides={
@@ -201,20 +196,29 @@ def bench_worn(quick: bool) -> None:
         ),
     }
     repeat = 2 if quick else 5
-    for name, config in cases.items():
-        load_cycles(config, wear_depth=scar)  # compile or load the kernel, warm caches
-        walls = []
-        for _ in range(repeat):
-            w0 = time.perf_counter()
-            cycle = next(iter(load_cycles(config, wear_depth=scar).values()))
-            walls.append(time.perf_counter() - w0)
-        extras = cycle.extras
+    times: dict[str, list[tuple[float, float]]] = {name: [] for name in cases}
+    extras = {}
+    for config in cases.values():
+        load_cycles(config, wear_depth=wear)  # compile or load the kernel, warm caches
+    for _ in range(repeat):
+        for name, config in cases.items():
+            w0, c0 = time.perf_counter(), time.process_time()
+            cycle = next(iter(load_cycles(config, wear_depth=wear).values()))
+            times[name].append((time.perf_counter() - w0, time.process_time() - c0))
+            extras[name] = cycle.extras
+    for name in cases:
+        wall, cpu = np.median(np.array(times[name]), axis=0)
         row(
             f"one solve on a worn contour: {name}",
-            f"{np.median(walls) * 1e3:.0f} ms ({extras['rhs_evaluations']} RHS calls, "
-            f"{extras['impacts']} impacts)",
+            f"{ms(wall, cpu)} ({extras[name]['rhs_evaluations']} RHS calls, "
+            f"{extras[name]['impacts']} impacts)",
             "<= 60 ms",
         )
+    lsoda, fast = (np.median(np.array(times[n]), axis=0) for n in list(cases)[:2])
+    row(
+        "one solve on a worn contour, slider-crank: RK45-compiled speed-up over LSODA",
+        f"{lsoda[0] / fast[0]:.1f}x wall, {lsoda[1] / fast[1]:.1f}x CPU",
+    )
 
 
 # ---------------------------------------------------------------- start-up

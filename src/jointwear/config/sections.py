@@ -215,7 +215,7 @@ class DynamicsConfig(Section):
     friction_velocity_tolerance: Annotated[float, si("velocity"), Field(gt=0)] = 1e-4
     friction_velocity_full: Annotated[Annotated[float, Field(gt=0)] | None, si("velocity")] = None
     impact_velocity_floor: Annotated[float, si("velocity"), Field(gt=0)] = 1e-3
-    integrator: Literal["LSODA", "Radau", "BDF", "RK45", "DOP853"] = "LSODA"
+    integrator: Literal["LSODA", "Radau", "BDF", "RK45", "DOP853", "RK45-compiled"] = "LSODA"
     rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
     atol: Annotated[float, Field(gt=0)] = 1e-10
     revolutions_settle: Annotated[int, Field(ge=0, le=10_000)] = 2

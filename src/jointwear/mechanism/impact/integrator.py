@@ -356,7 +356,8 @@ def _integrate_segment(
     import scipy.integrate  # lazy: keeps `jointwear` quick to start
     from scipy.integrate import OdeSolution
 
-    base = getattr(scipy.integrate, method)
+    # the compiled Dormand-Prince integrator runs as RK45 where it cannot run compiled
+    base = getattr(scipy.integrate, method.removesuffix("-compiled"))
     watch = _EventWatch(system, in_contact, t, y, keep)
     solver = type(f"Watched{method}", (_Watched, base), {"watch": watch})
     with warnings.catch_warnings():

@@ -22,7 +22,7 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.errors import ContactLossWarning, JointwearError
 from jointwear.mechanism.cycle import LoadCycle
 from jointwear.mechanism.impact.integrator import ContactHistory, integrate_contacts
-from jointwear.mechanism.impact.settings import ContactImpactSettings
+from jointwear.mechanism.impact.settings import COMPILED_INTEGRATOR, ContactImpactSettings
 
 __all__ = [
     "ContactImpactSolution",
@@ -132,19 +132,25 @@ def integrate_revolution(
     phi = 2.0 * np.pi * np.arange(steps) / steps
     times = record_start + np.append(phi, 2.0 * np.pi) / omega
     started = time.perf_counter()
-    history = integrate_contacts(
-        system,
-        (0.0, record_start + period),
-        y0,
-        in_contact=in_contact,
-        method=settings.integrator,
-        rtol=settings.rtol,
-        atol=settings.atol,
-        max_step=max_step,
-        keep=None if dense else times,
-    )
+    if settings.integrator == COMPILED_INTEGRATOR and getattr(system, "compiled", False):
+        # the whole integration in one compiled function (the slider-crank's)
+        history, states, index = system.integrate_compiled(
+            (0.0, record_start + period), y0, in_contact, settings, max_step, times
+        )
+    else:
+        history = integrate_contacts(
+            system,
+            (0.0, record_start + period),
+            y0,
+            in_contact=in_contact,
+            method=settings.integrator,
+            rtol=settings.rtol,
+            atol=settings.atol,
+            max_step=max_step,
+            keep=None if dense else times,
+        )
+        states, index = history.state(times)
     runtime = time.perf_counter() - started
-    states, index = history.state(times)
     records = [
         system.evaluate(float(t), y, history.segments[k].impact_velocity)
         for t, y, k in zip(times[:-1], states[:-1], index[:-1], strict=True)

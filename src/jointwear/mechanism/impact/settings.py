@@ -16,10 +16,14 @@ from jointwear.mechanism.impact.force_laws import FORCE_LAWS, hysteresis_factor
 if TYPE_CHECKING:
     from jointwear.config import DynamicsConfig
 
-__all__ = ["INTEGRATORS", "ContactImpactSettings"]
+__all__ = ["COMPILED_INTEGRATOR", "INTEGRATORS", "ContactImpactSettings"]
 
-#: ``solve_ivp`` methods accepted by ``dynamics.integrator``
-INTEGRATORS: tuple[str, ...] = ("LSODA", "Radau", "BDF", "RK45", "DOP853")
+#: the Dormand-Prince 5(4) pair of ``RK45`` with the contact events, the whole
+#: integration compiled (the slider-crank's compiled right-hand side; ``RK45`` of
+#: ``solve_ivp`` for the other systems)
+COMPILED_INTEGRATOR = "RK45-compiled"
+#: ``solve_ivp`` methods accepted by ``dynamics.integrator``, and the compiled one
+INTEGRATORS: tuple[str, ...] = ("LSODA", "Radau", "BDF", "RK45", "DOP853", COMPILED_INTEGRATOR)
 
 
 @dataclass(frozen=True)

@@ -75,18 +75,19 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from jointwear.errors import ConfigError, JointwearError
+from jointwear.errors import ConfigError, ConvergenceError, JointwearError
 from jointwear.geometry.contour import BushingContour
 from jointwear.mechanism.cycle import LoadCycle
 from jointwear.mechanism.impact.bushing_frame import contact_force_in_frame, to_bushing_frame
-from jointwear.mechanism.impact.integrator import ContactSystemBase
+from jointwear.mechanism.impact.integrator import ContactHistory, ContactSystemBase
 from jointwear.mechanism.impact.joint_contact import JointContact
+from jointwear.mechanism.impact.kept_history import kept_history
 from jointwear.mechanism.impact.revolution import (
     ContactImpactSolution,
     integrate_revolution,
     sampled_solution,
 )
-from jointwear.mechanism.impact.settings import ContactImpactSettings
+from jointwear.mechanism.impact.settings import COMPILED_INTEGRATOR, ContactImpactSettings
 from jointwear.mechanism.inputs import MechanismInputs
 from jointwear.mechanism.slider_crank.dynamics import SliderCrank, inverse_dynamics
 from jointwear.mechanism.slider_crank.joint_load import slider_crank_cycle
@@ -279,6 +280,74 @@ class SliderCrankContactSystem(ContactSystemBase):
             return super().rhs_function(impact_velocity)
         rhs, parameters, wear = self._kernel.rhs, self._parameters, self._wear
         return lambda t, y: rhs(t, y, impact_velocity, parameters, wear)
+
+    def integrate_compiled(
+        self,
+        t_span: tuple[float, float],
+        y0: ArrayLike,
+        in_contact: bool,
+        settings: ContactImpactSettings,
+        max_step: float,
+        samples: FloatArray,
+    ) -> tuple[ContactHistory, FloatArray, NDArray[np.int64]]:
+        """Integrate through the contact events in one compiled function (``RK45-compiled``).
+
+        Parameters
+        ----------
+        t_span : tuple of float
+            ``(t_0, t_end)`` [s].
+        y0 : array_like
+            State at ``t_0``.
+        in_contact : bool
+            Whether the pin penetrates the wall at ``t_0``.
+        settings : ContactImpactSettings
+            ``rtol`` and ``atol`` [-].
+        max_step : float
+            Largest step [s].
+        samples : ndarray, shape (M,)
+            Sorted times of the states wanted, inside ``t_span`` [s].
+
+        Returns
+        -------
+        history : ContactHistory
+            As :func:`~jointwear.mechanism.impact.integrator.integrate_contacts` with
+            ``keep=samples``.
+        states : ndarray, shape (M, 5)
+            States at ``samples``.
+        segments : ndarray of int, shape (M,)
+            Index of the segment of each sample.
+
+        Raises
+        ------
+        ConvergenceError
+            If the step falls below the resolution of the time, or contact events pile
+            up at one instant.
+        """
+        from jointwear.mechanism.slider_crank import _contact_impact_rk as rk
+
+        floor = self.contact.impact_velocity_floor
+        capacity = 4096
+        while True:
+            run = rk.integrate_revolution_rk(
+                float(t_span[0]), float(t_span[1]), np.asarray(y0, dtype=float), in_contact,
+                floor, floor, self._parameters, self._wear, settings.rtol, settings.atol,
+                float(max_step), np.asarray(samples, dtype=float), capacity,
+            )  # fmt: skip
+            if run[0] != rk.TOO_MANY_EVENTS or capacity > 1_000_000:
+                break
+            capacity *= 8
+        if run[0] != rk.OK:
+            reason = {
+                rk.STEP_TOO_SMALL: "the step fell below the resolution of the time",
+                rk.CHATTER: "contact events pile up at one instant (grazing or chattering)",
+                rk.TOO_MANY_EVENTS: "more than 10^6 contact events",
+            }[run[0]]
+            raise ConvergenceError(
+                f"dynamics.integrator: RK45-compiled failed ({reason}); try "
+                "dynamics.integrator = 'LSODA' or looser dynamics.rtol/atol"
+            )
+        history, states = kept_history(run, np.asarray(samples, dtype=float), self.gap)
+        return history, states, run[3]
 
     def spring(self, x3: float) -> float:
         """Spring force on the slider along +x [N] (see :func:`spring_force`)."""
@@ -542,8 +611,11 @@ def solve_contact_impact(
     steps = inputs.steps
     contact = slider_crank_contact(inputs, settings, contour)
     choice = inputs.compiled if compiled is None else (None if compiled else False)
-    if compiled is None and contact.film is not None:
-        # the film's force in Python costs far more than loading the compiled kernel
+    if compiled is None and (
+        contact.film is not None or settings.integrator == COMPILED_INTEGRATOR
+    ):
+        # the film's force in Python costs far more than loading the compiled kernel; the
+        # compiled integrator asks for it
         choice = None
     rod = inputs.mechanism.bushing_body == "rod"
     system = SliderCrankContactSystem(mechanism, omega, contact, choice, rod_bushing=rod)
