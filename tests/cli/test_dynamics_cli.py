@@ -110,3 +110,22 @@ def test_unknown_dynamics_model_exits_2(
         main(["dynamics", str(paper_config_path), "--set", "dynamics.model=massles-link"])
     assert exit_info.value.code == 2
     assert "did you mean 'massless-link'" in capsys.readouterr().err
+
+
+def test_mechanisms_lists_the_joints_own_keys_and_shows_table_headers_literally(capsys):
+    """The catalogue names every key a user can set on the joint (slices along the pin, the
+    pin, the oil), each accepted by the config; TOML table headers in descriptions are
+    printed as written, not read as console markup."""
+    from jointwear import load_config
+
+    main(["mechanisms", "--json"])
+    sections = json.loads(capsys.readouterr().out)["joint_sections"]
+    assert {"axial_slices", "misalignment", "load_offset"} <= set(sections["joint"])
+    assert {"model", "support", "forks"} <= set(sections["pin"])
+    assert {"model", "viscosity", "lubricant", "roughness"} <= set(sections["lubrication"])
+    config = load_config(None, {"joint.axial_slices": 4, "lubrication.model": "dry"})
+    assert config.joint.axial_slices == 4
+    main(["mechanisms"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert "[[mechanism.modes" in text
+    assert "[lubrication]" in text

@@ -126,12 +126,19 @@ def dynamics(
         console.print(f"per-step arrays written to {csv_path}", markup=False)
 
 
+#: config sections of the clearance joint itself, listed beside the mechanism types
+JOINT_SECTIONS = ("joint", "pin", "lubrication")
+
+
 @app.command()
 def mechanisms(json_: JsonOpt = False) -> None:
-    """List the mechanism types ([mechanism] type = ...), their dynamics models and keys."""
+    """List the mechanism types ([mechanism] type = ...), their dynamics models and keys,
+    and the keys of the joint itself ([joint], with the slices along the pin; [pin];
+    [lubrication])."""
     from rich.markup import escape
 
     from jointwear.config import MECHANISM_TYPES
+    from jointwear.config.schema import ConfigSchema
     from jointwear.mechanism import MECHANISMS
 
     catalogue = {
@@ -149,13 +156,25 @@ def mechanisms(json_: JsonOpt = False) -> None:
         }
         for name, entry in MECHANISMS.items()
     }
+    # the joint the mechanism's clearance joint is: along the pin, the pin, its oil
+    sections = {
+        name: list(ConfigSchema.model_fields[name].annotation.model_fields)
+        for name in JOINT_SECTIONS
+    }
     if json_:
-        emit_json({"mechanisms": catalogue})
+        emit_json({"mechanisms": catalogue, "joint_sections": sections})
         return
     table = Table(title=escape("mechanism types ([mechanism] type = ...)"))
     for column in ("type", "description", "dynamics models", "keys (required first)"):
         table.add_column(column)
     for name, entry in catalogue.items():
         keys = ", ".join(entry["required_keys"]) + "; " + ", ".join(entry["optional_keys"])
-        table.add_row(name, entry["description"], ", ".join(entry["dynamics_models"]), keys)
+        row = (name, entry["description"], ", ".join(entry["dynamics_models"]), keys)
+        table.add_row(*(escape(cell) for cell in row))
     console.print(table)
+    joint = Table(title="the joint itself (any mechanism)")
+    for column in ("section", "keys"):
+        joint.add_column(column)
+    for name, keys in sections.items():
+        joint.add_row(escape(f"[{name}]"), ", ".join(keys))
+    console.print(joint)
