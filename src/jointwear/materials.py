@@ -39,6 +39,7 @@ from jointwear.registry import suggest
 from jointwear.units import DIMENSIONS, format_quantity, to_si
 
 __all__ = [
+    "BOUNDARY_KEY",
     "LIMIT_KEYS",
     "PROPERTY_KEYS",
     "WEAR_FORMS",
@@ -59,7 +60,10 @@ WEAR_FORMS: tuple[tuple[str, ...], ...] = (
     ("specific_wear_rate",),
     ("wear_factor_k", "hardness"),
 )
-WEAR_KEYS: tuple[str, ...] = tuple(k for form in WEAR_FORMS for k in form)
+#: the wear coefficient of the pair lubricated by a grease (boundary lubrication,
+#: ``[lubrication] lubricant = "grease-..."``): a value of the pair, like ``K_d``
+BOUNDARY_KEY = "boundary_wear_coefficient"
+WEAR_KEYS: tuple[str, ...] = (*(k for form in WEAR_FORMS for k in form), BOUNDARY_KEY)
 #: the datasheet limits, compared by the engineering checks
 LIMIT_KEYS: tuple[str, ...] = (
     "max_static_pressure",
@@ -76,6 +80,7 @@ KINDS: dict[str, str] = {
     "specific_wear_rate": "wear_coefficient",
     "wear_factor_k": "dimensionless",
     "hardness": "pressure",
+    BOUNDARY_KEY: "wear_coefficient",
     "max_static_pressure": "pressure",
     "max_dynamic_pressure": "pressure",
     "max_pv": "pressure_velocity",
@@ -91,6 +96,7 @@ DISPLAY_UNITS: dict[str, str] = {
     "specific_wear_rate": "mm^3/(N*m)",
     "wear_factor_k": "",
     "hardness": "GPa",
+    BOUNDARY_KEY: "m^2/N",
     "max_static_pressure": "MPa",
     "max_dynamic_pressure": "MPa",
     "max_pv": "MPa*m/s",
@@ -152,6 +158,7 @@ class Material:
                     "poisson_ratio",
                     "density",
                     "wear_coefficient",
+                    BOUNDARY_KEY,
                     *LIMIT_KEYS,
                 )
             },
@@ -390,6 +397,7 @@ OVERVIEW: tuple[tuple[str, str], ...] = (
     ("poisson_ratio", "ν"),
     ("density", "ρ"),
     ("wear_coefficient", "K_d"),
+    (BOUNDARY_KEY, "K_d greased"),
     ("max_static_pressure", "p static"),
     ("max_dynamic_pressure", "p max"),
     ("max_pv", "PV max"),

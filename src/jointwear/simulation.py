@@ -76,7 +76,7 @@ class Simulation:
         wear_law: str | WearLaw | None = None,
     ) -> None:
         self.config = config
-        self.wear_law = wear_law_of(config.wear, config.materials.bushing, wear_law)
+        self.wear_law = wear_law_of(config.wear, config.wearing_bushing, wear_law)
         self.contact_model = config.contact.model if contact_model is None else contact_model
         # the fused kernel accumulates Archard's wear inside the contact solve
         archard = wear_law in (None, "archard") and config.wear.law == "archard"

@@ -80,6 +80,12 @@ CASES: list[Bad] = [
         ["NAME", "unknown material 'brnze'", "did you mean 'bronze'"],
     ),
     Bad(
+        "grease-without-boundary-coefficient",
+        "config",
+        ["run", "{paper}", "--set", "lubrication.lubricant=grease-lithium-nlgi2"],
+        ["materials.bushing.boundary_wear_coefficient", "missing", "is a grease"],
+    ),
+    Bad(
         "sweep-unknown-material",
         "sweep",
         ["sweep", "{tmp}/s.toml", "--out", "{out}"],

@@ -15,6 +15,7 @@ from pydantic import field_validator, model_validator
 
 from jointwear.config.choices import IMPACT_FILM, MODEL_CHOICE, NLCP_STIFFNESS, PAPER_SPRING_AREA
 from jointwear.config.fields import MAX_INTEGRATOR_STEPS, Section, one_of
+from jointwear.config.greases import check_grease, wearing_bushing
 from jointwear.config.mechanisms import DYNAMIC_TYPES, MechanismConfig
 from jointwear.config.parameter_sets import PARAMETER_SETS
 from jointwear.config.pin import PinConfig, check_along_the_pin
@@ -24,6 +25,7 @@ from jointwear.config.sections import (
     JointConfig,
     LifeConfig,
     LubricationConfig,
+    MaterialConfig,
     MaterialsConfig,
     SimulationConfig,
     WearConfig,
@@ -130,6 +132,11 @@ class ConfigSchema(Section):
         return self
 
     @model_validator(mode="after")
+    def _grease_has_coefficient(self) -> ConfigSchema:
+        check_grease(self)
+        return self
+
+    @model_validator(mode="after")
     def _integration_bounded(self) -> ConfigSchema:
         # the contact-impact integrator takes at least span / max_step steps: refused up
         # front where that would run for hours instead of failing after them
@@ -151,6 +158,13 @@ class ConfigSchema(Section):
     def joints(self) -> tuple[str, ...]:
         """Names of the mechanism's clearance joints."""
         return self.mechanism.joints
+
+    @property
+    def wearing_bushing(self) -> MaterialConfig:
+        """The bushing's material as it wears: with a grease and no film model, its
+        ``boundary_wear_coefficient`` is its ``wear_coefficient`` [m^2/N]
+        (:mod:`jointwear.config.greases`)."""
+        return wearing_bushing(self)
 
     @property
     def bushing_radius(self) -> float:

@@ -81,7 +81,9 @@ class MaterialConfig(Section):
     other keys override. Wear comes as ``wear_coefficient`` (``K_d`` [m^2/N]),
     ``specific_wear_rate`` ([mm^3/(N m)], the same dimension) or ``wear_factor_k`` with
     ``hardness`` (``K_d = k / H``), one of them; the last three are read into
-    ``wear_coefficient`` and not written back out.
+    ``wear_coefficient`` and not written back out. ``boundary_wear_coefficient`` [m^2/N]
+    is the pair's coefficient with a grease (boundary lubrication: a library grease as
+    ``lubrication.lubricant`` without a film model wears with it).
     """
 
     name: str | None = None
@@ -98,6 +100,7 @@ class MaterialConfig(Section):
     hardness: Annotated[
         Annotated[float, Field(gt=0)] | None, si("pressure"), Field(exclude=True)
     ] = None
+    boundary_wear_coefficient: WearCoefficient | None = None
     max_static_pressure: OptionalPressure = None
     max_dynamic_pressure: OptionalPressure = None
     max_pv: Annotated[Annotated[float, Field(gt=0)] | None, si("pressure_velocity")] = None

@@ -216,7 +216,7 @@ class ContactSolver:
             tolerance=cfg.tolerance,
             max_iterations=cfg.max_iterations,
             nodes=cfg.nodes,
-            wear_coefficient=(config.materials.bushing.wear_coefficient if fused_archard else None),
+            wear_coefficient=(config.wearing_bushing.wear_coefficient if fused_archard else None),
             compiled=compiled_kernel(config),
             lubrication=lubrication,
         )
