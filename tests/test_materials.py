@@ -256,3 +256,153 @@ def test_a_sweep_over_the_bushing_material(paper_config_path):
     assert all(case.invalid is None for case in plan.cases)
     with pytest.raises(ConfigError, match="did you mean 'bronze'"):
         expand_sweep({"grid": {"materials.bushing": ["brnze"]}}, base)
+
+
+# ---------------------------------------------------------------- tabulated coefficients
+
+#: a test entry (test values, not data): bushing elastic data and wear tables
+ELASTIC = """
+youngs_modulus = { value = "100 GPa", source = "test" }
+poisson_ratio = { value = 0.34, source = "test" }
+density = { value = "8930 kg/m^3", source = "test" }
+wear_coefficient = { value = "2e-15 m^2/N", source = "test" }
+"""
+
+
+def table_entry(name: str, table: str, source: str = "test") -> str:
+    """A library entry of ``name`` whose ``wear_table`` value is the TOML ``table``."""
+    return (
+        f"[{name}]\ndescription = 'test entry'\n{ELASTIC}"
+        f"[{name}.wear_table]\nsource = '{source}'\n[{name}.wear_table.value]\n{table}\n"
+    )
+
+
+PV_TABLE = """against = "pv"
+points = ["1 Pa*m/s", "1 MPa*m/s"]
+coefficients = ["2e-6 mm^3/(N m)", "2e-15 m^2/N"]"""
+HOT_TABLE = """against = "temperature"
+points = ["20 degC", "100 degC"]
+coefficients = ["1e-15 m^2/N", "3e-15 m^2/N"]"""
+TABLE_ENTRIES = table_entry("table-test", PV_TABLE, "test source, table 9") + table_entry(
+    "table-test-temperature", HOT_TABLE
+)
+
+
+@pytest.fixture
+def with_tables(monkeypatch):
+    """The library with the test entries added (the shipped library has no table yet)."""
+    from types import MappingProxyType
+
+    import jointwear.materials as materials
+
+    entries = {**library(), **materials.read_library(TABLE_ENTRIES)}
+    monkeypatch.setattr(materials, "library", lambda: MappingProxyType(entries))
+    return entries
+
+
+def test_a_library_table_is_read_into_si(with_tables):
+    pv = with_tables["table-test"].wear_table()
+    assert pv == {"against": "pv", "points": [1.0, 1e6], "coefficients": [2e-15, 2e-15]}
+    hot = with_tables["table-test-temperature"].wear_table()
+    assert hot["points"] == pytest.approx([293.15, 373.15], abs=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("table", "message"),
+    [
+        ('against = "pvv"\npoints = [1, 2]\ncoefficients = [1e-15, 1e-15]', "did you mean 'pv'"),
+        ('against = "pv"\npoints = [2, 1]\ncoefficients = [1e-15, 1e-15]', "increase strictly"),
+        ('against = "pv"\npoints = [1, 2]\ncoefficients = [1e-15]', "one coefficient per point"),
+        ('against = "speed"\npoints = ["1 MPa", 2]\ncoefficients = [1, 2]', "velocity"),
+    ],
+)
+def test_a_malformed_library_table_is_refused_in_one_line(table: str, message: str):
+    from jointwear.materials import read_library
+
+    with pytest.raises(ConfigError, match=message) as refused:
+        read_library(table_entry("table-test", table))
+    assert "\n" not in str(refused.value)
+    assert "table-test.wear_table" in str(refused.value)
+
+
+def _run(config):
+    from jointwear import Simulation
+
+    return Simulation(config).run(pressures=False).wear_depth
+
+
+@pytest.fixture
+def table_joint(with_tables, paper_config_path):
+    return load_config(
+        paper_config_path,
+        overrides={
+            "materials.bushing": "table-test",
+            "contact.nodes": 72,
+            "simulation.steps_per_revolution": 72,
+            "simulation.update_contour": False,
+        },
+    )
+
+
+def test_naming_the_material_runs_its_table(table_joint):
+    """The library's table is the [wear] table: the same wear, number for number; a flat
+    table at the material's K_d is Archard's law; twice the table, twice the wear."""
+    import numpy as np
+
+    tabulated = table_joint.replace({"wear.law": "tabulated"})
+    assert tabulated.materials.bushing.wear_table.against == "pv"
+    by_name = _run(tabulated)
+    written = {
+        "wear.table_against": "pv",
+        "wear.table_points": [1.0, 1e6],
+        "wear.table_coefficients": [2e-15, 2e-15],
+    }
+    np.testing.assert_array_equal(by_name, _run(tabulated.replace(written)))
+    np.testing.assert_allclose(by_name, _run(table_joint), rtol=1e-12, atol=0)
+    doubled = {**written, "wear.table_coefficients": [4e-15, 4e-15]}
+    np.testing.assert_allclose(_run(tabulated.replace(doubled)), 2 * by_name, rtol=1e-14, atol=0)
+
+
+def test_a_temperature_table_interpolates_and_refuses_extrapolation(with_tables, table_joint):
+    """Half-way between 20 and 100 degC the coefficient is the mean of the two points:
+    the wear of Archard's law with K_d = 2e-15, the entry's own coefficient."""
+    import numpy as np
+
+    hot = table_joint.replace({"materials.bushing": "table-test-temperature"})
+    midway = hot.replace({"wear.law": "tabulated", "wear.temperature": 333.15})
+    np.testing.assert_allclose(_run(midway), _run(hot), rtol=1e-12, atol=0)
+    with pytest.raises(ConfigError, match="outside the table.*not extrapolated"):
+        hot.replace({"wear.law": "tabulated", "wear.temperature": 400.0})
+
+
+def test_a_config_may_write_the_bushings_table(paper_config_path):
+    table = {"against": "pv", "points": ["1 kPa*m/s", "1 MPa*m/s"], "coefficients": [1e-15] * 2}
+    config = load_config(
+        paper_config_path,
+        overrides={
+            "materials.bushing": {"name": "pom", "wear_table": table},
+            "wear.law": "tabulated",
+        },
+    )
+    assert config.materials.bushing.wear_table.points == [1e3, 1e6]
+
+
+def test_a_tabulated_law_needs_a_table_somewhere(paper_config_path):
+    with pytest.raises(ConfigError, match="wear.table_against: missing.*wear_table"):
+        load_config(paper_config_path, overrides={"wear.law": "tabulated"})
+
+
+def test_the_materials_command_lists_the_table_with_its_source(with_tables, capsys):
+    import json
+
+    from jointwear.cli import main
+
+    main(["materials", "table-test"])
+    out = capsys.readouterr().out
+    assert "wear_table" in out
+    assert "test source, table 9" in out
+    assert "points [Pa m/s]: 1, 1e+06" in out
+    main(["materials", "table-test", "--json"])
+    entry = json.loads(capsys.readouterr().out)["materials"]["table-test"]
+    assert entry["wear_table"]["points"] == [1.0, 1e6]
+    assert entry["sources"]["wear_table"] == "test source, table 9"

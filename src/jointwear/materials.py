@@ -26,6 +26,7 @@ with it (naming a material replaces the table; giving one wear form drops the ot
 
 from __future__ import annotations
 
+import itertools
 import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -36,12 +37,14 @@ from typing import Any
 
 from jointwear.errors import ConfigError
 from jointwear.registry import suggest
-from jointwear.units import DIMENSIONS, format_quantity, to_si
+from jointwear.units import DIMENSIONS, format_quantity, to_si, ureg
 
 __all__ = [
     "BOUNDARY_KEY",
     "LIMIT_KEYS",
     "PROPERTY_KEYS",
+    "TABLE_AGAINST",
+    "TABLE_KEY",
     "WEAR_FORMS",
     "Material",
     "check_wear_forms",
@@ -49,9 +52,11 @@ __all__ = [
     "get_material",
     "library",
     "merge_material",
+    "read_library",
     "resolve_material",
     "wear_coefficient",
     "wear_forms",
+    "wear_table",
 ]
 
 #: the equivalent ways to give the wear coefficient; exactly one per material
@@ -63,7 +68,19 @@ WEAR_FORMS: tuple[tuple[str, ...], ...] = (
 #: the wear coefficient of the pair lubricated by a grease (boundary lubrication,
 #: ``[lubrication] lubricant = "grease-..."``): a value of the pair, like ``K_d``
 BOUNDARY_KEY = "boundary_wear_coefficient"
-WEAR_KEYS: tuple[str, ...] = (*(k for form in WEAR_FORMS for k in form), BOUNDARY_KEY)
+#: a wear coefficient tabulated against how the joint runs (``wear.law = "tabulated"``)
+TABLE_KEY = "wear_table"
+#: what a wear coefficient can be tabulated against -> the kind of its points
+TABLE_AGAINST: dict[str, str] = {
+    "speed": "velocity",
+    "pv": "pressure_velocity",
+    "temperature": "temperature",
+}
+WEAR_KEYS: tuple[str, ...] = (
+    *(k for form in WEAR_FORMS for k in form),
+    BOUNDARY_KEY,
+    TABLE_KEY,
+)
 #: the datasheet limits, compared by the engineering checks
 LIMIT_KEYS: tuple[str, ...] = (
     "max_static_pressure",
@@ -138,7 +155,7 @@ class Material:
         """
         if key == "wear_coefficient":
             return wear_coefficient(self.values, f"materials library: {self.name}")
-        if key not in self.values:
+        if key not in self.values or key == TABLE_KEY:
             return None
         return to_si(self.values[key], KINDS[key], f"materials library: {self.name}.{key}")
 
@@ -162,9 +179,16 @@ class Material:
                     *LIMIT_KEYS,
                 )
             },
+            TABLE_KEY: self.wear_table(),
             "values": dict(self.values),
             "sources": dict(self.sources),
         }
+
+    def wear_table(self) -> dict[str, Any] | None:
+        """The tabulated wear coefficient in SI (:func:`wear_table`), ``None`` if none."""
+        if TABLE_KEY not in self.values:
+            return None
+        return wear_table(self.values[TABLE_KEY], f"materials library: {self.name}.{TABLE_KEY}")
 
     def display(self, key: str, unit: bool = True) -> str:
         """A value in its display unit, e.g. ``"100 GPa"`` (``""`` if not given).
@@ -172,10 +196,14 @@ class Material:
         Parameters
         ----------
         key : str
-            A key of :data:`PROPERTY_KEYS`.
+            A key of :data:`PROPERTY_KEYS`, or ``"wear_table"`` (its variable, range and
+            coefficients, e.g. ``"K_d(pv): 3 points, 0.01-0.1 MPa m/s -> 1e-15-4e-15 m2/N"``).
         unit : bool
             Append the unit.
         """
+        if key == TABLE_KEY:
+            table = self.wear_table()
+            return "" if table is None else describe_table(table)
         value = self.si(key)
         if value is None:
             return ""
@@ -191,8 +219,19 @@ def display_unit(key: str) -> str:
     return DISPLAY_UNITS[key].replace("*", " ").replace("^", "")
 
 
-def _read_library() -> dict[str, Material]:
-    text = files("jointwear").joinpath("data", LIBRARY_FILE).read_text(encoding="utf-8")
+def read_library(text: str) -> dict[str, Material]:
+    """Materials from the text of a library file (the format of ``data/materials.toml``).
+
+    Parameters
+    ----------
+    text : str
+        TOML: one table per material, every value ``{ value = ..., source = ... }``.
+
+    Raises
+    ------
+    ConfigError
+        For an unknown key, a value without its source or unit, or two wear forms.
+    """
     data = tomllib.loads(text)
     out: dict[str, Material] = {}
     for name, table in data.items():
@@ -202,7 +241,7 @@ def _read_library() -> dict[str, Material]:
             if key == "description":
                 continue
             if (
-                key not in KINDS
+                (key not in KINDS and key != TABLE_KEY)
                 or not isinstance(entry, Mapping)
                 or set(entry)
                 != {
@@ -224,6 +263,7 @@ def _read_library() -> dict[str, Material]:
         )
         for key in values:
             material.si(key)  # every value reads with its unit
+        material.wear_table()
         material.si("wear_coefficient")  # exactly one wear form
         out[name] = material
     return out
@@ -232,7 +272,8 @@ def _read_library() -> dict[str, Material]:
 @cache
 def library() -> MappingProxyType[str, Material]:
     """The materials library, name -> :class:`Material` (read once)."""
-    return MappingProxyType(_read_library())
+    text = files("jointwear").joinpath("data", LIBRARY_FILE).read_text(encoding="utf-8")
+    return MappingProxyType(read_library(text))
 
 
 def get_material(name: str, key: str = "material") -> Material:
@@ -317,6 +358,86 @@ def wear_coefficient(table: Mapping[str, Any], key: str) -> float | None:
             raise ConfigError(f"{key}.hardness: must be > 0, got {table['hardness']!r}")
         return k / hardness
     return to_si(table[form[0]], "wear_coefficient", f"{key}.{form[0]}")
+
+
+def _point(value: Any, kind: str, key: str) -> float:
+    """One point of a table in SI; a temperature as kelvin or ``"60 degC"``."""
+    if kind != "temperature":
+        return to_si(value, kind, key)
+    if not isinstance(value, str):
+        return float(value)
+    number, _, unit = value.strip().partition(" ")
+    try:
+        return float(ureg.Quantity(float(number), unit.strip() or "K").to("K").magnitude)
+    except Exception as exc:  # pint's and float's errors alike: one message
+        raise ConfigError(f"{key}: cannot read {value!r} as a temperature ({exc})") from None
+
+
+def wear_table(value: Any, key: str) -> dict[str, Any]:
+    """A wear coefficient tabulated against how the joint runs, in SI.
+
+    Parameters
+    ----------
+    value : mapping
+        ``against`` (``"speed"``, ``"pv"`` or ``"temperature"``), ``points`` (increasing;
+        strings with units, or SI numbers: m/s, Pa m/s, K) and ``coefficients`` (one wear
+        coefficient ``K_d`` per point, [m^2/N] or any unit of that dimension).
+    key : str
+        Where the table is, for messages.
+
+    Returns
+    -------
+    dict
+        ``{"against": str, "points": list of float, "coefficients": list of float}`` (SI).
+
+    Raises
+    ------
+    ConfigError
+        One line naming the key: an unknown variable, a unit of the wrong dimension,
+        points that do not increase, fewer than two points, or a count that differs.
+    """
+    if not isinstance(value, Mapping) or set(value) != {"against", "points", "coefficients"}:
+        raise ConfigError(
+            f"{key}: expected {{ against = ..., points = [...], coefficients = [...] }}"
+        )
+    against, points, coefficients = value["against"], value["points"], value["coefficients"]
+    if against not in TABLE_AGAINST:
+        raise ConfigError(
+            f"{key}.against: unknown variable {against!r}{suggest(str(against), TABLE_AGAINST)}"
+        )
+    if not isinstance(points, list | tuple) or not isinstance(coefficients, list | tuple):
+        raise ConfigError(f"{key}: points and coefficients must be lists")
+    if not 2 <= len(points) == len(coefficients):
+        raise ConfigError(
+            f"{key}: {len(coefficients)} coefficients for {len(points)} points; give one "
+            "coefficient per point, at least two"
+        )
+    kind = TABLE_AGAINST[against]
+    grid = [_point(p, kind, f"{key}.points") for p in points]
+    if any(b <= a for a, b in itertools.pairwise(grid)):
+        raise ConfigError(f"{key}.points: the points must increase strictly")
+    ks = [to_si(k, "wear_coefficient", f"{key}.coefficients") for k in coefficients]
+    if not all(k > 0 for k in ks):
+        raise ConfigError(f"{key}.coefficients: every coefficient must be > 0")
+    return {"against": against, "points": grid, "coefficients": ks}
+
+
+#: display unit of a table's points, by what it is against
+TABLE_UNITS: dict[str, str] = {"speed": "m/s", "pv": "MPa*m/s", "temperature": "K"}
+
+
+def describe_table(table: Mapping[str, Any]) -> str:
+    """A tabulated wear coefficient in one line: variable, points, range of ``K_d``."""
+    against, unit = table["against"], TABLE_UNITS[table["against"]]
+    points = table["points"]
+    low, high = (
+        format_quantity(p, unit, digits=3).split(" ", 1)[0] for p in (points[0], points[-1])
+    )
+    ks = table["coefficients"]
+    return (
+        f"K_d({against}): {len(ks)} points, {low}-{high} {unit.replace('*', ' ')} -> "
+        f"{min(ks):.3g}-{max(ks):.3g} m2/N"
+    )
 
 
 def merge_material(base: Any, update: Any) -> Any:
@@ -423,6 +544,9 @@ def markdown() -> str:
         lines += ["", f"**`{m.name}`**: {m.description}", ""]
         for key, value in m.values.items():
             shown = f'"{value}"' if isinstance(value, str) else value
+            if key == TABLE_KEY:
+                lines.append(f"- `{key}`: {m.display(key)}: {m.sources[key]}")
+                continue
             lines.append(f"- `{key} = {shown}`: {m.sources[key]}")
     return "\n".join(lines) + "\n"
 

@@ -86,6 +86,16 @@ CASES: list[Bad] = [
         ["materials.bushing.boundary_wear_coefficient", "missing", "is a grease"],
     ),
     Bad(
+        "material-wear-table-unknown-variable",
+        "config",
+        ["run", "{tmp}/t.toml"],
+        ["materials.bushing.wear_table", "unknown variable 'pvv'", "did you mean 'pv'"],
+        {
+            "t.toml": '[materials.bushing]\nname = "pom"\n[materials.bushing.wear_table]\n'
+            'against = "pvv"\npoints = [1.0, 2.0]\ncoefficients = [1e-15, 2e-15]\n'
+        },
+    ),
+    Bad(
         "sweep-unknown-material",
         "sweep",
         ["sweep", "{tmp}/s.toml", "--out", "{out}"],

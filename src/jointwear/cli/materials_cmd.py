@@ -22,7 +22,14 @@ def materials(
     json_: JsonOpt = False,
 ) -> None:
     """List the materials library ([materials] bushing = "NAME"): values, limits, sources."""
-    from jointwear.materials import OVERVIEW, display_unit, get_material, library, material_units
+    from jointwear.materials import (
+        OVERVIEW,
+        TABLE_KEY,
+        display_unit,
+        get_material,
+        library,
+        material_units,
+    )
 
     entries = [get_material(name, "NAME")] if name is not None else list(library().values())
     if json_:
@@ -35,7 +42,8 @@ def materials(
             table.add_column(column, no_wrap=True)
         table.add_column("source")
         for key, value in material.values.items():
-            table.add_row(key, material.display(key), str(value), material.sources[key])
+            if key != TABLE_KEY:
+                table.add_row(key, material.display(key), str(value), material.sources[key])
         if "wear_coefficient" not in material.values:
             table.add_row(
                 "wear_coefficient",
@@ -44,6 +52,20 @@ def materials(
                 "from the wear form above",
             )
         console.print(table)
+        wear_table = material.wear_table()
+        if wear_table is not None:  # on its own lines: the points must not wrap
+            from jointwear.config.wear_table import TABLE_VARIABLES
+
+            unit = TABLE_VARIABLES[wear_table["against"]].replace("*", " ")
+            points = ", ".join(f"{p:g}" for p in wear_table["points"])
+            ks = ", ".join(f"{k:g}" for k in wear_table["coefficients"])
+            console.print(
+                f"{TABLE_KEY}: K_d against {wear_table['against']}\n"
+                f"  points [{unit}]: {points}\n  K_d [m2/N]: {ks}\n"
+                f"  source: {material.sources[TABLE_KEY]}",
+                markup=False,
+                soft_wrap=True,
+            )
         return
     # numbers only (units under the headers): the table fits 80 columns; the description
     # and the source of every value are on `jointwear materials NAME`

@@ -30,6 +30,7 @@ from jointwear.config.sections import (
     SimulationConfig,
     WearConfig,
 )
+from jointwear.config.wear_table import check_table
 
 __all__ = ["ConfigSchema"]
 
@@ -134,6 +135,12 @@ class ConfigSchema(Section):
     @model_validator(mode="after")
     def _grease_has_coefficient(self) -> ConfigSchema:
         check_grease(self)
+        return self
+
+    @model_validator(mode="after")
+    def _table_complete(self) -> ConfigSchema:
+        # a tabulated law without a [wear] table runs the bushing material's
+        check_table(self.wear, self.materials.bushing)
         return self
 
     @model_validator(mode="after")

@@ -34,7 +34,7 @@ from jointwear.config.fields import (
     WearCoefficient,
     si,
 )
-from jointwear.config.wear_table import check_table
+from jointwear.config.wear_table import TableCoefficients, TablePoints, WearTable, check_table
 from jointwear.errors import ConfigError
 from jointwear.units import to_si_unit, ureg
 
@@ -74,6 +74,16 @@ class JointConfig(Section):
         return self.pin_radius + self.clearance
 
 
+def _table_in_si(value: Any) -> Any:
+    """A material's ``wear_table`` with units (a library entry's) read into SI numbers."""
+    if value is None or isinstance(value, WearTable):
+        return value
+    try:
+        return materials.wear_table(value, "§")
+    except ConfigError as exc:
+        raise ValueError(str(exc).removeprefix("§: ").removeprefix("§.")) from None
+
+
 class MaterialConfig(Section):
     """Elastic (and, for the bushing, wear) properties of one body, and its datasheet limits.
 
@@ -101,6 +111,8 @@ class MaterialConfig(Section):
         Annotated[float, Field(gt=0)] | None, si("pressure"), Field(exclude=True)
     ] = None
     boundary_wear_coefficient: WearCoefficient | None = None
+    #: K_d [1/Pa] tabulated against speed, PV or temperature (wear.law = "tabulated")
+    wear_table: Annotated[WearTable | None, BeforeValidator(_table_in_si)] = None
     max_static_pressure: OptionalPressure = None
     max_dynamic_pressure: OptionalPressure = None
     max_pv: Annotated[Annotated[float, Field(gt=0)] | None, si("pressure_velocity")] = None
@@ -276,10 +288,6 @@ class SimulationConfig(Section):
 
 
 #: a table's points (SI of wear.table_against) and coefficients [1/Pa], 2 to 1000 each
-TablePoints = Annotated[list[Annotated[float, Field(ge=0)]], Field(min_length=2, max_length=1000)]
-TableCoefficients = Annotated[
-    list[Annotated[float, Field(gt=0)]], Field(min_length=2, max_length=1000)
-]
 
 
 class WearConfig(Section):

@@ -33,7 +33,8 @@ run in. Three laws of the registry (:data:`jointwear.tribology.wear_laws.WEAR_LA
     .. math:: h_j = \sum_k K(x_{jk}) \, p_{jk} \, \Delta s_k
 
     ``K`` linearly interpolated in ``wear.table_coefficients`` [1/Pa] at
-    ``wear.table_points`` of ``x`` = ``wear.table_against``: the step's sliding speed
+    ``wear.table_points`` of ``x`` = ``wear.table_against`` (without them, in the bushing
+    material's ``wear_table``, e.g. a library entry's with its source): the step's sliding speed
     ``v_k`` [m/s], the local ``p_jk v_k`` [Pa m/s] or the operating temperature
     ``wear.temperature`` [K] (one ``K`` for the run). Speed and PV beyond the table take
     its end values, with one warning per run; a temperature outside it is refused.
@@ -58,6 +59,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from jointwear.config.wear_table import table_of
 from jointwear.errors import ConfigError, MaterialLimitWarning
 from jointwear.tribology import archard
 
@@ -284,8 +286,15 @@ def tabulated_coefficient(
 
 def tabulated(wear: WearConfig, bushing: MaterialConfig) -> OperatingLaw:
     """The ``tabulated`` wear law: ``h_j = sum_k K(x_jk) p_jk ds_k``, ``x`` the step's
-    sliding speed, the local ``p v`` or the operating temperature."""
-    points, coefficients, against = wear.table_points, wear.table_coefficients, wear.table_against
+    sliding speed, the local ``p v`` or the operating temperature; the table is
+    ``[wear]``'s, else the bushing material's ``wear_table``."""
+    table = table_of(wear, bushing)
+    if table is None:
+        raise ConfigError(
+            "wear.table_against: missing (needed by wear.law = 'tabulated', unless the "
+            "bushing's material has a wear_table)"
+        )
+    points, coefficients, against = table.points, table.coefficients, table.against
     said = []
 
     def coefficient(value: ArrayLike) -> FloatArray:
