@@ -406,3 +406,19 @@ def test_the_materials_command_lists_the_table_with_its_source(with_tables, caps
     entry = json.loads(capsys.readouterr().out)["materials"]["table-test"]
     assert entry["wear_table"]["points"] == [1.0, 1e6]
     assert entry["sources"]["wear_table"] == "test source, table 9"
+
+
+def test_the_documented_skf_table_follows_skfs_rating_life():
+    """docs/materials.md's PTFE composite table is SKF's G_h = K_M / (pv)_eff with
+    K_M = 480, (pv)_eff = max(pv, 0.025) MPa m/s, read as K_d = h_L (pv)_eff / (K_M pv)
+    at h_L = 0.3 mm (hours to seconds, MPa to Pa), to its three digits."""
+    page = (Path(__file__).resolve().parents[1] / "docs" / "materials.md").read_text("utf-8")
+    block = page.split("[materials.bushing.wear_table]")[-1].split("```")[0]
+    table = tomllib.loads(block)
+    from jointwear.materials import wear_table
+
+    si = wear_table(table, "docs")
+    for pv, k in zip(si["points"], si["coefficients"], strict=True):
+        mpa_m_s = pv / 1e6
+        expected = 0.3e-3 * max(mpa_m_s, 0.025) / (480 * mpa_m_s * 3600 * 1e6)
+        assert k == pytest.approx(expected, rel=5e-3)
