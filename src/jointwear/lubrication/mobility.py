@@ -65,7 +65,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import simpson
 from scipy.interpolate import RegularGridInterpolator
 from scipy.optimize import elementwise
-from scipy.sparse import diags, identity, kron
+from scipy.sparse import csc_matrix, diags, identity, kron
 from scipy.sparse.linalg import splu
 
 from jointwear.geometry.angles import wrap_angle
@@ -105,8 +105,12 @@ def inverse_sommerfeld_angle(gamma: FloatArray, eps: float) -> FloatArray:
     return gamma + 2.0 * np.arctan(b * np.sin(gamma) / (1.0 - b * np.cos(gamma)))
 
 
-def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Full-film solutions ``Pi_w`` (``beta = 0``) and ``Pi_s`` (``beta = pi/2``) on the grid.
+def film_system(eps: float, half_length: float) -> tuple[FloatArray, FloatArray, csc_matrix]:
+    """The finite-difference Reynolds operator of the bushing's half on the grid.
+
+    Conservative second-order stencil on ``ANGLE_NODES`` angles uniform in
+    Sommerfeld's angle ``gamma`` and ``AXIAL_CELLS`` cells from the middle of the
+    bushing (row 0, symmetric) to the node before its end (``Pi = 0`` there).
 
     Parameters
     ----------
@@ -117,9 +121,10 @@ def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, Floa
 
     Returns
     -------
-    tuple of ndarray
-        ``theta`` of the angle nodes [rad], and ``Pi_w``, ``Pi_s`` of shape
-        ``(AXIAL_CELLS + 1, ANGLE_NODES)`` from the middle (row 0) to the end [-].
+    tuple
+        ``theta`` of the angle nodes [rad], ``d theta / d gamma`` there [-], and the
+        operator ``A`` with ``A Pi = (d theta / d gamma) f`` the discrete form of
+        ``div(H^3 grad Pi) = f`` (rows: axial index major) [-].
     """
     step = 2.0 * np.pi / ANGLE_NODES
     gamma = step * np.arange(ANGLE_NODES)
@@ -144,11 +149,30 @@ def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, Floa
     axial[0, 1] = 2.0  # symmetric about the middle of the bushing
     weight = stretch(gamma) * film(gamma) ** 3 / dz**2
     matrix = kron(identity(AXIAL_CELLS), around) + kron(axial.tocsr(), diags(weight))
-    theta = inverse_sommerfeld_angle(gamma, eps)
-    solver = splu(matrix.tocsc())
+    return inverse_sommerfeld_angle(gamma, eps), stretch(gamma), matrix.tocsc()
+
+
+def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Full-film solutions ``Pi_w`` (``beta = 0``) and ``Pi_s`` (``beta = pi/2``) on the grid.
+
+    Parameters
+    ----------
+    eps : float
+        Eccentricity ratio [-].
+    half_length : float
+        ``L / (2R)`` [-].
+
+    Returns
+    -------
+    tuple of ndarray
+        ``theta`` of the angle nodes [rad], and ``Pi_w``, ``Pi_s`` of shape
+        ``(AXIAL_CELLS + 1, ANGLE_NODES)`` from the middle (row 0) to the end [-].
+    """
+    theta, stretch, matrix = film_system(eps, half_length)
+    solver = splu(matrix)
     fields = []
     for source in (-np.sin(theta), np.cos(theta)):
-        solution = solver.solve(np.tile(stretch(gamma) * source, AXIAL_CELLS))
+        solution = solver.solve(np.tile(stretch * source, AXIAL_CELLS))
         field = np.zeros((AXIAL_CELLS + 1, ANGLE_NODES))
         field[:-1] = solution.reshape(AXIAL_CELLS, ANGLE_NODES)
         fields.append(field)
