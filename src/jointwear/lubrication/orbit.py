@@ -357,7 +357,7 @@ class OrbitSolver:
 
     def kernel_arguments(self) -> tuple[Any, ...]:
         """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity."""
-        codes = {"short": 0.0, "long": 1.0, "finite": 1.0}
+        codes = {"short": 0.0, "long": 1.0, "finite": 1.0, "finite-reynolds": 1.0}
         joint = (
             self.clearance,
             self.roughness,

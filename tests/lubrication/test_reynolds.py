@@ -19,8 +19,10 @@ import numpy as np
 import pytest
 
 from jointwear.errors import JointwearError
-from jointwear.lubrication import mobility
-from jointwear.lubrication.cavitation import complementary_pressure, steady_journal
+from jointwear.lubrication import reynolds
+from jointwear.lubrication.mobility import dimensionless_finite
+from jointwear.lubrication.orbit import OrbitSolver, periodic_orbit
+from jointwear.lubrication.reynolds import complementary_pressure, reynolds_forces, steady_journal
 
 #: L/D -> rows (h0/c, S, phi [deg]) of Raimondi and Boyd's full journal bearing
 RAIMONDI_BOYD = {
@@ -83,8 +85,8 @@ def test_half_sommerfeld_overstates_the_sommerfeld_number_at_the_same_eccentrici
 
 def test_the_grid_is_converged_for_the_reynolds_condition(monkeypatch):
     coarse = [steady_journal(eps, 1.0, "Reynolds", True) for eps in (0.6, 0.9)]
-    monkeypatch.setattr(mobility, "ANGLE_NODES", 240)
-    monkeypatch.setattr(mobility, "AXIAL_CELLS", 32)
+    monkeypatch.setattr(reynolds, "ANGLE_NODES", 240)
+    monkeypatch.setattr(reynolds, "AXIAL_CELLS", 32)
     fine = [steady_journal(eps, 1.0, "Reynolds", True) for eps in (0.6, 0.9)]
     for a, b in zip(coarse, fine, strict=True):
         assert a.sommerfeld_number == pytest.approx(b.sommerfeld_number, rel=1e-3)
@@ -92,8 +94,8 @@ def test_the_grid_is_converged_for_the_reynolds_condition(monkeypatch):
 
 
 def test_the_complementarity_conditions_hold():
-    theta, stretch, operator = mobility.film_system(0.7, 0.5)
-    source = np.tile(stretch * np.sin(theta - 0.4), mobility.AXIAL_CELLS)
+    theta, stretch, operator = reynolds.film_system(0.7, 0.5)
+    source = np.tile(stretch * np.sin(theta - 0.4), reynolds.AXIAL_CELLS)
     pressure = complementary_pressure(operator, source)
     residual = -operator @ pressure - source
     scale = np.abs(source).max()
@@ -105,8 +107,8 @@ def test_the_complementarity_conditions_hold():
 
 def test_without_cavitation_the_film_is_the_full_film():
     # a source that is positive everywhere: the film never ruptures
-    theta, stretch, operator = mobility.film_system(0.3, 1.0)
-    source = np.tile(stretch * (1.5 + np.sin(theta)), mobility.AXIAL_CELLS)
+    theta, stretch, operator = reynolds.film_system(0.3, 1.0)
+    source = np.tile(stretch * (1.5 + np.sin(theta)), reynolds.AXIAL_CELLS)
     full = np.linalg.solve(-operator.toarray(), source)
     assert full.min() > 0
     np.testing.assert_allclose(complementary_pressure(operator, source), full, rtol=1e-10)
@@ -115,3 +117,39 @@ def test_without_cavitation_the_film_is_the_full_film():
 def test_an_unknown_cavitation_is_refused():
     with pytest.raises(JointwearError, match="cavitation"):
         steady_journal(0.5, 1.0, "Gumbel")  # type: ignore[arg-type]
+
+
+def test_the_reynolds_table_matches_direct_solutions():
+    # the force factor the orbit reads, interpolated, against the solver at random states
+    rng = np.random.default_rng(1)
+    eps, beta = rng.uniform(0, 0.99, 40), rng.uniform(-np.pi, np.pi, 40)
+    table = dimensionless_finite(eps, beta, np.full(40, 1.0), "Reynolds")
+    direct = np.array(
+        [reynolds_forces(e, 1.0, [b])[:, 0] for e, b in zip(eps, beta, strict=True)]
+    ).T
+    assert np.max(np.abs(table - direct) / np.hypot(*direct)) < 2e-3
+
+
+def test_a_steady_load_settles_where_the_reynolds_film_carries_it():
+    # the orbit (mobility method, squeeze and wedge) of a turning journal under a fixed
+    # load ends at the steady solution: S = mu N L D (R/c)^2 / W at eps = 0.6, L/D = 1
+    radius, clearance, viscosity, speed = 0.01, 20e-6, 0.05, 100.0
+    steady = steady_journal(0.6, 1.0, "Reynolds")
+    length = 2 * radius
+    load = (
+        viscosity * speed / (2 * np.pi) * length * 2 * radius * (radius / clearance) ** 2
+    ) / steady.sommerfeld_number
+    solver = OrbitSolver(radius, length, clearance, viscosity, 1e-9, 200e9, "finite-reynolds")
+    steps, period = 4, 0.01
+    orbit = periodic_orbit(
+        solver,
+        np.arange(steps) * period / steps,
+        period,
+        np.zeros(steps),
+        np.full(steps, -load),  # pressing downwards
+        np.full(steps, 0.5 * speed),
+        start=[0.2, -0.2],
+    )
+    attitude = np.arctan2(orbit.eccentricity_x, -orbit.eccentricity_y)
+    np.testing.assert_allclose(orbit.eccentricity_ratio, 0.6, rtol=2e-3)
+    np.testing.assert_allclose(attitude, steady.attitude_angle, rtol=2e-3)
