@@ -65,6 +65,19 @@ def test_lubrication_is_dry_by_default():
     assert not load_config().lubrication.lubricated
 
 
+def test_cavitation_is_half_sommerfeld_unless_reynolds_is_asked_for():
+    assert load_config().lubrication.cavitation == "half-Sommerfeld"
+    config = load_config(
+        overrides=[
+            "lubrication.model=finite-length",
+            "lubrication.viscosity=0.1 Pa*s",
+            "lubrication.cavitation=Reynolds",
+        ]
+    )
+    assert config.lubrication.cavitation == "Reynolds"
+    assert config.replace({}).lubrication == config.lubrication  # reads back from its TOML
+
+
 def test_the_asperity_defaults_are_the_librarys():
     from jointwear.config import LubricationConfig
     from jointwear.lubrication.asperity import DEFAULT_ETA_BETA_SIGMA, DEFAULT_SIGMA_OVER_BETA
@@ -115,6 +128,15 @@ def test_viscosity_reads_in_pascal_seconds():
         (["lubrication.viscosity=0.1 m"], "lubrication.viscosity"),
         (["lubrication.lubricant=iso-vg-68", "lubrication.temperature=60"], "below 173.15 K"),
         (["lubrication.temperature=60 degC"], "give lubricant"),
+        (["lubrication.cavitation=reynold"], "did you mean 'Reynolds'"),
+        (
+            [
+                "lubrication.model=short-bearing",
+                "lubrication.viscosity=0.1 Pa*s",
+                "lubrication.cavitation=Reynolds",
+            ],
+            "lubrication.cavitation: 'Reynolds' needs model = 'finite-length'",
+        ),
     ],
 )
 def test_bad_lubrication_keys_are_refused_in_one_line(overrides, message):

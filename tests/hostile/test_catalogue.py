@@ -381,6 +381,21 @@ CASES: list[Bad] = [
         ["lubrication.roughness", "transition band", "narrower than the clearance"],
     ),
     Bad(
+        "reynolds-cavitation-of-a-short-bearing",
+        "config",
+        [
+            "run",
+            "{paper}",
+            "--set",
+            "lubrication.model=short-bearing",
+            "--set",
+            "lubrication.viscosity=0.1 Pa*s",
+            "--set",
+            "lubrication.cavitation=Reynolds",
+        ],
+        ["lubrication.cavitation", "needs model = 'finite-length'"],
+    ),
+    Bad(
         "duty-cycle-shares-not-one",
         "config",
         ["run", "{tmp}/duty.toml"],

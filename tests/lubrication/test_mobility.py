@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import jointwear.lubrication.mobility as mobility_module
+from jointwear.lubrication import reynolds
 from jointwear.lubrication.film import long_bearing_force, short_bearing_force, wedge_speed
 from jointwear.lubrication.mobility import (
     film_force,
@@ -63,8 +64,8 @@ def test_the_finite_difference_grid_is_converged(monkeypatch):
     directions = np.array([0.0, 0.7, np.pi / 2, 2.5])
     for eps in (0.5, 0.8, 0.95):
         coarse = mobility_module.tabulated_forces(eps, 1.0, directions)
-        monkeypatch.setattr(mobility_module, "ANGLE_NODES", 240)
-        monkeypatch.setattr(mobility_module, "AXIAL_CELLS", 32)
+        monkeypatch.setattr(reynolds, "ANGLE_NODES", 240)
+        monkeypatch.setattr(reynolds, "AXIAL_CELLS", 32)
         fine = mobility_module.tabulated_forces(eps, 1.0, directions)
         monkeypatch.undo()
         size = np.hypot(*fine)
@@ -128,7 +129,7 @@ def test_ocvirks_steady_equilibrium_does_not_move(eps):
     assert abs(velocity.line_of_centres_speed) < 1e-9 * SPEED
 
 
-@pytest.mark.parametrize("model", ["short", "long", "finite"])
+@pytest.mark.parametrize("model", ["short", "long", "finite", "finite-reynolds"])
 def test_the_velocity_of_the_mobility_method_balances_the_load(model):
     rng = np.random.default_rng(2)
     n = 60

@@ -349,6 +349,8 @@ class LifeConfig(Section):
 
 #: ``lubrication.model``: dry contact, or a film model sharing the load with the asperities
 LubricationModel = Literal["dry", "short-bearing", "long-bearing", "finite-length"]
+#: ``lubrication.cavitation``: where the film ends (``jointwear.lubrication.reynolds``)
+LubricationCavitation = Literal["half-Sommerfeld", "Reynolds"]
 #: lowest temperature read [K]: a bare number is kelvin, and oil is liquid well above this
 LOWEST_TEMPERATURE = 173.15
 #: temperature of a lubricant given without one: the reference of the ISO VG grades [K]
@@ -395,9 +397,12 @@ class LubricationConfig(Section):
     ``sqrt(Rq_pin^2 + Rq_bushing^2)`` [m]; ``eta_beta_sigma`` and ``sigma_over_beta``
     are Greenwood--Tripp's asperity parameters, their defaults those of
     :mod:`jointwear.lubrication.asperity` (mid-range of engineering surfaces).
+    ``cavitation`` is the film's end: the positive part of the full film
+    (``"half-Sommerfeld"``) or Reynolds' condition (``"Reynolds"``, finite length only).
     """
 
     model: LubricationModel = "dry"
+    cavitation: LubricationCavitation = "half-Sommerfeld"
     viscosity: Annotated[float | None, Field(gt=0)] = None
     lubricant: str | None = None
     temperature: Annotated[float | None, BeforeValidator(optional_temperature)] = None
@@ -434,6 +439,11 @@ class LubricationConfig(Section):
             )
         if self.temperature is not None and self.lubricant is None:
             raise ValueError(f"{FIELD}temperature: sets a lubricant's viscosity; give lubricant")
+        if self.cavitation == "Reynolds" and self.model != "finite-length":
+            raise ValueError(
+                f"{FIELD}cavitation: 'Reynolds' needs model = 'finite-length' (got "
+                f"{self.model!r}; the short and long bearings are half-Sommerfeld closed forms)"
+            )
         if self.model != "dry" and self.viscosity is None and self.lubricant is None:
             raise ValueError(
                 f"{FIELD}viscosity: missing (lubrication.model = {self.model!r} needs "

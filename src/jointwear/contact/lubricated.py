@@ -126,6 +126,8 @@ class LubricatedContact:
 
     def __init__(self, section: LubricationConfig, parameters: ContactParameters) -> None:
         self.model = FILM_MODEL_OF[section.model]
+        if section.cavitation == "Reynolds":  # the finite length's (the configuration checks)
+            self.model = "finite-reynolds"
         self.viscosity = section_viscosity(section)
         self.roughness = section.roughness
         self.asperity = {

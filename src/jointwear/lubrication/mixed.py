@@ -157,7 +157,7 @@ def steady_load_sharing(
     load_speed : array_like
         Angular velocity of the load's direction [rad/s]; the pin's centre follows it.
     model : str
-        Film model: ``"short"``, ``"long"`` or ``"finite"``.
+        Film model: ``"short"``, ``"long"``, ``"finite"`` or ``"finite-reynolds"``.
     eta_beta_sigma, sigma_over_beta : array_like
         Greenwood--Tripp asperity parameters [-].
     exact : bool

@@ -57,16 +57,13 @@ References
 from __future__ import annotations
 
 from collections.abc import Callable
-from functools import cache
+from functools import cache, partial
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.integrate import simpson
 from scipy.interpolate import RegularGridInterpolator
 from scipy.optimize import elementwise
-from scipy.sparse import diags, identity, kron
-from scipy.sparse.linalg import splu
 
 from jointwear.geometry.angles import wrap_angle
 from jointwear.lubrication.film import (
@@ -74,6 +71,7 @@ from jointwear.lubrication.film import (
     long_bearing_force,
     short_bearing_force,
 )
+from jointwear.lubrication.reynolds import Cavitation, reynolds_forces, tabulated_forces
 
 __all__ = [
     "FILM_MODELS",
@@ -87,9 +85,6 @@ __all__ = [
 
 FloatArray = NDArray[np.float64]
 
-#: finite-difference grid: nodes around the bushing and over half its length
-ANGLE_NODES = 120
-AXIAL_CELLS = 16
 #: tabulated eccentricities eps = 1 - 10^-s, s uniform in [0, LOG_GAP_MAX] (eps <= 0.995);
 #: beyond, the force scaled by (1 - eps^2)^2.5 is held at its last tabulated value
 LOG_GAP_MAX = 2.3
@@ -99,95 +94,30 @@ DIRECTION_NODES = 72
 SMALLEST_ECCENTRICITY = 1e-6
 
 
-def inverse_sommerfeld_angle(gamma: FloatArray, eps: float) -> FloatArray:
-    """``theta`` of a Sommerfeld angle ``gamma`` (inverse of :func:`sommerfeld_angle`) [rad]."""
-    b = eps / (1.0 + np.sqrt(1.0 - eps * eps))
-    return gamma + 2.0 * np.arctan(b * np.sin(gamma) / (1.0 - b * np.cos(gamma)))
-
-
-def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Full-film solutions ``Pi_w`` (``beta = 0``) and ``Pi_s`` (``beta = pi/2``) on the grid.
-
-    Parameters
-    ----------
-    eps : float
-        Eccentricity ratio [-].
-    half_length : float
-        ``L / (2R)`` [-].
-
-    Returns
-    -------
-    tuple of ndarray
-        ``theta`` of the angle nodes [rad], and ``Pi_w``, ``Pi_s`` of shape
-        ``(AXIAL_CELLS + 1, ANGLE_NODES)`` from the middle (row 0) to the end [-].
-    """
-    step = 2.0 * np.pi / ANGLE_NODES
-    gamma = step * np.arange(ANGLE_NODES)
-    root = np.sqrt(1.0 - eps * eps)
-
-    def stretch(g: FloatArray) -> FloatArray:  # d theta / d gamma
-        return root / (1.0 - eps * np.cos(g))
-
-    def film(g: FloatArray) -> FloatArray:
-        return 1.0 + eps * np.cos(inverse_sommerfeld_angle(g, eps))
-
-    mid = gamma + 0.5 * step
-    flux = film(mid) ** 3 / stretch(mid) / step**2  # at gamma_{i+1/2}
-    around = diags(-(flux + np.roll(flux, 1))) + diags(flux[:-1], 1) + diags(flux[:-1], -1)
-    around = around + diags([flux[-1]], ANGLE_NODES - 1) + diags([flux[-1]], 1 - ANGLE_NODES)
-    dz = half_length / AXIAL_CELLS
-    axial = diags(
-        [-2.0 * np.ones(AXIAL_CELLS), np.ones(AXIAL_CELLS - 1), np.ones(AXIAL_CELLS - 1)],
-        [0, 1, -1],
-    )
-    axial = axial.tolil()
-    axial[0, 1] = 2.0  # symmetric about the middle of the bushing
-    weight = stretch(gamma) * film(gamma) ** 3 / dz**2
-    matrix = kron(identity(AXIAL_CELLS), around) + kron(axial.tocsr(), diags(weight))
-    theta = inverse_sommerfeld_angle(gamma, eps)
-    solver = splu(matrix.tocsc())
-    fields = []
-    for source in (-np.sin(theta), np.cos(theta)):
-        solution = solver.solve(np.tile(stretch(gamma) * source, AXIAL_CELLS))
-        field = np.zeros((AXIAL_CELLS + 1, ANGLE_NODES))
-        field[:-1] = solution.reshape(AXIAL_CELLS, ANGLE_NODES)
-        fields.append(field)
-    return theta, fields[0], fields[1]
-
-
-def tabulated_forces(eps: float, half_length: float, directions: FloatArray) -> FloatArray:
-    """``G_r, G_t`` of the positive film for every direction ``beta``, shape ``(2, n)`` [-]."""
-    theta, wedge, squeeze = reynolds_solutions(eps, half_length)
-    step = 2.0 * np.pi / ANGLE_NODES
-    stretch = np.sqrt(1.0 - eps * eps) / (1.0 - eps * np.cos(step * np.arange(ANGLE_NODES)))
-    pressure = (
-        np.cos(directions)[:, None, None] * wedge + np.sin(directions)[:, None, None] * squeeze
-    )
-    positive = np.maximum(pressure, 0.0) * stretch * step
-    axial = np.linspace(0.0, half_length, AXIAL_CELLS + 1)
-    over_angle = np.stack([positive @ np.cos(theta), positive @ np.sin(theta)])
-    return 2.0 * simpson(over_angle, x=axial, axis=-1)
-
-
 @cache
-def force_table(length_to_diameter: float) -> RegularGridInterpolator:
+def force_table(
+    length_to_diameter: float, cavitation: Cavitation = "half-Sommerfeld"
+) -> RegularGridInterpolator:
     """Interpolant of ``(1 - eps^2)^2.5 G(eps, beta)`` over ``(s, beta)``, ``eps = 1 - 10^-s``.
 
-    Built once per ``L/D`` (about 0.3 s) and cached.
+    Built once per ``L/D`` and cavitation condition and cached: about 0.3 s with
+    half-Sommerfeld's, some 10-30 s with Reynolds' (a complementarity problem per state,
+    :func:`~jointwear.lubrication.reynolds.reynolds_forces`).
 
     Parameters
     ----------
     length_to_diameter : float
         ``L / D`` [-].
+    cavitation : {"half-Sommerfeld", "Reynolds"}
+        The film's cavitation condition (:mod:`jointwear.lubrication.reynolds`).
     """
+    forces = reynolds_forces if cavitation == "Reynolds" else tabulated_forces
     log_gap = np.linspace(0.0, LOG_GAP_MAX, LOG_GAP_NODES)
     directions = np.linspace(-np.pi, np.pi, DIRECTION_NODES, endpoint=False)
     values = np.empty((LOG_GAP_NODES, DIRECTION_NODES, 2))
     for k, s in enumerate(log_gap):
         eps = 1.0 - 10.0**-s
-        values[k] = (
-            tabulated_forces(eps, length_to_diameter, directions).T * (1.0 - eps * eps) ** 2.5
-        )
+        values[k] = forces(eps, length_to_diameter, directions).T * (1.0 - eps * eps) ** 2.5
     # three directions repeated on each side make the spline periodic in beta
     pad = 3
     padded = np.concatenate([values[:, -pad:], values, values[:, :pad]], axis=1)
@@ -205,8 +135,9 @@ def finite_bearing_force(
     eccentricity_ratio: ArrayLike,
     eccentricity_rate: ArrayLike,
     wedge_speed: ArrayLike,
+    cavitation: Cavitation = "half-Sommerfeld",
 ) -> FilmForce:
-    """Film force of a bushing of finite length, half-Sommerfeld cavitation [N].
+    """Film force of a bushing of finite length [N].
 
     .. math:: F = 6\\mu R^2 (R/c)^2\\, m\\, G(\\varepsilon, \\beta; L/D), \\qquad
               m = \\sqrt{(\\varepsilon\\bar\\omega)^2 + (2\\dot\\varepsilon)^2},\\;
@@ -234,6 +165,8 @@ def finite_bearing_force(
         ``deps/dt`` [1/s].
     wedge_speed : array_like
         ``omega_bar = omega_pin + omega_bushing - 2 dphi/dt`` [rad/s].
+    cavitation : {"half-Sommerfeld", "Reynolds"}
+        The film's cavitation condition (:mod:`jointwear.lubrication.reynolds`).
 
     Returns
     -------
@@ -256,12 +189,17 @@ def finite_bearing_force(
     )
     size = np.hypot(eps * wedge, 2.0 * rate)
     direction = np.arctan2(2.0 * rate, eps * wedge)
-    shape = dimensionless_finite(eps, direction, length_ / (2.0 * radius_))
+    shape = dimensionless_finite(eps, direction, length_ / (2.0 * radius_), cavitation)
     scale = 6.0 * viscosity_ * radius_**2 * (radius_ / clearance_) ** 2 * size
     return FilmForce(scale * shape[0], scale * shape[1])
 
 
-def dimensionless_finite(eps: FloatArray, direction: FloatArray, ratio: FloatArray) -> FloatArray:
+def dimensionless_finite(
+    eps: FloatArray,
+    direction: FloatArray,
+    ratio: FloatArray,
+    cavitation: Cavitation = "half-Sommerfeld",
+) -> FloatArray:
     """``G(eps, beta; L/D)`` of the finite bearing, shape ``(2, ...)`` [-]."""
     out = np.empty((2, *eps.shape))
     # beyond the table the scaled value is held: V(s_max) / (1 - eps^2)^2.5
@@ -269,16 +207,24 @@ def dimensionless_finite(eps: FloatArray, direction: FloatArray, ratio: FloatArr
     wrapped = wrap_angle(direction)
     for value in np.unique(ratio):
         where = ratio == value
-        scaled = force_table(float(value))(np.stack([log_gap[where], wrapped[where]], axis=-1))
+        table = force_table(float(value), cavitation)
+        scaled = table(np.stack([log_gap[where], wrapped[where]], axis=-1))
         out[:, where] = (scaled / (1.0 - eps[where, None] ** 2) ** 2.5).T
     return out
 
 
 #: film models by name: force functions with the signature of short_bearing_force
+#: (``"finite-reynolds"``: the finite bearing with Reynolds' cavitation)
 FILM_MODELS: dict[str, Callable[..., FilmForce]] = {
     "short": short_bearing_force,
     "long": long_bearing_force,
     "finite": finite_bearing_force,
+    "finite-reynolds": partial(finite_bearing_force, cavitation="Reynolds"),
+}
+#: the finite bearing's film models and their cavitation condition
+FINITE_CAVITATION: dict[str, Cavitation] = {
+    "finite": "half-Sommerfeld",
+    "finite-reynolds": "Reynolds",
 }
 
 
@@ -297,7 +243,7 @@ def film_force(
     Parameters
     ----------
     model : str
-        ``"short"``, ``"long"`` or ``"finite"``.
+        ``"short"``, ``"long"``, ``"finite"`` or ``"finite-reynolds"``.
     radius, length, clearance, viscosity, eccentricity_ratio, eccentricity_rate, wedge_speed
         As for :func:`~jointwear.lubrication.film.short_bearing_force` [SI].
     """
@@ -328,8 +274,8 @@ def dimensionless_force(
     eps, direction, ratio = np.broadcast_arrays(
         np.maximum(eccentricity_ratio, SMALLEST_ECCENTRICITY), direction, length_to_diameter
     )
-    if model == "finite":
-        return dimensionless_finite(eps, direction, ratio)
+    if model in FINITE_CAVITATION:
+        return dimensionless_finite(eps, direction, ratio, FINITE_CAVITATION[model])
     # R = c = 1, mu = 1/6 and m = 1 make F = G
     force = FILM_MODELS[model](
         1.0, 2.0 * ratio, 1.0, 1.0 / 6.0, eps, 0.5 * np.sin(direction), np.cos(direction) / eps
@@ -381,7 +327,7 @@ def mobility(
     length_to_diameter : array_like
         ``L / D`` [-].
     model : str
-        ``"short"``, ``"long"`` or ``"finite"`` (:data:`FILM_MODELS`).
+        ``"short"``, ``"long"``, ``"finite"`` or ``"finite-reynolds"`` (:data:`FILM_MODELS`).
 
     Returns
     -------
@@ -479,7 +425,7 @@ def journal_centre_velocity(
     pin_speed, bushing_speed : array_like
         Angular velocities of pin and bushing [rad/s].
     model : str
-        ``"short"``, ``"long"`` or ``"finite"``.
+        ``"short"``, ``"long"``, ``"finite"`` or ``"finite-reynolds"``.
 
     Returns
     -------

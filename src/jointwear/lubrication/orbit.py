@@ -17,7 +17,8 @@ carry part of the load and the film only the rest:
 
 with ``F_a <= 0`` the radial asperity force and ``M`` the mobility vector of the film
 model at the direction of the film's load. Cavitation is the half-Sommerfeld (Guembel)
-condition of the film models. The load, the pin's and the bushing's speeds are those
+condition of the film models, or Reynolds' (``"finite-reynolds"``,
+:mod:`jointwear.lubrication.reynolds`). The load, the pin's and the bushing's speeds are those
 of the cycle, in the frame of the bushing (the film sees only ``omega_pin +
 omega_bushing - 2 dphi/dt``, the same in every frame).
 
@@ -298,7 +299,7 @@ class OrbitSolver:
     composite_modulus : float
         ``E*`` of pin and bushing [Pa].
     model : str
-        Film model: ``"short"``, ``"long"`` or ``"finite"``.
+        Film model: ``"short"``, ``"long"``, ``"finite"`` or ``"finite-reynolds"``.
     eta_beta_sigma, sigma_over_beta : float
         Greenwood--Tripp asperity parameters [-].
     exact : bool
@@ -357,7 +358,7 @@ class OrbitSolver:
 
     def kernel_arguments(self) -> tuple[Any, ...]:
         """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity."""
-        codes = {"short": 0.0, "long": 1.0, "finite": 1.0}
+        codes = {"short": 0.0, "long": 1.0, "finite": 1.0, "finite-reynolds": 1.0}
         joint = (
             self.clearance,
             self.roughness,
