@@ -97,6 +97,10 @@ FAST_CONTRACTION = 0.2
 #: cycle integrations allowed to the root finder per round, and its rounds
 ROOT_EVALUATIONS = 40
 ROOT_ROUNDS = 3
+#: the root finder's forward differences step ``sqrt(JACOBIAN_STEP)`` times the state
+#: (MINPACK's ``epsfcn``): well above the integration's error, so that the cycle
+#: map's Jacobian is not round-off of the tolerance ``INTEGRATION_RTOL``
+JACOBIAN_STEP = 1e-6
 #: a mismatch of the film force's direction this small is a root [rad]
 ROUND_OFF = 1e-12
 #: the periodicity tolerance scales with the smallest gap, but not below this many
@@ -691,7 +695,7 @@ def periodic_orbit(
             lambda initial: cycle(initial)[:, -1] - initial,
             path[:, -1],
             method="hybr",
-            options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS},
+            options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS, "eps": JACOBIAN_STEP},
         )
         # (the cycle map integrates a start it integrated last only once)
         path = cycle(found.x)
