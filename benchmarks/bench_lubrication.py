@@ -10,8 +10,9 @@ load cycle is computed once and reused. Each simulation is built outside the tim
 mechanism's load cycle is the same for all); numba's kernels and the film models'
 tables (long and finite bearing, built once per L/D and process) are warmed up first.
 CPU time of this process (the machine is shared) and wall time, medians of ``--repeats``
-runs (the Python path: ``--python-repeats``), and the CPU ratios to dry measured in the
-same run; the load average is printed at the start and the end.
+runs (the Python path: ``--python-repeats``); each run of a case is followed by a dry run
+of as many revolutions, and the ratio is that of the two CPU medians (a changing load
+changes both alike). The load average is printed at the start and the end.
 
 Run: ``python benchmarks/bench_lubrication.py [--repeats N]``
 """
@@ -72,11 +73,24 @@ def one_run(
     return time.process_time() - began, time.perf_counter() - began_wall
 
 
-def medians(overrides: list[str], repeats: int, **run: object) -> tuple[float, float]:
-    """Median CPU and median wall seconds of ``repeats`` runs after a warm-up."""
+def paired(overrides: list[str], repeats: int, **run: object) -> tuple[float, float, float]:
+    """Median CPU and wall seconds of ``repeats`` runs of a case, and the median CPU
+    seconds of as many dry runs, each right after one of the case (the machine's load
+    changes the two alike); a warm-up of each first."""
     one_run(overrides, **run)  # warm-up: numba kernels, film tables
-    times = [one_run(overrides, **run) for _ in range(repeats)]
-    return statistics.median(t[0] for t in times), statistics.median(t[1] for t in times)
+    one_run([], **run)
+    case, dry = [], []
+    for _ in range(repeats):
+        case.append(one_run(overrides, **run))
+        dry.append(one_run([], **run)[0])
+    cpu = statistics.median(t[0] for t in case)
+    return cpu, statistics.median(t[1] for t in case), statistics.median(dry)
+
+
+def row(table: Table, name: str, orbit_path: str, timed: tuple[float, float, float]) -> None:
+    """A row: the case's CPU and wall medians [ms] and its CPU ratio to the dry runs."""
+    cpu, wall, dry = timed
+    table.add(name, orbit_path, f"{1e3 * cpu:.1f}", f"{1e3 * wall:.1f}", f"{cpu / dry:.2f}")
 
 
 def main() -> None:
@@ -86,32 +100,25 @@ def main() -> None:
     arguments = parser.parse_args()
     print(f"Machine: {describe_machine()}\n")
     table = Table("case", "orbit", "CPU [ms]", "wall [ms]", "CPU ratio to dry")
-    dry, dry_wall = medians([], arguments.repeats)
-    table.add("dry", "-", f"{1e3 * dry:.1f}", f"{1e3 * dry_wall:.1f}", "1.0")
+    row(table, "dry", "-", paired([], arguments.repeats))
     for name, overrides in list(CASES.items())[1:]:
-        compiled, wall = medians(overrides, arguments.repeats)
-        table.add(name, "compiled", f"{1e3 * compiled:.1f}", f"{1e3 * wall:.1f}",
-                  f"{compiled / dry:.2f}")  # fmt: skip
+        row(table, name, "compiled", paired(overrides, arguments.repeats))
         # the Python right-hand side under LSODA, as without numba (the contact
         # kernel stays compiled, so only the orbit differs)
         kernel, orbit._KERNEL = orbit._KERNEL, False
         try:
-            python, wall = medians(overrides, arguments.python_repeats)
+            row(table, name, "Python, LSODA", paired(overrides, arguments.python_repeats))
         finally:
             orbit._KERNEL = kernel
-        table.add(name, "Python, LSODA", f"{1e3 * python:.1f}", f"{1e3 * wall:.1f}",
-                  f"{python / dry:.1f}")  # fmt: skip
     many = {"revolutions": 10, "update": True}
-    dry_many, wall = medians([], arguments.repeats, **many)
-    table.add("dry, 10 revolutions", "-", f"{1e3 * dry_many:.1f}", f"{1e3 * wall:.1f}", "1.0")
+    row(table, "dry, 10 revolutions", "-", paired([], arguments.repeats, **many))
     for name in ("short bearing, 0.3 Pa s", "finite length, ISO VG 68 at 60 degC"):
-        lubricated, wall = medians(CASES[name], arguments.repeats, **many)
-        table.add(f"{name}, 10 revolutions", "compiled", f"{1e3 * lubricated:.1f}",
-                  f"{1e3 * wall:.1f}", f"{lubricated / dry_many:.2f}")  # fmt: skip
+        timed = paired(CASES[name], arguments.repeats, **many)
+        row(table, f"{name}, 10 revolutions", "compiled", timed)
     table.print(
         f"The Table 3 slider-crank (360 steps): one revolution, and ten with the contour "
         f"updated; medians of CPU and wall time, {arguments.repeats} repeats "
-        f"({arguments.python_repeats} for the Python orbit)"
+        f"({arguments.python_repeats} for the Python orbit), each after a dry run"
     )
     print(f"Load average at the end: {describe_machine().rsplit('load average ', 1)[-1]}")
 

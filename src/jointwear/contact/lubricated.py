@@ -35,7 +35,7 @@ from numpy.typing import NDArray
 from scipy.optimize import brentq
 
 from jointwear.geometry.angles import wrap_angle
-from jointwear.lubrication.asperity import FIT_OMEGA, asperity_pressure, composite_modulus
+from jointwear.lubrication.asperity import asperity_pressure, composite_modulus
 from jointwear.lubrication.lubricants import section_viscosity
 from jointwear.lubrication.orbit import Orbit, OrbitSolver, periodic_orbit
 
@@ -257,14 +257,10 @@ class LubricatedContact:
         offset = orbit.eccentricity_x[:, None] * np.cos(angles) + orbit.eccentricity_y[
             :, None
         ] * np.sin(angles)
-        film = self.clearance * (1.0 - offset)
-        # the fit is zero from FIT_OMEGA roughnesses on: only the nodes nearer than
-        # that are evaluated (the same values, a fraction of the work)
-        touching = (film / self.roughness < FIT_OMEGA) & (cycle.load > 0.0)[:, None]
-        pressure = np.zeros(film.shape)
-        pressure[touching] = asperity_pressure(
-            film[touching], self.roughness, self.modulus, **self.asperity
+        pressure = asperity_pressure(
+            self.clearance * (1.0 - offset), self.roughness, self.modulus, **self.asperity
         )
+        pressure = np.where((cycle.load > 0.0)[:, None], pressure, 0.0)
         self._pressure = (cycle, nodes, pressure)
         return pressure.copy()
 
