@@ -15,6 +15,7 @@ import pytest
 
 from jointwear import Simulation, load_config
 from jointwear.contact.lubricated import bulk_weight, film_speeds
+from jointwear.lubrication.mixed import steady_load_sharing
 from jointwear.lubrication.orbit import periodic_orbit
 from jointwear.mechanism.cycle import LoadCycle
 
@@ -155,6 +156,45 @@ def test_the_oiled_slider_crank_pin_wears_less_the_faster_the_crank_turns():
     assert 0.5 < least[0] < 1.0 < least[-1] < 3.0  # from the bulk's edge into the mixed regime
     assert np.all(np.diff(least) > 0.0)
     assert np.all(np.diff(wear) < 0.0)
+
+
+@pytest.mark.parametrize(
+    ("model", "viscosity", "tolerance"), [("short", 0.05, 1e-6), ("finite", 1.0, 1e-6)]
+)
+def test_the_orbits_first_guess_is_the_steady_equilibrium(model, viscosity, tolerance):
+    """A steady load turning with the crank pin: the first guess (the orbit's own force
+    factor) is the equilibrium of the steady load sharing (the film force itself)."""
+    steps, period, load = 36, 0.5, 300.0
+    cycle = LoadCycle(
+        time=np.arange(steps) * period / steps,
+        load=np.full(steps, load),
+        azimuth=np.full(steps, -np.pi / 2),
+        relative_rotation=np.full(steps, 2.0 * np.pi / steps),
+        period=period,
+    )
+    film = {"short": "short-bearing", "finite": "finite-length"}[model]
+    simulation, _ = run(
+        f"lubrication.model={film}", f"lubrication.viscosity={viscosity} Pa*s", cycle=cycle
+    )
+    lubrication = simulation.solver.lubrication
+    joint = lubrication.parameters
+    steady = steady_load_sharing(
+        load,
+        joint.pin_radius,
+        joint.axial_length,
+        lubrication.clearance,
+        lubrication.viscosity,
+        2.0 * np.pi / period,
+        lubrication.roughness,
+        lubrication.modulus,
+        model=model,
+    )
+    guess = lubrication.first_guess(cycle)
+    eps = float(steady.eccentricity_ratio)
+    assert 0.3 < eps < 0.9  # off centre, off the wall: no asperities, no clamping
+    assert np.hypot(*guess) == pytest.approx(eps, rel=tolerance)
+    angle = math.atan2(guess[1], guess[0]) - (-np.pi / 2)
+    assert angle == pytest.approx(float(steady.attitude_angle), abs=tolerance)
 
 
 def test_bulk_weight_is_smooth_from_boundary_to_film():
