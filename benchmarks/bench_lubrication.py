@@ -9,8 +9,10 @@ numba does). Then ten revolutions with the contour updated, where the orbit of t
 load cycle is computed once and reused. Each simulation is built outside the timer (the
 mechanism's load cycle is the same for all); numba's kernels and the film models'
 tables (long and finite bearing, built once per L/D and process) are warmed up first.
-CPU time of this process (the machine is shared), medians of ``--repeats`` runs (the
-Python path: ``--python-repeats``), and the ratios to dry measured in the same run.
+CPU time of this process (the machine is shared) and wall time, medians of ``--repeats``
+runs (the Python path: ``--python-repeats``); each run of a case is followed by a dry run
+of as many revolutions, and the ratio is that of the two CPU medians (a changing load
+changes both alike). The load average is printed at the start and the end.
 
 Run: ``python benchmarks/bench_lubrication.py [--repeats N]``
 """
@@ -53,8 +55,10 @@ CASES = {
 }
 
 
-def one_run(overrides: list[str], revolutions: int = 1, update: bool = False) -> float:
-    """CPU seconds of ``Simulation.run()`` (the simulation built outside the timer)."""
+def one_run(
+    overrides: list[str], revolutions: int = 1, update: bool = False
+) -> tuple[float, float]:
+    """CPU and wall seconds of ``Simulation.run()`` (the simulation built outside the timer)."""
     config = load_config(
         CONFIG,
         overrides=[
@@ -64,16 +68,29 @@ def one_run(overrides: list[str], revolutions: int = 1, update: bool = False) ->
         ],
     )
     simulation = Simulation(config)
-    began = time.process_time()
+    began, began_wall = time.process_time(), time.perf_counter()
     simulation.run(pressures=False)
-    return time.process_time() - began
+    return time.process_time() - began, time.perf_counter() - began_wall
 
 
-def medians(overrides: list[str], repeats: int, **run: object) -> tuple[float, float]:
-    """Median and least CPU seconds of ``repeats`` runs after a warm-up."""
+def paired(overrides: list[str], repeats: int, **run: object) -> tuple[float, float, float]:
+    """Median CPU and wall seconds of ``repeats`` runs of a case, and the median CPU
+    seconds of as many dry runs, each right after one of the case (the machine's load
+    changes the two alike); a warm-up of each first."""
     one_run(overrides, **run)  # warm-up: numba kernels, film tables
-    times = [one_run(overrides, **run) for _ in range(repeats)]
-    return statistics.median(times), min(times)
+    one_run([], **run)
+    case, dry = [], []
+    for _ in range(repeats):
+        case.append(one_run(overrides, **run))
+        dry.append(one_run([], **run)[0])
+    cpu = statistics.median(t[0] for t in case)
+    return cpu, statistics.median(t[1] for t in case), statistics.median(dry)
+
+
+def row(table: Table, name: str, orbit_path: str, timed: tuple[float, float, float]) -> None:
+    """A row: the case's CPU and wall medians [ms] and its CPU ratio to the dry runs."""
+    cpu, wall, dry = timed
+    table.add(name, orbit_path, f"{1e3 * cpu:.1f}", f"{1e3 * wall:.1f}", f"{cpu / dry:.2f}")
 
 
 def main() -> None:
@@ -82,34 +99,28 @@ def main() -> None:
     parser.add_argument("--python-repeats", type=int, default=3)
     arguments = parser.parse_args()
     print(f"Machine: {describe_machine()}\n")
-    table = Table("case", "orbit", "median [ms]", "min [ms]", "ratio to dry (median)")
-    dry, _ = medians([], arguments.repeats)
-    table.add("dry", "-", f"{1e3 * dry:.1f}", "", "1.0")
+    table = Table("case", "orbit", "CPU [ms]", "wall [ms]", "CPU ratio to dry")
+    row(table, "dry", "-", paired([], arguments.repeats))
     for name, overrides in list(CASES.items())[1:]:
-        compiled, least = medians(overrides, arguments.repeats)
-        table.add(name, "compiled", f"{1e3 * compiled:.1f}", f"{1e3 * least:.1f}",
-                  f"{compiled / dry:.2f}")  # fmt: skip
+        row(table, name, "compiled", paired(overrides, arguments.repeats))
         # the Python right-hand side under LSODA, as without numba (the contact
         # kernel stays compiled, so only the orbit differs)
         kernel, orbit._KERNEL = orbit._KERNEL, False
         try:
-            python, least = medians(overrides, arguments.python_repeats)
+            row(table, name, "Python, LSODA", paired(overrides, arguments.python_repeats))
         finally:
             orbit._KERNEL = kernel
-        table.add(name, "Python, LSODA", f"{1e3 * python:.1f}", f"{1e3 * least:.1f}",
-                  f"{python / dry:.1f}")  # fmt: skip
     many = {"revolutions": 10, "update": True}
-    dry_many, least = medians([], arguments.repeats, **many)
-    table.add("dry, 10 revolutions", "-", f"{1e3 * dry_many:.1f}", f"{1e3 * least:.1f}", "1.0")
+    row(table, "dry, 10 revolutions", "-", paired([], arguments.repeats, **many))
     for name in ("short bearing, 0.3 Pa s", "finite length, ISO VG 68 at 60 degC"):
-        lubricated, least = medians(CASES[name], arguments.repeats, **many)
-        table.add(f"{name}, 10 revolutions", "compiled", f"{1e3 * lubricated:.1f}",
-                  f"{1e3 * least:.1f}", f"{lubricated / dry_many:.2f}")  # fmt: skip
+        timed = paired(CASES[name], arguments.repeats, **many)
+        row(table, f"{name}, 10 revolutions", "compiled", timed)
     table.print(
         f"The Table 3 slider-crank (360 steps): one revolution, and ten with the contour "
-        f"updated; CPU time, {arguments.repeats} repeats ({arguments.python_repeats} for "
-        "the Python orbit)"
+        f"updated; medians of CPU and wall time, {arguments.repeats} repeats "
+        f"({arguments.python_repeats} for the Python orbit), each after a dry run"
     )
+    print(f"Load average at the end: {describe_machine().rsplit('load average ', 1)[-1]}")
 
 
 if __name__ == "__main__":

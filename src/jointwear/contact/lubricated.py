@@ -32,11 +32,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
+from scipy.optimize import brentq
 
 from jointwear.geometry.angles import wrap_angle
 from jointwear.lubrication.asperity import asperity_pressure, composite_modulus
 from jointwear.lubrication.lubricants import section_viscosity
-from jointwear.lubrication.mixed import steady_load_sharing
 from jointwear.lubrication.orbit import Orbit, OrbitSolver, periodic_orbit
 
 if TYPE_CHECKING:
@@ -52,6 +52,8 @@ FloatArray = NDArray[np.float64]
 FILM_MODEL_OF = {"short-bearing": "short", "long-bearing": "long", "finite-length": "finite"}
 #: the orbit's first guess lies no closer to the wall than this eccentricity ratio
 FIRST_GUESS_LIMIT = 0.9
+#: the steady equilibrium of the first guess is sought up to this eccentricity ratio
+STEADY_LIMIT = 1.0 - 1e-9
 
 
 @dataclass(frozen=True)
@@ -160,24 +162,43 @@ class LubricatedContact:
         self._pressure: tuple[Any, int, FloatArray] | None = None
 
     def first_guess(self, cycle: LoadCycle) -> FloatArray:
-        """The quasi-static equilibrium of the first step, at most 0.9 off centre [-]."""
-        joint = self.parameters
+        """The film's steady equilibrium under the first step's load, at most 0.9 off
+        centre [-].
+
+        A steady pin (no squeeze, ``beta = 0`` or ``pi``) whose centre follows the load
+        at ``omega_load`` moves at ``eps |omega_mean - omega_load|`` in the frame of
+        Booker's mobility method, which the load drives at ``k |M|`` (module
+        :mod:`jointwear.lubrication.orbit`):
+
+        .. math::
+
+            \\varepsilon\\,|\\omega_{mean} - \\omega_{load}| = \\frac{W (c/R)^2}{\\mu L D}
+            \\frac{L/D}{3\\,|G(\\varepsilon, \\beta)|},
+
+        solved for ``eps`` with :func:`scipy.optimize.brentq` from the film model's own
+        force factor ``G``; the attitude puts the film's force against the load. The
+        asperities are left out (they act only closer to the wall than the guess goes).
+        Only a start: the orbit is iterated to its periodic state from here.
+        """
+        solver = self.solver
         pin_speed, load_speed = film_speeds(cycle)
-        steady = steady_load_sharing(
-            max(float(cycle.load[0]), 1e-9),
-            joint.pin_radius,
-            joint.axial_length,
-            self.clearance,
-            self.viscosity,
-            float(pin_speed[0]),
-            self.roughness,
-            self.modulus,
-            load_speed=float(load_speed[0]),
-            model=self.model,
-            **self.asperity,
-        )
-        eps = min(float(steady.eccentricity_ratio), FIRST_GUESS_LIMIT)
-        angle = float(cycle.azimuth[0] + steady.attitude_angle)
+        relative = 0.5 * float(pin_speed[0]) - float(load_speed[0])
+        load = float(cycle.load[0])
+        if load <= 0.0 or relative == 0.0:
+            return np.zeros(2)
+        beta = 0.0 if relative > 0.0 else math.pi
+
+        def excess_speed(eps: float) -> float:
+            shape = solver.scalar_shape(eps, beta)
+            rate = load * solver.mobility_scale * solver.ratio / (3.0 * math.hypot(*shape))
+            return eps * abs(relative) - rate
+
+        eps = STEADY_LIMIT
+        if excess_speed(STEADY_LIMIT) > 0.0:
+            eps = brentq(excess_speed, 1e-6, STEADY_LIMIT, xtol=1e-12)
+        shape = solver.scalar_shape(eps, beta)
+        angle = float(cycle.azimuth[0]) + math.pi - math.atan2(shape[1], shape[0])
+        eps = min(eps, FIRST_GUESS_LIMIT)
         return np.array([eps * math.cos(angle), eps * math.sin(angle)])
 
     def orbit(self, cycle: LoadCycle) -> tuple[Orbit, FilmRecord]:

@@ -169,6 +169,9 @@ class ContactSolver:
         self.lubrication = lubrication
         #: the load cycle and sliding distance whose warm revolutions are set up, and those
         self._warm_kernel: tuple[LoadCycle, FloatArray, WarmRevolutions | None] | None = None
+        #: the load cycle whose bulk contact (a lubricated joint) was solved last, and
+        #: where that solve ended
+        self._warm_bulk: tuple[LoadCycle, WarmStart] | None = None
 
     @classmethod
     def from_config(
@@ -434,22 +437,7 @@ class ContactSolver:
         record = lubrication.record(cycle)
         bulk = np.flatnonzero(record.bulk_load_fraction * cycle.load > 0.0)
         if bulk.size:
-            load, azimuth = record.bulk_load_fraction[bulk] * cycle.load[bulk], cycle.azimuth[bulk]
-            if facing is not None:
-                solved = self._worn_pin(contour, load, azimuth, facing[bulk])
-            else:
-                solved = solve(
-                    contour,
-                    self.pin,
-                    load,
-                    azimuth,
-                    self.law,
-                    self.parameters,
-                    balance=self.balance,
-                    tolerance=self.tolerance,
-                    max_iterations=self.max_iterations,
-                )
-            pressure[bulk] += solved.pressure
+            pressure[bulk] += self._bulk_pressure(contour, cycle, bulk, facing)
         touching = np.count_nonzero(pressure > 0.0, axis=1)
         half_angle = 0.5 * touching * contour.dtheta
         return ContactSolution(
@@ -465,6 +453,41 @@ class ContactSolver:
             iterations=np.zeros(steps, dtype=np.int64),
             model=getattr(self.law, "name", "custom"),
         )
+
+    def _bulk_pressure(
+        self,
+        contour: BushingContour,
+        cycle: LoadCycle,
+        bulk: NDArray[np.intp],
+        facing: FloatArray | None,
+    ) -> FloatArray:
+        """The bulk's share of the load at the steps ``bulk``, solved dry [Pa], (B, N).
+
+        The steps and their loads are the same every revolution of a load cycle (the
+        orbit is the unworn bushing's): each solve starts from the last one's offsets,
+        as the dry loop's solves do.
+        """
+        record = self.lubrication.record(cycle)
+        load, azimuth = record.bulk_load_fraction[bulk] * cycle.load[bulk], cycle.azimuth[bulk]
+        if facing is not None:
+            return self._worn_pin(contour, load, azimuth, facing[bulk]).pressure
+        kept, options = self._warm_bulk, {}
+        if kept is not None and kept[0] is cycle:
+            options = {"initial_offset": kept[1].warm_offset, "window": kept[1].window}
+        solved = solve(
+            contour,
+            self.pin,
+            load,
+            azimuth,
+            self.law,
+            self.parameters,
+            balance=self.balance,
+            tolerance=self.tolerance,
+            max_iterations=self.max_iterations,
+            **options,
+        )
+        self._warm_bulk = (cycle, self.warm_start(solved, contour, azimuth))
+        return solved.pressure
 
     def _worn_pin(
         self, contour: BushingContour, load: FloatArray, azimuth: FloatArray, facing: FloatArray

@@ -56,33 +56,47 @@ def _interval(breaks, x, lowest, highest):
 
 
 @njit(cache=True)
-def _basis(knots, x, span, out):
-    """The four cubic B-splines nonzero at ``x`` in ``span`` (FITPACK ``fpbspl``)."""
-    saved = np.empty(3)
-    out[0] = 1.0
-    for j in range(1, 4):
-        for i in range(j):
-            saved[i] = out[i]
-        out[0] = 0.0
-        for i in range(j):
-            right = span + i + 1
-            left = right - j
-            factor = saved[i] / (knots[right] - knots[left])
-            out[i] += factor * (knots[right] - x)
-            out[i + 1] = factor * (x - knots[left])
+def _basis(knots, x, span):
+    """The four cubic B-splines nonzero at ``x`` in ``span`` (FITPACK ``fpbspl``).
+
+    De Boor's recursion unrolled into scalars (no array allocated per call), in
+    FITPACK's order of operations.
+    """
+    # degree 1
+    right, left = span + 1, span
+    factor = 1.0 / (knots[right] - knots[left])
+    b0 = 0.0 + factor * (knots[right] - x)
+    b1 = factor * (x - knots[left])
+    # degree 2
+    s0, s1 = b0, b1
+    right, left = span + 1, span - 1
+    factor = s0 / (knots[right] - knots[left])
+    b0 = 0.0 + factor * (knots[right] - x)
+    b1 = factor * (x - knots[left])
+    right, left = span + 2, span
+    factor = s1 / (knots[right] - knots[left])
+    b1 += factor * (knots[right] - x)
+    b2 = factor * (x - knots[left])
+    # degree 3
+    s0, s1, s2 = b0, b1, b2
+    right, left = span + 1, span - 2
+    factor = s0 / (knots[right] - knots[left])
+    b0 = 0.0 + factor * (knots[right] - x)
+    b1 = factor * (x - knots[left])
+    right, left = span + 2, span - 1
+    factor = s1 / (knots[right] - knots[left])
+    b1 += factor * (knots[right] - x)
+    b2 = factor * (x - knots[left])
+    right, left = span + 3, span
+    factor = s2 / (knots[right] - knots[left])
+    b2 += factor * (knots[right] - x)
+    b3 = factor * (x - knots[left])
+    return b0, b1, b2, b3
 
 
 @njit(cache=True)
-def bicubic(tx, ty, coefficients, x, y):
-    """A bicubic B-spline at one point (FITPACK ``bisplev``, ``kx = ky = 3``)."""
-    x = min(max(x, tx[3]), tx[tx.size - 4])
-    y = min(max(y, ty[3]), ty[ty.size - 4])
-    span_x = _interval(tx, x, 3, tx.size - 5)
-    span_y = _interval(ty, y, 3, ty.size - 5)
-    wx, wy = np.empty(4), np.empty(4)
-    _basis(tx, x, span_x, wx)
-    _basis(ty, y, span_y, wy)
-    columns = ty.size - 4
+def _bicubic_sum(coefficients, span_x, span_y, columns, wx, wy):
+    """``sum_i wx_i sum_j wy_j c[(span_x - 3 + i) columns + span_y - 3 + j]``."""
     total = 0.0
     for i in range(4):
         row = (span_x - 3 + i) * columns + span_y - 3
@@ -91,6 +105,34 @@ def bicubic(tx, ty, coefficients, x, y):
             inner += wy[j] * coefficients[row + j]
         total += wx[i] * inner
     return total
+
+
+@njit(cache=True)
+def _spans(tx, ty, x, y):
+    """The point clipped to the splines' domain, its knot spans and its basis values."""
+    x = min(max(x, tx[3]), tx[tx.size - 4])
+    y = min(max(y, ty[3]), ty[ty.size - 4])
+    span_x = _interval(tx, x, 3, tx.size - 5)
+    span_y = _interval(ty, y, 3, ty.size - 5)
+    return span_x, span_y, _basis(tx, x, span_x), _basis(ty, y, span_y)
+
+
+@njit(cache=True)
+def bicubic(tx, ty, coefficients, x, y):
+    """A bicubic B-spline at one point (FITPACK ``bisplev``, ``kx = ky = 3``)."""
+    span_x, span_y, wx, wy = _spans(tx, ty, x, y)
+    return _bicubic_sum(coefficients, span_x, span_y, ty.size - 4, wx, wy)
+
+
+@njit(cache=True)
+def bicubic_pair(tx, ty, first, second, x, y):
+    """Two bicubic B-splines on the same knots at one point (:func:`bicubic` of each)."""
+    span_x, span_y, wx, wy = _spans(tx, ty, x, y)
+    columns = ty.size - 4
+    return (
+        _bicubic_sum(first, span_x, span_y, columns, wx, wy),
+        _bicubic_sum(second, span_x, span_y, columns, wx, wy),
+    )
 
 
 #: ``G(eps, beta; L/D)`` of the short bearing in closed form [-]
@@ -105,10 +147,8 @@ def shape(eps, beta, model, ratio, log_gap_max, tx, ty, radial, tangential):
     log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
     wrapped = _wrap(beta)
     scale = (1.0 - eps * eps) ** 2.5
-    return (
-        bicubic(tx, ty, radial, log_gap, wrapped) / scale,
-        bicubic(tx, ty, tangential, log_gap, wrapped) / scale,
-    )
+    g_r, g_t = bicubic_pair(tx, ty, radial, tangential, log_gap, wrapped)
+    return g_r / scale, g_t / scale
 
 
 @njit(cache=True)

@@ -92,12 +92,19 @@ ASPERITY_NODES = 401
 #: tolerances of the integration over a cycle (eccentricity ratio)
 INTEGRATION_RTOL = 1e-7
 INTEGRATION_ATOL = 1e-10
+#: the relative tolerance of the cycles that find the orbit; the cycle that proves it
+#: periodic is integrated to ``INTEGRATION_RTOL``
+SEARCH_RTOL = 1e-5
 #: cycles repeated while each shrinks the mismatch at least this much
 PLAIN_CYCLES = 8
 FAST_CONTRACTION = 0.2
 #: cycle integrations allowed to the root finder per round, and its rounds
 ROOT_EVALUATIONS = 40
 ROOT_ROUNDS = 3
+#: the root finder's forward differences step ``sqrt(JACOBIAN_STEP)`` times the state
+#: (MINPACK's ``epsfcn``): well above the integration's error, so that the cycle
+#: map's Jacobian is not round-off of the tolerance ``INTEGRATION_RTOL``
+JACOBIAN_STEP = 1e-6
 #: a mismatch of the film force's direction this small is a root [rad]
 ROUND_OFF = 1e-12
 #: the periodicity tolerance scales with the smallest gap, but not below this many
@@ -568,6 +575,9 @@ class CycleMap:
         self.integrations = 0
         self.start = np.zeros(2)
         self.path = np.zeros((2, self.ends.size))
+        #: the relative tolerance of the integration, and that of the last cycle
+        self.rtol = INTEGRATION_RTOL
+        self.path_rtol = math.nan
 
     def right_hand_side(self, t: float, stretched_state: FloatArray) -> FloatArray:
         """``dq/dt = v / (1 - eps) + eps (e_r . v) e_r / (1 - eps)^2`` [1/s]."""
@@ -579,9 +589,10 @@ class CycleMap:
         return velocity / gap + radial * state
 
     def __call__(self, initial: FloatArray) -> FloatArray:
-        if self.integrations and np.array_equal(initial, self.start):
+        if self.path_rtol == self.rtol and np.array_equal(initial, self.start):
             return self.path
         self.integrations += 1
+        self.path_rtol = self.rtol
         if self.kernel is not None:
             return self.compiled_cycle(initial)
         solution = solve_ivp(
@@ -589,7 +600,7 @@ class CycleMap:
             (self.ends[0], self.ends[-1]),
             initial,
             method="LSODA",
-            rtol=INTEGRATION_RTOL,
+            rtol=self.rtol,
             atol=INTEGRATION_ATOL,
             t_eval=self.ends,
         )
@@ -604,7 +615,7 @@ class CycleMap:
         path = np.empty((2, self.ends.size))
         start = np.array(initial, float)
         status, self.evaluations = kernel.cycle(
-            start, self.ends, INTEGRATION_RTOL, INTEGRATION_ATOL, self.inputs, *self.arguments, path
+            start, self.ends, self.rtol, INTEGRATION_ATOL, self.inputs, *self.arguments, path
         )
         if status != kernel.DONE or not np.all(np.isfinite(path)):
             raise ConvergenceError(
@@ -612,6 +623,54 @@ class CycleMap:
             )
         self.start, self.path = start, path
         return path
+
+
+def fixed_point(
+    cycle: CycleMap,
+    path: FloatArray,
+    mismatch: Callable[[FloatArray], tuple[float, float]],
+    tolerance: float,
+) -> FloatArray:
+    """The path of a cycle that ends where it starts, from the cycle ``path`` [-].
+
+    Plain repetition while it contracts fast (a stiff film forgets its start
+    quickly), then :func:`scipy.optimize.root` on the cycle map; the path of the last
+    cycle integrated, periodic or not (the caller checks ``mismatch``).
+
+    Parameters
+    ----------
+    cycle : CycleMap
+        The cycle map.
+    path : ndarray, shape (2, M + 1)
+        A cycle's path in the stretched coordinate [-].
+    mismatch : callable
+        ``path -> (|e(T) - e(0)| / c, allowed)`` [-].
+    tolerance : float
+        The orbit's tolerance (:func:`periodic_orbit`) [-].
+    """
+    cycles, previous = 1, math.inf
+    while cycles < PLAIN_CYCLES:
+        error, allowed = mismatch(path)
+        if error <= allowed or error > FAST_CONTRACTION * previous:
+            break
+        previous = error
+        path = cycle(path[:, -1])
+        cycles += 1
+    for _ in range(ROOT_ROUNDS):
+        error, allowed = mismatch(path)
+        if error <= allowed:
+            break
+        # the cycle map's fixed point; the orbit can creep towards the wall over many
+        # cycles (a squeeze film thins slowly), which plain repetition follows slowly
+        found = root(
+            lambda initial: cycle(initial)[:, -1] - initial,
+            path[:, -1],
+            method="hybr",
+            options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS, "eps": JACOBIAN_STEP},
+        )
+        # (the cycle map integrates a start it integrated last only once)
+        path = cycle(found.x)
+    return path
 
 
 def periodic_orbit(
@@ -672,30 +731,14 @@ def periodic_orbit(
         gap = max(1.0 - np.hypot(*state).max(), floor)
         return float(np.hypot(*(state[:, -1] - state[:, 0]))), tolerance * gap
 
+    # found with cycles of a coarser tolerance, proved (or else found again) with
+    # cycles of the full one: the fixed points of the two maps differ by their
+    # integration errors, well inside the tolerance
+    cycle.rtol = SEARCH_RTOL
     path = cycle(stretched(np.asarray(start, float)))
-    cycles, previous = 1, math.inf
-    # plain repetition while it contracts fast (a stiff film forgets its start quickly)
-    while cycles < PLAIN_CYCLES:
-        error, allowed = mismatch(path)
-        if error <= allowed or error > FAST_CONTRACTION * previous:
-            break
-        previous = error
-        path = cycle(path[:, -1])
-        cycles += 1
-    for _ in range(ROOT_ROUNDS):
-        error, allowed = mismatch(path)
-        if error <= allowed:
-            break
-        # the cycle map's fixed point; the orbit can creep towards the wall over many
-        # cycles (a squeeze film thins slowly), which plain repetition follows slowly
-        found = root(
-            lambda initial: cycle(initial)[:, -1] - initial,
-            path[:, -1],
-            method="hybr",
-            options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS},
-        )
-        # (the cycle map integrates a start it integrated last only once)
-        path = cycle(found.x)
+    path = fixed_point(cycle, path, mismatch, tolerance)
+    cycle.rtol = INTEGRATION_RTOL
+    path = fixed_point(cycle, cycle(path[:, 0]), mismatch, tolerance)
     cycles = cycle.integrations
     error, allowed = mismatch(path)
     if error > allowed:
