@@ -10,12 +10,13 @@ import jointwear as jw
 from jointwear.cli import main
 from jointwear.config import MECHANISM_TYPES
 from jointwear.errors import ConfigError, DataError
+from jointwear.results.summary import WALL_CLOCK_KEYS
 
 FAST = {"contact.nodes": 120, "simulation.steps_per_revolution": 90}
 
 
 def without_runtime(summary: dict) -> dict:
-    return {key: value for key, value in summary.items() if key != "runtime_s"}
+    return {key: value for key, value in summary.items() if key not in WALL_CLOCK_KEYS}
 
 
 def test_run_is_the_simulation_of_the_config_with_its_overrides(paper_config_path):

@@ -37,6 +37,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "UPDATE_COLUMNS",
+    "WALL_CLOCK_KEYS",
     "ContactSnapshot",
     "MetricsRow",
     "ProfileSchedule",
@@ -44,6 +45,13 @@ __all__ = [
     "UpdateRecorder",
     "read_only_depth",
 ]
+
+#: the summary's wall-clock times [s]: ``runtime_s`` (the run), ``compile_time_s`` (of the
+#: run's work, numba compiling kernels: its load cycle's dynamics and its loop; 0 when every
+#: kernel came from numba's cache or ``jointwear warm-up`` compiled them) and
+#: ``runtime_without_compile_s`` (``runtime_s`` less the compiling inside it). They differ
+#: from run to run: the only keys two runs of one config do not share.
+WALL_CLOCK_KEYS = ("runtime_s", "compile_time_s", "runtime_without_compile_s")
 
 FloatArray = NDArray[np.float64]
 
@@ -267,6 +275,11 @@ class RunRecord:
         sweep case needs only the wear).
     runtime : float
         Wall-clock time of the run [s].
+    compile_time : float
+        Of this run's work (its load cycle's dynamics and its loop), the seconds numba
+        spent compiling kernels [s] (0: none compiled, e.g. loaded from numba's cache).
+    compile_in_runtime : float
+        Of ``compile_time``, the part inside ``runtime`` [s].
     warnings : tuple of str
         The warnings the run gave about its models' range and the wear's feedback.
     film : FilmRecord or None
@@ -282,5 +295,7 @@ class RunRecord:
     initial: ContactSnapshot | None = None
     final: ContactSnapshot | None = None
     runtime: float = math.nan
+    compile_time: float = 0.0
+    compile_in_runtime: float = 0.0
     warnings: tuple[str, ...] = ()
     film: FilmRecord | None = None

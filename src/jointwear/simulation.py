@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear import coupling
+from jointwear.compile_time import compile_seconds
 from jointwear.config import Config
 from jointwear.contact import ContactSolution
 from jointwear.contact.solver import ContactSolver, WarmStart
@@ -75,6 +76,7 @@ class Simulation:
         joint: str | None = None,
         wear_law: str | WearLaw | None = None,
     ) -> None:
+        compiled_before = compile_seconds()
         self.config = config
         self.wear_law = wear_law_of(config.wear, config.wearing_bushing, wear_law)
         self.contact_model = config.contact.model if contact_model is None else contact_model
@@ -98,6 +100,8 @@ class Simulation:
         self.life = coupling.LifeLimits.from_config(config)
         self.recorder = UpdateRecorder(config, self.life.joint)
         self.feedback = coupling.FeedbackWarnings(config.joint.clearance)
+        #: numba's compile seconds while setting up (the load cycle's dynamics) [s]
+        self.setup_compile_time = compile_seconds() - compiled_before
 
     @property
     def load_cycle(self) -> LoadCycle:
@@ -186,12 +190,14 @@ class Simulation:
                 "simulation.checkpoint_every: checkpoints hold one clearance joint; give "
                 "mechanism.clearance_joint a single joint to checkpoint"
             )
-        start = time.perf_counter()
+        start, compiled_before = time.perf_counter(), compile_seconds()
         records = [
             self._joint_run(joint, cycle).record(progress, pressures=pressures)
             for joint, cycle in self.load.cycles.items()
         ]
-        return WearResult.of_joints(self.config, records, time.perf_counter() - start)
+        compiling = compile_seconds() - compiled_before
+        timing = (compiling + self.setup_compile_time, compiling)
+        return WearResult.of_joints(self.config, records, time.perf_counter() - start, timing)
 
     def _joint_run(self, joint: str, cycle: LoadCycle) -> Simulation:
         """One of several joints' runs from its unworn ``cycle`` (coupled: solved again)."""
@@ -212,7 +218,7 @@ class Simulation:
     ) -> RunRecord:
         """The loop over the revolutions of one clearance joint, as a plain record
         (the parameters of :meth:`run`)."""
-        start = time.perf_counter()
+        start, self._compiled_at_start = time.perf_counter(), compile_seconds()
         state = self.initial_state() if state is None else state
         self.config = self.load.resume(state)
         total = self.config.simulation.revolutions
@@ -279,6 +285,7 @@ class Simulation:
             if first is None:
                 final = self.contact(self.solver.contour(state.wear_depth))
                 initial = self.solver.solve(self.initial_contour(), self.load.unworn(state))
+        compiling = compile_seconds() - self._compiled_at_start
         where = f"joint {self.joint!r}: " if len(self.config.joints) > 1 else ""
         said = warn_model_validity(self.config, self.law, state.wear_depth, (initial, final), where)
         return RunRecord(
@@ -290,6 +297,8 @@ class Simulation:
             initial=None if initial is None else ContactSnapshot.of(initial),
             final=None if final is None else ContactSnapshot.of(final),
             runtime=time.perf_counter() - start,
+            compile_time=compiling + self.setup_compile_time,
+            compile_in_runtime=compiling,
             warnings=(*self.feedback.messages, *(where + m for m in said.values())),
             film=self.solver.film_record(self.load_cycle),
         )

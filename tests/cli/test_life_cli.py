@@ -138,3 +138,26 @@ def test_life_stopped_by_its_time_limit_is_finished_by_resume(
     assert {"weibull_shape", "weibull_scale_revolutions", "b50_revolutions"} <= set(data)
     assert (out / "life.json").is_file()
     assert (out / "life.png").is_file()
+
+
+def test_a_study_whose_every_case_failed_prints_its_table(capsys, tmp_path: Path) -> None:
+    """No life reached and no bound: the reliability table says n/a (no internal error)."""
+    duty = tmp_path / "duty.toml"
+    duty.write_text(
+        '[mechanism]\ntype = "duty-cycle"\n'
+        '[[mechanism.modes]]\ntype = "oscillating"\nshare = 0.4\nload = "1 kN"\n'
+        'amplitude = "25 deg"\nfrequency = "1 Hz"\n'
+        '[[mechanism.modes]]\ntype = "oscillating"\nshare = 0.6\nload = "2 kN"\n'
+        'amplitude = "10 deg"\nfrequency = "1 Hz"\n'
+        '[life]\npeak_wear_depth = "20 um"\n',
+        encoding="utf-8",
+    )
+    # (a share drawn alone breaks the shares' sum: every case is invalid)
+    sample = "mechanism.modes.0.share=uniform(low=0.1, high=0.3)"
+    out = tmp_path / "life"
+    args = ["life", str(duty), "--sample", sample, "--cases", "3", "--out", str(out), "-q"]
+    main([*args, "--workers", "1"])
+    printed = capsys.readouterr()
+    assert "internal error" not in printed.err
+    assert "B10" in printed.out
+    assert (out / "life.json").exists()

@@ -44,6 +44,14 @@ OILED_IMPACT = [
     "--set",
     "lubrication.viscosity=0.1 Pa*s",
 ]
+#: a valid duty cycle of two oscillating modes
+DUTY = (
+    '[mechanism]\ntype = "duty-cycle"\n'
+    '[[mechanism.modes]]\ntype = "oscillating"\nshare = 0.4\nload = "1 kN"\n'
+    'amplitude = "25 deg"\nfrequency = "1 Hz"\n'
+    '[[mechanism.modes]]\ntype = "oscillating"\nshare = 0.6\nload = "2 kN"\n'
+    'amplitude = "10 deg"\nfrequency = "1 Hz"\n'
+)
 CASES: list[Bad] = [
     # ------------------------------------------------------------ config files
     Bad(
@@ -417,6 +425,54 @@ CASES: list[Bad] = [
             "nested.toml": '[mechanism]\ntype = "duty-cycle"\n'
             '[[mechanism.modes]]\ntype = "duty-cycle"\nshare = 1.0\n'
         },
+    ),
+    Bad(
+        "duty-cycle-mode-beyond-the-modes",
+        "config",
+        ["run", "{tmp}/duty.toml", "--set", "mechanism.modes.2.share=0.1"],
+        ["mechanism.modes.2.share", "no mode 2", "has 2 modes"],
+        files={"duty.toml": DUTY},
+    ),
+    Bad(
+        "duty-cycle-mode-number-not-a-number",
+        "config",
+        ["run", "{tmp}/duty.toml", "--set", "mechanism.modes.last.share=0.1"],
+        ["mechanism.modes.last.share", "'last' is not a mode's number"],
+        files={"duty.toml": DUTY},
+    ),
+    Bad(
+        "duty-cycle-mode-unknown-key",
+        "config",
+        ["run", "{tmp}/duty.toml", "--set", "mechanism.modes.1.frequncy=2 Hz"],
+        ["mechanism.modes.1.frequncy", "did you mean 'frequency'"],
+        files={"duty.toml": DUTY},
+    ),
+    Bad(
+        "duty-cycle-share-set-off-the-sum",
+        "config",
+        ["run", "{tmp}/duty.toml", "--set", "mechanism.modes.0.share=0.6"],
+        ["mechanism.modes.share", "sum to 1.2, not 1", "0.6 + 0.6"],
+        files={"duty.toml": DUTY},
+    ),
+    Bad(
+        "duty-cycle-mode-of-a-single-mechanism",
+        "config",
+        ["run", "{paper}", "--set", "mechanism.modes.0.share=1"],
+        ["mechanism.modes.0.share", "no [[mechanism.modes]]", "duty-cycle"],
+    ),
+    Bad(
+        "duty-cycle-mode-sampled-beyond-the-modes",
+        "config",
+        [
+            "life",
+            "{tmp}/duty.toml",
+            "--sample",
+            "mechanism.modes.3.frequency=uniform(low=30 rpm, high=90 rpm)",
+            "--out",
+            "{out}",
+        ],
+        ["[sample] mechanism.modes.3.frequency", "no mode 3", "has 2 modes"],
+        files={"duty.toml": DUTY},
     ),
     Bad(
         "running-in-without-its-distance",

@@ -166,3 +166,18 @@ def test_a_run_resumed_from_a_midway_state_ends_where_the_whole_run_does() -> No
     np.testing.assert_array_equal(
         resumed.dataset["pin_wear_depth"].values, whole.dataset["pin_wear_depth"].values
     )
+
+
+def test_setting_one_modes_speed_changes_that_modes_cycle_only() -> None:
+    """``mechanism.modes.1.crank_speed``: the crank's period follows, the swing is kept."""
+    cfg = config(duty())
+    faster = cfg.replace({"mechanism.modes.1.crank_speed": "180 rpm"})
+    before, after = load_cycle(cfg), load_cycle(faster)
+    swing = before.duty.starts[1]
+    assert after.duty.starts == before.duty.starts
+    np.testing.assert_array_equal(after.load[:swing], before.load[:swing])
+    np.testing.assert_array_equal(after.azimuth[:swing], before.azimuth[:swing])
+    swing_period = load_cycle(config(DIGGING)).period  # 2 s; the crank's: 60/90 s, then 1/3 s
+    assert after.period - swing_period == pytest.approx(1 / 3, rel=1e-12)
+    assert before.period - swing_period == pytest.approx(2 / 3, rel=1e-12)
+    assert not np.allclose(after.load[swing:], before.load[swing:])

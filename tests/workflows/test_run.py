@@ -12,6 +12,7 @@ from jointwear.checkpoint import load_checkpoint
 from jointwear.errors import ConfigError, ConvergenceError, TimeLimitError
 from jointwear.interrupts import Interrupted
 from jointwear.results import read_wear_result
+from jointwear.results.summary import WALL_CLOCK_KEYS
 from jointwear.workflows.run import RUN_FILES, run_to_folder
 
 SMALL = {
@@ -26,7 +27,7 @@ SETS = [f"{key}={value}" for key, value in SMALL.items()]
 
 
 def without_runtime(summary: dict) -> dict:
-    return {key: value for key, value in summary.items() if key != "runtime_s"}
+    return {key: value for key, value in summary.items() if key not in WALL_CLOCK_KEYS}
 
 
 def stop_at(revolution: int, error: BaseException):

@@ -63,7 +63,7 @@ def _rows(summary: dict[str, Any]) -> list[tuple[str, str]]:
     if summary["dynamics_model"] == "massless-link":
         rows.append(("fixed-point iterations", str(summary["iterations"])))
     rows.append(("contact lost", "yes" if summary["contact_lost"] else "no"))
-    if "impacts" in summary:
+    if "force_law" in summary:  # contact-impact dynamics (a duty cycle's mean impacts: not)
         rows += [
             (
                 "force law / c_e / mu",

@@ -162,7 +162,7 @@ def print_reliability(reliability: dict) -> None:
         table.add_column(column, justify="right")
 
     def bounds(entry: dict | None) -> str:
-        if entry is None:
+        if entry is None or entry.get("lower") is None:  # (no life reached: no bound)
             return "n/a"
         upper = "open" if entry.get("upper") is None else f"{entry['upper']:.4g}"
         return f"{entry['lower']:.4g} to {upper}"

@@ -326,7 +326,9 @@ class DutyCycleConfig(Section):
         if abs(total - 1.0) > DUTY_SHARE_TOLERANCE:
             raise ValueError(
                 f"mechanism.modes.share: the shares of the modes sum to {total:.12g}, not 1 "
-                f"(within {DUTY_SHARE_TOLERANCE:g}); each is the fraction of cycles in that mode"
+                f"(within {DUTY_SHARE_TOLERANCE:g}): "
+                f"{' + '.join(f'{mode.share:.12g}' for mode in self.modes)}; "
+                "each is the fraction of cycles in that mode"
             )
         counts = {len(mode.joints) for mode in self.modes}
         if len(counts) > 1:

@@ -13,6 +13,7 @@ import tomllib
 from collections.abc import Iterable, Mapping
 from typing import Any
 
+from jointwear.config.lookup import mode_index
 from jointwear.errors import ConfigError
 from jointwear.materials import merge_material
 from jointwear.units import shown
@@ -132,13 +133,47 @@ def apply_overrides(
         parts = dotted.split(".")
         if _material_override(data, parts, value):
             continue
-        node = data
-        for part in parts[:-1]:
-            child = node.setdefault(part, {})
+        node: Any = data
+        for i, part in enumerate(parts[:-1]):
+            child = _entry(node, parts[: i + 1], dotted)
+            if child is None:
+                child = node.setdefault(part, {})
+            if isinstance(child, list) and parts[: i + 1] == ["mechanism", "modes"]:
+                node = child
+                continue
             if not isinstance(child, dict):
                 raise ConfigError(f"{dotted}: {part!r} is a value, not a section")
             node = child
-        node[parts[-1]] = value
+        if isinstance(node, list):
+            node[_index(node, parts[-1], dotted)] = value
+        else:
+            _entry(node, parts, dotted)  # refuses a mode's number where there are no modes
+            node[parts[-1]] = value
+
+
+def _entry(node: Any, parts: list[str], dotted: str) -> Any:
+    """The entry ``parts[-1]`` of ``node``: a duty cycle's mode by its index in the list
+    of modes, else the key of a table (``None`` if the table lacks it)."""
+    if isinstance(node, list):
+        return node[_index(node, parts[-1], dotted)]
+    if parts[-1].isdigit() and parts[:-1] == ["mechanism", "modes"]:
+        raise ConfigError(
+            f"{dotted}: the config has no [[mechanism.modes]] to number (only a "
+            'mechanism of type = "duty-cycle" has modes)'
+        )
+    return node.get(parts[-1])
+
+
+def _index(modes: list[Any], part: str, dotted: str) -> int:
+    """The index ``part`` of a duty cycle's mode, checked against the modes there are."""
+    index = mode_index(part, dotted)
+    if index >= len(modes):
+        raise ConfigError(
+            f"{dotted}: no mode {index}; the duty cycle has {len(modes)} "
+            f"mode{'s' if len(modes) != 1 else ''} (mechanism.modes.0 to "
+            f"mechanism.modes.{len(modes) - 1})"
+        )
+    return index
 
 
 def _material_override(data: dict[str, Any], parts: list[str], value: Any) -> bool:

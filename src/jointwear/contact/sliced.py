@@ -293,6 +293,9 @@ class SlicedSolver:
     ) -> SlicedSolution:
         """The compiled balance of every step from ``guess`` (``(delta_0, gamma)`` per step
         [m, rad]; ``None``: a cold start); the loads it leaves go to :func:`solve_axial`."""
+        from jointwear.compile_time import watch_compiles
+
+        watch_compiles()  # (before the kernel compiles: its time is counted)
         from jointwear.contact import _sliced_kernel as kernel  # (numba: loaded when used)
 
         load, azimuth = (np.ascontiguousarray(a, dtype=float) for a in (cycle.load, cycle.azimuth))

@@ -125,6 +125,9 @@ def compiled_kernel() -> Any:
         return None
     if _KERNEL is None:
         try:
+            from jointwear.compile_time import watch_compiles
+
+            watch_compiles()  # (before the kernel compiles: its time is counted)
             from jointwear.lubrication import _orbit_kernel as module
         except ImportError:
             module = False

@@ -321,6 +321,8 @@ def _attributes(record: RunRecord) -> dict[str, Any]:
         "stopped_by": record.state.stopped_by or "",
         "dynamics_update": str(config.simulation.dynamics_update),
         "runtime_s": record.runtime,
+        "compile_time_s": record.compile_time,
+        "runtime_without_compile_s": record.runtime - record.compile_in_runtime,
         "jointwear_version": package_version(),
         "created": _dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),
         "config": config.to_toml(),

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from jointwear.errors import DataError
+from jointwear.record import WALL_CLOCK_KEYS
 
 if TYPE_CHECKING:
     import xarray as xr
@@ -48,7 +50,8 @@ def combine_joints(datasets: list[xr.Dataset]) -> xr.Dataset:
         combine_attrs="drop_conflicts",
     )
     combined.attrs["joint"] = ", ".join(names)
-    combined.attrs["runtime_s"] = float(sum(ds.attrs["runtime_s"] for ds in datasets))
+    for key in WALL_CLOCK_KEYS:  # (each joint's run, one after the other)
+        combined.attrs[key] = float(sum(ds.attrs.get(key, math.nan) for ds in datasets))
     return combined
 
 

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from jointwear.record import WALL_CLOCK_KEYS
 from jointwear.results.axial import axial_summary
 from jointwear.state import revolution_number
 from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS, engineering_checks
@@ -22,7 +23,7 @@ if TYPE_CHECKING:
 
     from jointwear.results.wear_result import WearResult
 
-__all__ = ["film_summary", "run_summary", "summarize"]
+__all__ = ["WALL_CLOCK_KEYS", "film_summary", "run_summary", "summarize"]
 
 
 def summarize(dataset: xr.Dataset) -> dict[str, Any]:
@@ -59,6 +60,8 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
             "life_hours": revolutions * period / 3600.0 if stopped_by else None,
             "dynamics_updates": max(int(updates) - 1, 0),
             "runtime_s": float(dataset.attrs.get("runtime_s", math.nan)),
+            # (a file written before compile times were recorded has none)
+            **{k: float(dataset.attrs[k]) for k in WALL_CLOCK_KEYS[1:] if k in dataset.attrs},
         }
     )
     if "z" in dataset["wear_depth"].dims:  # along the pin (a planar run has no z)

@@ -26,7 +26,15 @@ from jointwear.config import (
 from jointwear.errors import ConfigError
 from jointwear.units import DIMENSIONS, to_si
 
-__all__ = ["SweptKey", "check_bare", "check_value", "swept_key", "value_list", "without_none"]
+__all__ = [
+    "SweptKey",
+    "check_address",
+    "check_bare",
+    "check_value",
+    "swept_key",
+    "value_list",
+    "without_none",
+]
 
 
 def _field(dotted: str, where: str) -> Any:
@@ -229,7 +237,10 @@ def check_value(base: Config, dotted: str, value: Any, where: str) -> None:
 
     check_bare(base, dotted, value, where)
     data = without_none(base.model_dump(mode="json"))
-    apply_overrides(data, {dotted: value})
+    try:
+        apply_overrides(data, {dotted: value})
+    except ConfigError as exc:  # e.g. a duty cycle's mode the base does not have
+        raise ConfigError(f"{where}: {str(exc).removeprefix(f'{dotted}: ')}") from None
     try:
         Config.model_validate(data)
     except ValidationError as exc:
@@ -242,6 +253,27 @@ def check_value(base: Config, dotted: str, value: Any, where: str) -> None:
         except ConfigError as error:
             message = str(error).removeprefix(f"{dotted}: ")
             raise ConfigError(f"{where} = {value!r}: {message}") from None
+
+
+def check_address(base: Config, dotted: str, where: str) -> None:
+    """A key must name a place of the base configuration: ``mechanism.modes.N.*`` a mode
+    it has (``N`` below its number of modes).
+
+    Parameters
+    ----------
+    base : Config
+        The sweep's base configuration.
+    dotted : str
+        Dotted config key.
+    where : str
+        Start of error messages (the sweep file and table).
+    """
+    if not dotted.startswith("mechanism.modes."):
+        return  # (the other keys are the schema's, checked by swept_key)
+    try:
+        apply_overrides(without_none(base.model_dump(mode="json")), {dotted: 0})
+    except ConfigError as exc:
+        raise ConfigError(f"{where} {exc}") from None
 
 
 def without_none(data: Mapping[str, Any]) -> dict[str, Any]:

@@ -19,6 +19,7 @@ from jointwear.registry import suggest
 from jointwear.resources import check_case_count
 from jointwear.workflows.sweep.keys import (
     SweptKey,
+    check_address,
     check_value,
     swept_key,
     value_list,
@@ -231,6 +232,9 @@ def expand_sweep(spec: Mapping[str, Any], base: Config, source: str = "sweep") -
     tables, samples, seed = _tables(spec, source)
     if tables["set"]:
         base = _with_set(base, tables["set"], source)
+    for name in ("grid", "zip", "sample"):
+        for dotted in tables[name]:
+            check_address(base, dotted, f"{source}: [{name}]")
     grid_points = _grid_points(base, tables["grid"], source)
     zip_rows = _zip_rows(base, tables["zip"], source)
     sample_rows: list[dict[str, Any]] = [{}]
