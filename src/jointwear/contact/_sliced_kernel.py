@@ -241,29 +241,54 @@ def _slice_moved(row, first, step, c, area, width, law, kept, depth, rate, bend)
 
 
 def scratch(count: int, nodes: int) -> tuple[np.ndarray, ...]:
-    """The window scratch of :func:`revolution` for ``count`` slices of ``nodes`` nodes:
-    ``cos`` and ``sin`` of the window's angles from the load (``nodes``), and each slice's
-    pressure, depth and its two derivatives (``count * nodes``, slice ``i`` from ``i *
-    nodes``): one flat array each, as a loop over a row of a 2-D array is not
-    vectorised."""
-    return (np.empty(nodes), np.empty(nodes), *(np.empty(count * nodes) for _ in range(4)))
+    """The scratch of :func:`revolution` for ``count`` slices of ``nodes`` nodes: ``cos``
+    and ``sin`` of the window's angles from the load (``nodes``), each slice's pressure,
+    depth and its two derivatives in the window (``count * nodes``, slice ``i`` from ``i
+    * nodes``), every slice's gaps (``count * 3 nodes``) and each node's smallest
+    (``3 nodes``), :func:`_gaps`: one flat array each, as a loop over a row of a 2-D
+    array is not vectorised."""
+    windows = (np.empty(count * nodes) for _ in range(4))
+    return (np.empty(nodes), np.empty(nodes), *windows, np.empty(3 * count * nodes),
+            np.empty(3 * nodes))  # fmt: skip
+
+
+@njit(inline="always", **_FLAGS)
+def _gaps(radius, rp, gap, gap_min):
+    """Every slice's gaps ``r - R_p`` [m] of its radii ``radius`` (N, nodes) [m] into
+    ``gap``, three turns a slice (slice ``i`` from ``3 i nodes``), and each node's smallest
+    over the slices into ``gap_min``, three turns."""
+    count, nodes = radius.shape
+    for j in range(nodes):
+        gap_min[j] = math.inf
+    for i in range(count):
+        row = i * 3 * nodes
+        for j in range(nodes):
+            g = radius[i, j] - rp
+            gap[row + j] = g
+            gap[row + nodes + j] = g
+            gap[row + 2 * nodes + j] = g
+            gap_min[j] = min(gap_min[j], g)
+    for j in range(nodes):
+        gap_min[nodes + j] = gap_min[j]
+        gap_min[2 * nodes + j] = gap_min[j]
 
 
 @njit(_nrt=False, pipeline_class=Unaliased, **_FLAGS)
-def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap, area,
-               gap_min, cos_e, sin_e, law, tolerance, max_iterations, state, status,
+def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, radius, area,
+               cos_e, sin_e, law, tolerance, max_iterations, state, status,
                evaluations, sliding, wear_coefficient, wear, pressure, cold, work):  # fmt: skip
     """Balance every load of a revolution and settle it.
 
     ``state[k] = (delta_0, gamma)`` holds the warm start on entry and the balance on
-    return [m, rad]; ``gap``, ``area`` [m, m^2] are flat, slice ``i``'s three turns of
-    nodes from ``3 i nodes``, and ``gap_min``, ``cos_e``, ``sin_e`` (3 nodes,) three turns
-    likewise. Where ``wear_coefficient > 0`` Archard's ``K_d p ds`` of every balanced load
-    is added to ``wear`` (N, nodes), else its pressure is written to ``pressure`` (N, M,
-    nodes). ``cold``: no warm start; each load starts from the last one's approach (the
-    first from a touch), doubled until the slices carry the load, then Newton's method
-    from that side (the resultant grows and is convex in the offset). ``work``: the
-    scratch (:func:`scratch`).
+    return [m, rad]; ``radius`` [m] holds the slices' radii (N, nodes), ``area`` [m^2]
+    their spring areas flat, slice ``i``'s three turns of nodes from ``3 i nodes``, and
+    ``cos_e``, ``sin_e`` (3 nodes,) three turns likewise. Where ``wear_coefficient > 0``
+    Archard's ``K_d p ds`` of every balanced load is added to ``wear`` (N, nodes), else
+    its pressure is written to ``pressure`` (N, M, nodes). ``cold``: no warm start; each
+    load starts from the last one's approach (the first from a touch), doubled until the
+    slices carry the load, then Newton's method from that side (the resultant grows and
+    is convex in the offset). ``work``: the scratch (:func:`scratch`), the gaps written
+    into it first (:func:`_gaps`).
 
     Compiled without reference counting and with its arrays declared ``noalias``
     (:class:`jointwear.contact._compiled.Unaliased`): every array passed is a buffer of
@@ -276,10 +301,11 @@ def revolution(load, azimuth, tilt_along, tilt_across, free, load_offset, z, gap
     extent = 0.0
     for i in range(count):
         extent = max(extent, abs(z[i]))
+    c, sn, kept, depth, rate, bend, gap, gap_min = work
+    _gaps(radius, rp, gap, gap_min)
     smallest = math.inf
     for j in range(nodes):
         smallest = min(smallest, gap_min[j])
-    c, sn, kept, depth, rate, bend = work
     scale, rise = law[1], law[1] * law[2]  # (the laws' factors common to every node)
     for i in range(count):
         for j in range(nodes):

@@ -139,9 +139,9 @@ class SlicedSolver:
         self.slices = slices
         self.misalignment, self.misalignment_plane = misalignment, misalignment_plane
         self.load_offset, self.matrix, self.play = load_offset, matrix, play
-        # what the compiled balance reads, kept between solves (_steps, _padded, _angles)
+        # what the compiled balance reads, kept between solves (_steps, _areas, _angles)
         self._cycle: _Steps | None = None
-        self._buffers: tuple[FloatArray, FloatArray] | None = None
+        self._area: FloatArray | None = None
         self._angles_of: tuple[FloatArray, FloatArray] | None = None
         self._work: tuple[FloatArray, ...] | None = None
 
@@ -278,33 +278,29 @@ class SlicedSolver:
             load, azimuth = (np.array(a, dtype=float) for a in (cycle.load, cycle.azimuth))
             along, across = self._tilts(azimuth)
             distance = np.zeros(load.size) if sliding is None else np.array(sliding, dtype=float)
-            steps = _Steps(cycle, sliding, load, azimuth, along, across, distance)
+            direction = np.column_stack([np.cos(azimuth), np.sin(azimuth)])
+            steps = _Steps(cycle, sliding, load, azimuth, along, across, distance, direction)
             self._cycle = steps
         return steps
 
-    def _padded(self, contour: SlicedContour) -> tuple[FloatArray, FloatArray, FloatArray]:
-        """The compiled balance's view of ``contour``: every slice's gaps ``r - R_p`` [m]
-        and spring areas [m^2] (:class:`SliceContact`'s), each row three turns long and
-        the rows one flat array, and the smallest gap of each node over the slices, three
-        turns [m]. Written into two buffers kept between solves (the balance reads them
-        during its call only); a spring area of the law's own is written once."""
+    def _areas(self, contour: SlicedContour) -> FloatArray:
+        """Every node's spring area [m^2] (:class:`SliceContact`'s) of every slice of
+        ``contour``, shape ``(N, 3 nodes)``: each row three turns long (the compiled
+        balance's windows never wrap). Written into a buffer kept between solves (the
+        balance reads it during its call only); a spring area of the law's own is written
+        once."""
         count, nodes = contour.radius.shape
-        if self._buffers is None or self._buffers[0].shape != (count, 3 * nodes):
-            gap, area = np.empty((count, 3 * nodes)), np.empty((count, 3 * nodes))
+        area = self._area
+        if area is None or area.shape != (count, 3 * nodes):
+            area = self._area = np.empty((count, 3 * nodes))
             if self.slice_law.force_area is not None:  # (the same at every node and solve)
                 area[:] = self.slice_law.force_area * self.slices.width / self.slices.length
-            self._buffers = gap, area
-        gap, area = self._buffers
-        np.subtract(contour.radius, self.pin.radius, out=gap[:, :nodes])
-        turns = [gap]
         if self.slice_law.force_area is None:
             np.multiply(contour.radius, contour.dtheta, out=area[:, :nodes])
             area[:, :nodes] *= self.slices.width
-            turns.append(area)
-        for padded in turns:
-            padded[:, nodes : 2 * nodes] = padded[:, :nodes]
-            padded[:, 2 * nodes :] = padded[:, :nodes]
-        return gap.reshape(-1), area.reshape(-1), gap.min(axis=0)
+            area[:, nodes : 2 * nodes] = area[:, :nodes]
+            area[:, 2 * nodes :] = area[:, :nodes]
+        return area
 
     def _angles(self, theta: FloatArray) -> tuple[FloatArray, FloatArray]:
         """``cos`` and ``sin`` of the node angles ``theta`` [rad], each three times (the
@@ -329,7 +325,7 @@ class SlicedSolver:
         steps = self._steps(cycle, sliding)
         law = np.array([self.pin.radius, self.slice_law.coefficient, self.slice_law.exponent])
         count, nodes = contour.radius.shape
-        gap, area, gap_min = self._padded(contour)
+        area = self._areas(contour)
         cos_e, sin_e = self._angles(contour.theta)
         size = steps.load.size
         state = np.zeros((size, 2)) if guess is None else np.array(guess, dtype=float)
@@ -337,11 +333,12 @@ class SlicedSolver:
         fused = sliding is not None and self.planar.wear_coefficient is not None
         wear = np.empty((count, nodes))
         pressure = np.zeros((0, 0, 0)) if fused else np.zeros((count, size, nodes))
-        if self._work is None or self._work[2].size != count * nodes:
+        if self._work is None or self._work[-2].size != 3 * count * nodes:
             self._work = kernel.scratch(count, nodes)
         kernel.revolution(
             steps.load, steps.azimuth, steps.along, steps.across, self.misalignment == 0,
-            self.load_offset, self.slices.centres, gap, area, gap_min, cos_e, sin_e,
+            self.load_offset, self.slices.centres, np.ascontiguousarray(contour.radius),
+            area.reshape(-1), cos_e, sin_e,
             law, self.planar.tolerance, self.planar.max_iterations, state, status, evaluations,
             steps.sliding_distance, self.planar.wear_coefficient if fused else 0.0, wear,
             pressure, guess is None, self._work,
@@ -355,8 +352,10 @@ class SlicedSolver:
             else:
                 pressure[:, k] = balanced.pressure
         if fused:
-            return self._solution(contour, cycle, state, iterations=evaluations, wear=wear)
-        area = area.reshape(count, 3 * nodes)[:, :nodes]
+            return self._solution(
+                contour, cycle, state, iterations=evaluations, wear=wear, direction=steps.direction
+            )
+        area = area[:, :nodes]
         cosine = np.cos(contour.theta[None, :] - steps.azimuth[:, None])
         force = np.einsum("ikj,ij,kj->ki", pressure, area, cosine)
         return self._solution(contour, cycle, state, pressure=pressure, force=force,
@@ -373,10 +372,14 @@ class SlicedSolver:
         penetration: FloatArray | None = None,
         iterations: FloatArray,
         wear: FloatArray | None = None,
+        direction: FloatArray | None = None,
     ) -> SlicedSolution:
         """The :class:`SlicedSolution` of a revolution's balances (module notes); a fused
-        revolution (``wear`` given) has no pressure."""
+        revolution (``wear`` given) has no pressure. ``direction``: ``(cos, sin)`` of
+        the loads' azimuth, shape (M, 2) [-], where known."""
         azimuth = np.asarray(cycle.azimuth, dtype=float)
+        if direction is None:
+            direction = np.column_stack([np.cos(azimuth), np.sin(azimuth)])
         centre = state[:, 0]
         steps = azimuth.size
         if pressure is None:
@@ -391,7 +394,7 @@ class SlicedSolver:
             penetration = np.full(steps, np.nan)
         return SlicedSolution(
             pressure=mean,
-            eccentricity=np.column_stack([centre * np.cos(azimuth), centre * np.sin(azimuth)]),
+            eccentricity=centre[:, None] * direction,
             penetration=penetration,
             normal_force=np.full(steps, np.nan) if force is None else force.sum(axis=1),
             tangential_force=np.zeros(steps),
@@ -468,7 +471,8 @@ def _half_angles(
 class _Steps(NamedTuple):
     """A load cycle's steps as the compiled balance reads them (:meth:`SlicedSolver._steps`):
     the cycle and sliding distance they were read from, the load [N], its azimuth [rad],
-    the imposed tilt along and across it [rad] and the sliding distance [m]."""
+    the imposed tilt along and across it [rad], the sliding distance [m] and the load's
+    direction ``(cos, sin)`` of its azimuth [-], shape (M, 2)."""
 
     cycle: LoadCycle
     sliding: FloatArray | None
@@ -477,6 +481,7 @@ class _Steps(NamedTuple):
     along: FloatArray
     across: FloatArray
     sliding_distance: FloatArray
+    direction: FloatArray
 
 
 def _loads(cycle: LoadCycle):
