@@ -43,7 +43,7 @@ passes arrays costs reference counting of each, which made a revolution twice as
 and :func:`revolution` itself is compiled without reference counting (``_nrt=False``),
 whose atomic operations on the arrays passed between the inlined helpers still took a
 fifth of a revolution, and with its array arguments declared ``noalias`` to LLVM
-(:class:`_Unaliased`), whose run-time overlap checks before each vectorised loop took a
+(:class:`Unaliased`), whose run-time overlap checks before each vectorised loop took a
 tenth.
 """
 
@@ -79,7 +79,7 @@ _LINEAR, _HERTZIAN, _CURVED = 1, 2, 3
 _DEPTH, _ALONG, _CURVE, _WEIGHT, _SIDE, _PRESS = range(6)
 
 
-class _Unaliased(CompilerBase):
+class Unaliased(CompilerBase):
     """numba's pipeline, with every array argument declared ``noalias`` to LLVM.
 
     Without it each vectorised loop first compares the address ranges of every array it
@@ -445,7 +445,7 @@ def _balance(load, s, lower, upper, gap_min, nodes, grid, line, solver, work, hi
     return s, total, slope, right, left, reach, max_iterations, False
 
 
-@njit(_nrt=False, pipeline_class=_Unaliased, **_FLAGS)
+@njit(_nrt=False, pipeline_class=Unaliased, **_FLAGS)
 def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, solver,
                floats, counts, wear_ext, scale, wear, work):  # fmt: skip
     """Balance every load of a revolution and add its wear ``p ds / k`` per node.
@@ -467,7 +467,7 @@ def revolution(load, sliding, guess, have_guess, conformal, nodes, grid, lines, 
     inlined helpers cost two atomic operations, a fifth of a revolution): the scratch
     ``work`` (:func:`scratch`) comes from the caller. Every array written here must be a
     buffer of its own, distinct from every other argument (``noalias``,
-    :class:`_Unaliased`).
+    :class:`Unaliased`).
 
     Returns the number of loads not balanced and the widest window [nodes] either side
     of a load's centre node (it holds every node in contact).

@@ -19,7 +19,7 @@ applies the run's wear law slice by slice: a wear map of shape ``(N, nodes)``.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -139,7 +139,11 @@ class SlicedSolver:
         self.slices = slices
         self.misalignment, self.misalignment_plane = misalignment, misalignment_plane
         self.load_offset, self.matrix, self.play = load_offset, matrix, play
-        self._padded: tuple[FloatArray, FloatArray] | None = None
+        # what the compiled balance reads, kept between solves (_steps, _areas, _angles)
+        self._cycle: _Steps | None = None
+        self._area: FloatArray | None = None
+        self._angles_of: tuple[FloatArray, FloatArray] | None = None
+        self._work: tuple[FloatArray, ...] | None = None
 
     @classmethod
     def from_config(cls, config: Config, planar: ContactSolver) -> SlicedSolver:
@@ -266,23 +270,46 @@ class SlicedSolver:
         relative = self.misalignment_plane - azimuth
         return self.misalignment * np.cos(relative), self.misalignment * np.sin(relative)
 
-    def _areas(self, contour: SlicedContour, radius: FloatArray) -> FloatArray:
-        """Every node's spring area [m^2], shape (N, nodes) (:class:`SliceContact`'s), of
-        the slices' radius ``radius`` [m]."""
-        width = self.slices.width
-        if self.slice_law.force_area is None:
-            return radius * contour.dtheta * width
-        share = self.slice_law.force_area * width / self.slices.length
-        return np.full(radius.shape, share)
+    def _steps(self, cycle: LoadCycle, sliding: FloatArray | None) -> _Steps:
+        """What the compiled balance reads of ``cycle``'s steps and the ``sliding``
+        distance [m] (``None``: zeros), kept while the loop solves the same cycle."""
+        steps = self._cycle
+        if steps is None or steps.cycle is not cycle or steps.sliding is not sliding:
+            load, azimuth = (np.array(a, dtype=float) for a in (cycle.load, cycle.azimuth))
+            along, across = self._tilts(azimuth)
+            distance = np.zeros(load.size) if sliding is None else np.array(sliding, dtype=float)
+            direction = np.column_stack([np.cos(azimuth), np.sin(azimuth)])
+            steps = _Steps(cycle, sliding, load, azimuth, along, across, distance, direction)
+            self._cycle = steps
+        return steps
 
-    def _padded_angles(self, theta: FloatArray) -> tuple[FloatArray, FloatArray]:
+    def _areas(self, contour: SlicedContour) -> FloatArray:
+        """Every node's spring area [m^2] (:class:`SliceContact`'s) of every slice of
+        ``contour``, shape ``(N, 3 nodes)``: each row three turns long (the compiled
+        balance's windows never wrap). Written into a buffer kept between solves (the
+        balance reads it during its call only); a spring area of the law's own is written
+        once."""
+        count, nodes = contour.radius.shape
+        area = self._area
+        if area is None or area.shape != (count, 3 * nodes):
+            area = self._area = np.empty((count, 3 * nodes))
+            if self.slice_law.force_area is not None:  # (the same at every node and solve)
+                area[:] = self.slice_law.force_area * self.slices.width / self.slices.length
+        if self.slice_law.force_area is None:
+            np.multiply(contour.radius, contour.dtheta, out=area[:, :nodes])
+            area[:, :nodes] *= self.slices.width
+            area[:, nodes : 2 * nodes] = area[:, :nodes]
+            area[:, 2 * nodes :] = area[:, :nodes]
+        return area
+
+    def _angles(self, theta: FloatArray) -> tuple[FloatArray, FloatArray]:
         """``cos`` and ``sin`` of the node angles ``theta`` [rad], each three times (the
         compiled balance's windows never wrap); the same for every revolution."""
-        padded = self._padded
-        if padded is None or padded[0].size != 3 * theta.size:
-            padded = (np.tile(np.cos(theta), 3), np.tile(np.sin(theta), 3))
-            self._padded = padded
-        return padded
+        angles = self._angles_of
+        if angles is None or angles[0].size != 3 * theta.size:
+            angles = (np.tile(np.cos(theta), 3), np.tile(np.sin(theta), 3))
+            self._angles_of = angles
+        return angles
 
     def _compiled(
         self,
@@ -298,30 +325,29 @@ class SlicedSolver:
         watch_compiles()  # (before the kernel compiles: its time is counted)
         from jointwear.contact import _sliced_kernel as kernel  # (numba: loaded when used)
 
-        load, azimuth = (np.ascontiguousarray(a, dtype=float) for a in (cycle.load, cycle.azimuth))
-        along, across = self._tilts(azimuth)
+        steps = self._steps(cycle, sliding)
         law = np.array([self.pin.radius, self.slice_law.coefficient, self.slice_law.exponent])
-        radius = contour.radius
-        gap, area = radius - self.pin.radius, self._areas(contour, radius)
-        theta, z = contour.theta, self.slices.centres
-        count, nodes = gap.shape
-        cos_e, sin_e = self._padded_angles(theta)
-        state = np.zeros((load.size, 2)) if guess is None else np.array(guess, dtype=float)
-        status = np.zeros(load.size, dtype=np.int64)
-        evaluations = np.zeros(load.size, dtype=np.int64)
+        count, nodes = contour.radius.shape
+        area = self._areas(contour)
+        cos_e, sin_e = self._angles(contour.theta)
+        size = steps.load.size
+        state = np.zeros((size, 2)) if guess is None else np.array(guess, dtype=float)
+        status, evaluations = np.zeros(size, dtype=np.int64), np.zeros(size, dtype=np.int64)
         fused = sliding is not None and self.planar.wear_coefficient is not None
-        wear = np.zeros((count, 3 * nodes))
-        pressure = np.zeros((0, 0, 0)) if fused else np.zeros((count, load.size, nodes))
+        wear = np.empty((count, nodes))
+        pressure = np.zeros((0, 0, 0)) if fused else np.zeros((count, size, nodes))
+        if self._work is None or self._work[-2].size != 3 * count * nodes:
+            self._work = kernel.scratch(count, nodes)
         kernel.revolution(
-            load, azimuth, along, across, self.misalignment == 0, self.load_offset, z,
-            np.tile(gap, 3), np.tile(area, 3), np.tile(gap.min(axis=0), 3), cos_e, sin_e, law,
-            self.planar.tolerance, self.planar.max_iterations, state, status, evaluations,
-            np.zeros(load.size) if sliding is None else np.asarray(sliding, dtype=float),
-            self.planar.wear_coefficient if fused else 0.0, wear, pressure, guess is None,
+            steps.load, steps.azimuth, steps.along, steps.across, self.misalignment == 0,
+            self.load_offset, self.slices.centres, np.ascontiguousarray(contour.radius),
+            area.reshape(-1), cos_e, sin_e,
+            law, self.planar.tolerance, self.planar.max_iterations, state, status, evaluations,
+            steps.sliding_distance, self.planar.wear_coefficient if fused else 0.0, wear,
+            pressure, guess is None, self._work,
         )  # fmt: skip
-        wear = wear[:, :nodes] + wear[:, nodes : 2 * nodes] + wear[:, 2 * nodes :]
         for k in np.flatnonzero(status != kernel.CONVERGED):
-            balanced = self._balance(contour, float(load[k]), float(azimuth[k]))
+            balanced = self._balance(contour, float(steps.load[k]), float(steps.azimuth[k]))
             state[k] = balanced.centre_offset, balanced.tilt
             evaluations[k] += balanced.evaluations
             if fused:
@@ -329,8 +355,11 @@ class SlicedSolver:
             else:
                 pressure[:, k] = balanced.pressure
         if fused:
-            return self._solution(contour, cycle, state, iterations=evaluations, wear=wear)
-        cosine = np.cos(theta[None, :] - azimuth[:, None])
+            return self._solution(
+                contour, cycle, state, iterations=evaluations, wear=wear, direction=steps.direction
+            )
+        area = area[:, :nodes]
+        cosine = np.cos(contour.theta[None, :] - steps.azimuth[:, None])
         force = np.einsum("ikj,ij,kj->ki", pressure, area, cosine)
         return self._solution(contour, cycle, state, pressure=pressure, force=force,
                               iterations=evaluations)  # fmt: skip
@@ -346,10 +375,14 @@ class SlicedSolver:
         penetration: FloatArray | None = None,
         iterations: FloatArray,
         wear: FloatArray | None = None,
+        direction: FloatArray | None = None,
     ) -> SlicedSolution:
         """The :class:`SlicedSolution` of a revolution's balances (module notes); a fused
-        revolution (``wear`` given) has no pressure."""
+        revolution (``wear`` given) has no pressure. ``direction``: ``(cos, sin)`` of
+        the loads' azimuth, shape (M, 2) [-], where known."""
         azimuth = np.asarray(cycle.azimuth, dtype=float)
+        if direction is None:
+            direction = np.column_stack([np.cos(azimuth), np.sin(azimuth)])
         centre = state[:, 0]
         steps = azimuth.size
         if pressure is None:
@@ -364,7 +397,7 @@ class SlicedSolver:
             penetration = np.full(steps, np.nan)
         return SlicedSolution(
             pressure=mean,
-            eccentricity=np.column_stack([centre * np.cos(azimuth), centre * np.sin(azimuth)]),
+            eccentricity=centre[:, None] * direction,
             penetration=penetration,
             normal_force=np.full(steps, np.nan) if force is None else force.sum(axis=1),
             tangential_force=np.zeros(steps),
@@ -436,6 +469,22 @@ def _half_angles(
     left = np.where(loaded, relative, 0.0).max(axis=1, initial=0.0)
     right = -np.where(loaded, relative, 0.0).min(axis=1, initial=0.0)
     return left, right
+
+
+class _Steps(NamedTuple):
+    """A load cycle's steps as the compiled balance reads them (:meth:`SlicedSolver._steps`):
+    the cycle and sliding distance they were read from, the load [N], its azimuth [rad],
+    the imposed tilt along and across it [rad], the sliding distance [m] and the load's
+    direction ``(cos, sin)`` of its azimuth [-], shape (M, 2)."""
+
+    cycle: LoadCycle
+    sliding: FloatArray | None
+    load: FloatArray
+    azimuth: FloatArray
+    along: FloatArray
+    across: FloatArray
+    sliding_distance: FloatArray
+    direction: FloatArray
 
 
 def _loads(cycle: LoadCycle):

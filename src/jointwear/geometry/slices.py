@@ -11,13 +11,15 @@ of a contour) and hands each slice's :class:`~jointwear.geometry.contour.Bushing
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import GeometryError
-from jointwear.geometry.contour import BushingContour
+from jointwear.geometry.contour import BushingContour, node_angles
 
 __all__ = ["SlicedContour"]
 
@@ -28,13 +30,28 @@ FloatArray = NDArray[np.float64]
 class SlicedContour:
     """The bushing's slices, each a contour worn by its row of the wear map.
 
+    The map and the radii are kept whole, as two read-only ``(N, nodes)`` arrays: the
+    loop builds a sliced contour every contour update and its contact solve reads the
+    radii of all slices at once; each slice's
+    :class:`~jointwear.geometry.contour.BushingContour` (:attr:`contours`) is built
+    only when asked for, from rows of the two arrays (no copy).
+
     Parameters
     ----------
-    contours : tuple of BushingContour
-        One contour per slice, equal node counts, the slice width as axial length [m].
+    radius : ndarray, shape (N, nodes)
+        Inner radius of every slice at every node [m], read-only.
+    wear_depth : ndarray, shape (N, nodes)
+        The wear map that made ``radius`` from ``original_radius`` [m], read-only.
+    width : float
+        Width of a slice, the axial length of its contour [m].
+    original_radius : float
+        Radius of the unworn bushing [m].
     """
 
-    contours: tuple[BushingContour, ...]
+    radius: FloatArray = field(repr=False)
+    wear_depth: FloatArray = field(repr=False)
+    width: float
+    original_radius: float
 
     @classmethod
     def of_depth(cls, radius: float, wear_depth: ArrayLike, axial_length: float) -> SlicedContour:
@@ -54,52 +71,55 @@ class SlicedContour:
             and radii.min() > 0.0
             and radii.max() < np.inf
         ):  # (the checks of every row at once; a map they refuse goes through each row's)
-            return cls(tuple(BushingContour._of_depth(radius, row, width) for row in wear))
-        wear = wear.copy()
-        wear.setflags(write=False)
+            return cls.of_contours([BushingContour._of_depth(radius, row, width) for row in wear])
+        if wear.flags.writeable:
+            wear = wear.copy()
+            wear.setflags(write=False)
         radii.setflags(write=False)
-        rows = zip(radii, wear, strict=True)
-        return cls(tuple(BushingContour._of_valid(r, width, float(radius), w) for r, w in rows))
+        return cls(radii, wear, width, float(radius))
+
+    @classmethod
+    def of_contours(cls, contours: Sequence[BushingContour]) -> SlicedContour:
+        """The slices of ``contours`` (equal node counts, the slice width as each one's
+        axial length, one unworn radius)."""
+        radius = np.stack([c.radius for c in contours])
+        wear = np.stack([c.wear_depth for c in contours])
+        radius.setflags(write=False)
+        wear.setflags(write=False)
+        first = contours[0]
+        return cls(radius, wear, first.axial_length, first.original_radius)
+
+    @cached_property
+    def contours(self) -> tuple[BushingContour, ...]:
+        """One contour per slice, the slice width as its axial length."""
+        rows = zip(self.radius, self.wear_depth, strict=True)
+        build = BushingContour._of_valid
+        return tuple(build(r, self.width, self.original_radius, w) for r, w in rows)
 
     @property
     def count(self) -> int:
         """Number of slices ``N``."""
-        return len(self.contours)
+        return self.radius.shape[0]
 
     @property
     def nodes(self) -> int:
         """Nodes of each slice's contour."""
-        return self.contours[0].nodes
+        return self.radius.shape[1]
 
     @property
     def theta(self) -> FloatArray:
         """Node angles [rad]."""
-        return self.contours[0].theta
+        return node_angles(self.nodes)
 
     @property
     def dtheta(self) -> float:
         """Node spacing [rad]."""
-        return self.contours[0].dtheta
+        return 2.0 * np.pi / self.nodes
 
     @property
     def axial_length(self) -> float:
         """Length of the whole bushing [m]."""
-        return self.contours[0].axial_length * self.count
-
-    @property
-    def original_radius(self) -> float:
-        """Radius of the unworn bushing [m]."""
-        return self.contours[0].original_radius
-
-    @property
-    def radius(self) -> FloatArray:
-        """Inner radius of every slice at every node [m], shape ``(N, nodes)``."""
-        return np.stack([c.radius for c in self.contours])
-
-    @property
-    def wear_depth(self) -> FloatArray:
-        """The wear map [m], shape ``(N, nodes)``."""
-        return np.stack([c.wear_depth for c in self.contours])
+        return self.width * self.count
 
     def worn(self, wear_depth: ArrayLike) -> SlicedContour:
         """The slices grown radially by the map ``wear_depth`` [m], shape ``(N, nodes)``."""
@@ -109,5 +129,11 @@ class SlicedContour:
                 f"axial slices: a wear increment of shape {increment.shape} for "
                 f"{self.count} slices of {self.nodes} nodes"
             )
-        rows = zip(self.contours, increment, strict=True)
-        return SlicedContour(tuple(contour.worn(row) for contour, row in rows))
+        radii = self.radius + increment
+        if not (radii.min() > 0.0 and radii.max() < np.inf):  # (each row's checks raise)
+            rows = zip(self.contours, increment, strict=True)
+            return SlicedContour.of_contours([contour.worn(row) for contour, row in rows])
+        wear = self.wear_depth + increment
+        radii.setflags(write=False)
+        wear.setflags(write=False)
+        return SlicedContour(radii, wear, self.width, self.original_radius)
