@@ -233,6 +233,8 @@ class DynamicsConfig(Section):
     integrator: Literal["LSODA", "Radau", "BDF", "RK45", "DOP853", "RK45-compiled"] = "LSODA"
     rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
     atol: Annotated[float, Field(gt=0)] = 1e-10
+    # a flying, impacting pin is tolerance-sensitive: rtol 1e-8 is off by percents there
+    separation_rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-10
     revolutions_settle: Annotated[int, Field(ge=0, le=10_000)] = 2
     max_step: Annotated[Annotated[float, Field(gt=0)] | None, si("time")] = None
 

@@ -5,8 +5,9 @@ function; LSODA (the default) stays the reference. Both integrate the same equat
 to the same tolerances, so their load cycles agree to those tolerances where the
 motion is not sensitive to them (the paper's joint: persistent contact). The
 separation-prone joint on a worn contour is sensitive: at rtol = 1e-8 the time of a
-late impact moves by milliseconds between any two integrators, so there the two are
-compared at rtol = 1e-10, where both have converged.
+late impact moves by milliseconds between any two integrators. A solve in which the pin
+leaves the wall is therefore integrated again at ``dynamics.separation_rtol`` (1e-10),
+where both have converged (``tests/mechanism/impact/test_separation_tolerance.py``).
 """
 
 from __future__ import annotations

@@ -132,24 +132,17 @@ def integrate_revolution(
     phi = 2.0 * np.pi * np.arange(steps) / steps
     times = record_start + np.append(phi, 2.0 * np.pi) / omega
     started = time.perf_counter()
-    if settings.integrator == COMPILED_INTEGRATOR and getattr(system, "compiled", False):
-        # the whole integration in one compiled function (the slider-crank's)
-        history, states, index = system.integrate_compiled(
-            (0.0, record_start + period), y0, in_contact, settings, max_step, times
-        )
-    else:
-        history = integrate_contacts(
-            system,
-            (0.0, record_start + period),
-            y0,
-            in_contact=in_contact,
-            method=settings.integrator,
-            rtol=settings.rtol,
-            atol=settings.atol,
-            max_step=max_step,
-            keep=None if dense else times,
-        )
-        states, index = history.state(times)
+    span = (0.0, record_start + period)
+    tolerances, separated = (settings.rtol, settings.atol), settings.separated_tolerances
+    solved = None
+    if separated != tolerances and in_contact:
+        # until the pin leaves the wall the run's tolerances; where it does, all again
+        solved = _integrate(system, span, y0, in_contact, settings, max_step, times, dense,
+                            tolerances, stop_on_separation=True)  # fmt: skip
+    if solved is None:
+        solved = _integrate(system, span, y0, in_contact, settings, max_step, times, dense,
+                            separated, stop_on_separation=False)  # fmt: skip
+    history, states, index = solved
     runtime = time.perf_counter() - started
     records = [
         system.evaluate(float(t), y, history.segments[k].impact_velocity)
@@ -179,6 +172,43 @@ def integrate_revolution(
         peak_joint_force=peaks[2],
         max_offset=peaks[3],
     )
+
+
+def _integrate(
+    system: Any,
+    span: tuple[float, float],
+    y0: ArrayLike,
+    in_contact: bool,
+    settings: ContactImpactSettings,
+    max_step: float,
+    times: FloatArray,
+    dense: bool,
+    tolerances: tuple[float, float],
+    stop_on_separation: bool,
+) -> tuple[ContactHistory, FloatArray, NDArray[np.int64]] | None:
+    """The integration at ``tolerances``: history, states at ``times`` and their segments
+    (``None``: the pin left the wall and ``stop_on_separation`` was asked)."""
+    if settings.integrator == COMPILED_INTEGRATOR and getattr(system, "compiled", False):
+        # the whole integration in one compiled function (the slider-crank's)
+        return system.integrate_compiled(
+            span, y0, in_contact, settings, max_step, times, tolerances, stop_on_separation
+        )
+    history = integrate_contacts(
+        system,
+        span,
+        y0,
+        in_contact=in_contact,
+        method=settings.integrator,
+        rtol=tolerances[0],
+        atol=tolerances[1],
+        max_step=max_step,
+        keep=None if dense else times,
+        stop_after_separations=1 if stop_on_separation else None,
+    )
+    if stop_on_separation and history.separation_times:
+        return None
+    states, index = history.state(times)
+    return history, states, index
 
 
 def _free_flight_steps(

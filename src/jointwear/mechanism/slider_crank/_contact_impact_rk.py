@@ -42,7 +42,7 @@ from jointwear.mechanism.slider_crank._contact_impact_kernel import gap, gap_and
 _DIGEST = hashlib.sha1(Path(kernel.__file__).read_bytes()).hexdigest()[:12] + SOURCE_DIGEST
 
 #: status codes of :func:`integrate_revolution_rk`
-OK, STEP_TOO_SMALL, TOO_MANY_EVENTS, CHATTER = 0, 1, 2, 3
+OK, STEP_TOO_SMALL, TOO_MANY_EVENTS, CHATTER, SEPARATED = 0, 1, 2, 3, 4
 
 # Dormand-Prince 5(4): scipy's own RK45 tables, so that the loop takes scipy's steps
 _C, _A, _B, _E, _P = RK45.C, RK45.A, RK45.B, RK45.E, RK45.P
@@ -147,10 +147,13 @@ def _take_samples(samples, next_sample, upto, closed, t_old, h, y_old, q, out, s
 @njit(cache=True)
 @_named
 def integrate_revolution_rk(
-    t0, t_end, y0, in_contact, v_imp, floor, p, wear, rtol, atol, max_step, samples, capacity
-):
+    t0, t_end, y0, in_contact, v_imp, floor, p, wear, rtol, atol, max_step, samples, capacity,
+    stop_on_separation,
+):  # fmt: skip
     """Integrate through the contact events; states at ``samples``.
 
+    With ``stop_on_separation`` the integration ends at the first contact end, status
+    :data:`SEPARATED` (the caller integrates again at tighter tolerances).
     Returns ``(status, nfev, sample_states, sample_segment, seg_start, seg_end,
     seg_contact, seg_velocity, seg_event_rate, n_segments, peak_t, peak_y, peak_segment,
     n_peaks)``; a segment's event rate is the gap rate at its end event (``nan`` at
@@ -266,6 +269,9 @@ def integrate_revolution_rk(
         seg_end[n_seg] = t
         n_seg += 1
         if not event:
+            break
+        if in_contact and stop_on_separation:
+            status = SEPARATED
             break
         stalled = stalled + 1 if t - seg_start[n_seg - 1] <= 1e-14 * max(1.0, abs(t)) else 0
         if stalled > 100:

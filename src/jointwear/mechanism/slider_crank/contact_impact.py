@@ -289,7 +289,9 @@ class SliderCrankContactSystem(ContactSystemBase):
         settings: ContactImpactSettings,
         max_step: float,
         samples: FloatArray,
-    ) -> tuple[ContactHistory, FloatArray, NDArray[np.int64]]:
+        tolerances: tuple[float, float] | None = None,
+        stop_on_separation: bool = False,
+    ) -> tuple[ContactHistory, FloatArray, NDArray[np.int64]] | None:
         """Integrate through the contact events in one compiled function (``RK45-compiled``).
 
         Parameters
@@ -306,6 +308,10 @@ class SliderCrankContactSystem(ContactSystemBase):
             Largest step [s].
         samples : ndarray, shape (M,)
             Sorted times of the states wanted, inside ``t_span`` [s].
+        tolerances : tuple of float, optional
+            ``(rtol, atol)`` instead of the settings' [-].
+        stop_on_separation : bool
+            Give up at the first contact end (and return ``None``).
 
         Returns
         -------
@@ -327,15 +333,18 @@ class SliderCrankContactSystem(ContactSystemBase):
 
         floor = self.contact.impact_velocity_floor
         capacity = 4096
+        rtol, atol = (settings.rtol, settings.atol) if tolerances is None else tolerances
         while True:
             run = rk.integrate_revolution_rk(
                 float(t_span[0]), float(t_span[1]), np.asarray(y0, dtype=float), in_contact,
-                floor, floor, self._parameters, self._wear, settings.rtol, settings.atol,
-                float(max_step), np.asarray(samples, dtype=float), capacity,
+                floor, floor, self._parameters, self._wear, rtol, atol, float(max_step),
+                np.asarray(samples, dtype=float), capacity, stop_on_separation,
             )  # fmt: skip
             if run[0] != rk.TOO_MANY_EVENTS or capacity > 1_000_000:
                 break
             capacity *= 8
+        if run[0] == rk.SEPARATED:
+            return None
         if run[0] != rk.OK:
             reason = {
                 rk.STEP_TOO_SMALL: "the step fell below the resolution of the time",

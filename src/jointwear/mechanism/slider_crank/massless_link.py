@@ -14,10 +14,11 @@ iterated to a fixed point (:func:`solve_massless_link`). The paper's ``gamma``
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from dataclasses import replace
-from typing import Literal, NamedTuple
+from typing import Any, Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -131,7 +132,38 @@ def solve_massless_link(
     noise. If ``omega_n`` itself falls inside that band, the clearance mode is
     excited, the continuous-contact model breaks down and the iteration
     diverges (``ConvergenceError``).
+
+    The solutions of the last few argument sets are kept (their arrays read-only): a
+    coupled contact-impact run asks for the same one at every solve of the worn joint
+    (its initial state and the comparison with the massless-link load).
     """
+    return _kept_solution(
+        mechanism, float(crank_speed), float(clearance), int(steps), float(tolerance),
+        int(max_iterations), scheme,
+    )  # fmt: skip
+
+
+@functools.lru_cache(maxsize=16)
+def _kept_solution(*arguments: Any) -> MasslessLinkSolution:
+    """:func:`_fixed_point` of ``arguments``, its arrays made read-only to be shared."""
+    solution = _fixed_point(*arguments)
+    for part in (solution.motion, solution.reaction):
+        for value in part:
+            if isinstance(value, np.ndarray):
+                value.flags.writeable = False
+    return solution
+
+
+def _fixed_point(
+    mechanism: SliderCrank,
+    crank_speed: float,
+    clearance: float,
+    steps: int,
+    tolerance: float,
+    max_iterations: int,
+    scheme: str,
+) -> MasslessLinkSolution:
+    """The fixed point of :func:`solve_massless_link` (its arguments)."""
     if clearance < 0.0:
         raise MechanismError(f"joint.clearance: must be >= 0, got {clearance:g} m")
     phi = crank_angle_grid(steps)
