@@ -79,3 +79,17 @@ def test_an_unknown_lubricant_is_refused_with_the_closest_name():
         ConfigError, match=r"lubricant: unknown lubricant 'iso-vg-64'; did you mean 'iso-vg-68'\?"
     ):
         dynamic_viscosity("iso-vg-64", 313.15)
+
+
+@pytest.mark.parametrize("written", ["ISO VG 100", "iso vg 100", "ISO_VG_100", " iso-vg-100 "])
+def test_a_grade_written_as_on_the_can_is_the_library_entry(written):
+    assert get_lubricant(written) is get_lubricant("iso-vg-100")
+
+
+def test_a_config_keeps_the_library_name_of_a_grade_written_with_spaces():
+    from jointwear.config.sections import LubricationConfig
+
+    section = LubricationConfig(model="short-bearing", lubricant="ISO VG 100")
+    assert section.lubricant == "iso-vg-100"
+    with pytest.raises(ValueError, match=r"unknown lubricant 'ISO VG 99'; did you mean 'iso-vg-"):
+        LubricationConfig(model="short-bearing", lubricant="ISO VG 99")

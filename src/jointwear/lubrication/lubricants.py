@@ -158,7 +158,8 @@ def get_lubricant(name: str | Lubricant, key: str = "lubricant") -> Lubricant:
     Parameters
     ----------
     name : str or Lubricant
-        Library name, e.g. ``"iso-vg-68"`` (a :class:`Lubricant` passes through).
+        Library name, e.g. ``"iso-vg-68"``; case, spaces and underscores do not matter
+        (``"ISO VG 68"``). A :class:`Lubricant` passes through.
     key : str
         Config key named in the error message.
 
@@ -170,9 +171,11 @@ def get_lubricant(name: str | Lubricant, key: str = "lubricant") -> Lubricant:
     if isinstance(name, Lubricant):
         return name
     lubricants = library()
-    if not isinstance(name, str) or name not in lubricants:
-        raise ConfigError(f"{key}: unknown lubricant {name!r}{suggest(str(name), lubricants)}")
-    return lubricants[name]
+    # a grade as it is printed on the can ("ISO VG 68") names the library's "iso-vg-68"
+    canonical = "-".join(name.lower().replace("_", " ").split()) if isinstance(name, str) else None
+    if canonical not in lubricants:
+        raise ConfigError(f"{key}: unknown lubricant {name!r}{suggest(canonical or str(name), lubricants)}")
+    return lubricants[canonical]
 
 
 def walther_constants(lubricant: Lubricant) -> tuple[float, float]:
