@@ -152,3 +152,17 @@ def test_the_orbit_does_not_depend_on_where_it_starts():
     gap = 1 - one.eccentricity_ratio.max()
     np.testing.assert_allclose(one.eccentricity_x, other.eccentricity_x, atol=1e-2 * gap)
     np.testing.assert_allclose(one.eccentricity_y, other.eccentricity_y, atol=1e-2 * gap)
+
+
+def test_an_orbit_that_does_not_repeat_says_when_the_pin_sinks_below_its_film():
+    from types import SimpleNamespace
+
+    from jointwear.lubrication.orbit import creeping_pin
+
+    joint = SimpleNamespace(clearance=50e-6, roughness=0.4e-6)
+    angle = np.linspace(0.0, 2.0 * np.pi, 9)
+    # least gap 0.1 um = 0.25 roughness: the film alone holds the pin
+    sinking = (1.0 - 0.1e-6 / 50e-6) * np.vstack([np.cos(angle), np.sin(angle)])
+    assert "least film parameter of 0.25" in creeping_pin(joint, sinking)
+    # least gap 1 um = 2.5 roughness: a non-repeating orbit there is not this
+    assert creeping_pin(joint, 0.98 * np.vstack([np.cos(angle), np.sin(angle)])) == ""

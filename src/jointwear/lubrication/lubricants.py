@@ -174,7 +174,9 @@ def get_lubricant(name: str | Lubricant, key: str = "lubricant") -> Lubricant:
     # a grade as it is printed on the can ("ISO VG 68") names the library's "iso-vg-68"
     canonical = "-".join(name.lower().replace("_", " ").split()) if isinstance(name, str) else None
     if canonical not in lubricants:
-        raise ConfigError(f"{key}: unknown lubricant {name!r}{suggest(canonical or str(name), lubricants)}")
+        raise ConfigError(
+            f"{key}: unknown lubricant {name!r}{suggest(canonical or str(name), lubricants)}"
+        )
     return lubricants[canonical]
 
 

@@ -676,6 +676,35 @@ def fixed_point(
     return path
 
 
+#: least film parameter below which the film alone must hold the pin off its asperities
+CREEPING_FILM_PARAMETER = 0.5
+
+
+def creeping_pin(solver: OrbitSolver, path: FloatArray) -> str:
+    """What an orbit that does not repeat says about the joint, for its error message.
+
+    A pin whose least film parameter stays low keeps sinking a little every cycle: the
+    squeeze film thins slowly and the asperities carry too little to stop it, so there
+    is no orbit within the cycles allowed and the film model is out of its range.
+
+    Parameters
+    ----------
+    solver : OrbitSolver
+        The joint, its film and its asperities.
+    path : ndarray, shape (2, M + 1)
+        The last cycle's ``e / c`` [-].
+    """
+    gap = solver.clearance * (1.0 - float(np.hypot(*path).max()))
+    parameter = gap / solver.roughness
+    if parameter >= CREEPING_FILM_PARAMETER:
+        return ""
+    return (
+        f"; the pin keeps sinking towards the wall at a least film parameter of "
+        f"{parameter:.2g}: the film alone holds this load and the model is out of its range "
+        f"there (a smoother finish, a more viscous oil or model = 'dry' are within it)"
+    )
+
+
 def periodic_orbit(
     solver: OrbitSolver,
     time: ArrayLike,
@@ -747,6 +776,7 @@ def periodic_orbit(
     if error > allowed:
         raise ConvergenceError(
             f"orbit: not periodic after {cycles} cycles (|e(T) - e(0)| / c = {error:.3g})"
+            + creeping_pin(solver, unstretched(path))
         )
     path = unstretched(path)
     eps = np.hypot(path[0, :-1], path[1, :-1])
