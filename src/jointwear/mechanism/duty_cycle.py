@@ -107,6 +107,8 @@ def _extras(cycles: list[LoadCycle], shares: list[float], names: list[str], duty
     extras["peak_load_n"] = max(peaks)
     for key in ("impacts", "free_flight_fraction"):
         extras[key] = sum(s * c.extras.get(key, 0) for c, s in zip(cycles, shares, strict=True))
+    if "integrator" in cycles[0].extras:  # the contact-impact integrator, one per mechanism
+        extras["integrator"] = cycles[0].extras["integrator"]
     if all("film_model" in c.extras for c in cycles):  # an oil film in every mode's dynamics
         extras["film_model"] = cycles[0].extras["film_model"]
         extras["max_eccentricity_ratio"] = max(c.extras["max_eccentricity_ratio"] for c in cycles)

@@ -318,6 +318,8 @@ def _attributes(record: RunRecord) -> dict[str, Any]:
         # a duty cycle's modes one after the other last period_s; a cycle, on average, this
         **({"mean_cycle_duration_s": cycle.duty.mean_period} if cycle.duty else {}),
         **_film_model(record),
+        # the contact-impact integrator that ran (``dynamics.integrator = "auto"`` resolved)
+        **({"integrator": str(cycle.extras["integrator"])} if "integrator" in cycle.extras else {}),
         "stopped_by": record.state.stopped_by or "",
         "dynamics_update": str(config.simulation.dynamics_update),
         "runtime_s": record.runtime,

@@ -59,6 +59,12 @@ def summarize(dataset: xr.Dataset) -> dict[str, Any]:
             "life_revolutions": revolutions if stopped_by else None,
             "life_hours": revolutions * period / 3600.0 if stopped_by else None,
             "dynamics_updates": max(int(updates) - 1, 0),
+            # the contact-impact dynamics' integrator that ran (absent for other models)
+            **(
+                {"integrator": str(dataset.attrs["integrator"])}
+                if "integrator" in dataset.attrs
+                else {}
+            ),
             "runtime_s": float(dataset.attrs.get("runtime_s", math.nan)),
             # (a file written before compile times were recorded has none)
             **{k: float(dataset.attrs[k]) for k in WALL_CLOCK_KEYS[1:] if k in dataset.attrs},

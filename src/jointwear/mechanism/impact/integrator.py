@@ -35,7 +35,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from jointwear.errors import ConfigError, ConvergenceError
-from jointwear.mechanism.impact.settings import INTEGRATORS
+from jointwear.mechanism.impact.settings import AUTO_INTEGRATOR, FALLBACK_INTEGRATOR, INTEGRATORS
 
 if TYPE_CHECKING:
     from scipy.integrate import OdeSolution
@@ -502,6 +502,8 @@ def integrate_contacts(
     """
     if method not in INTEGRATORS:
         raise ConfigError(f"dynamics.integrator: {method!r} is not one of {INTEGRATORS}")
+    if method == AUTO_INTEGRATOR:  # no compiled integration on this path
+        method = FALLBACK_INTEGRATOR
     floor = system.contact.impact_velocity_floor
     t, t_end = float(t_span[0]), float(t_span[1])
     y = np.asarray(y0, dtype=float).copy()

@@ -188,7 +188,8 @@ def _integrate(
 ) -> tuple[ContactHistory, FloatArray, NDArray[np.int64]] | None:
     """The integration at ``tolerances``: history, states at ``times`` and their segments
     (``None``: the pin left the wall and ``stop_on_separation`` was asked)."""
-    if settings.integrator == COMPILED_INTEGRATOR and getattr(system, "compiled", False):
+    method = settings.integrator_for(system)
+    if method == COMPILED_INTEGRATOR and getattr(system, "compiled", False):
         # the whole integration in one compiled function (the slider-crank's)
         return system.integrate_compiled(
             span, y0, in_contact, settings, max_step, times, tolerances, stop_on_separation
@@ -198,7 +199,7 @@ def _integrate(
         span,
         y0,
         in_contact=in_contact,
-        method=settings.integrator,
+        method=method,
         rtol=tolerances[0],
         atol=tolerances[1],
         max_step=max_step,
@@ -353,7 +354,7 @@ class ContactImpactSolution:
             "force_law": self.settings.force_law,
             "restitution": self.settings.restitution,
             "friction_coefficient": self.settings.friction_coefficient,
-            "integrator": self.settings.integrator,
+            "integrator": self.settings.integrator_for(self.system),
             "impacts": int(self.impacts),
             "free_flight_fraction": float(self.free_flight_fraction),
             "max_penetration_m": float(self.max_penetration),

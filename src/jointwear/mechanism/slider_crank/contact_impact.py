@@ -87,7 +87,11 @@ from jointwear.mechanism.impact.revolution import (
     integrate_revolution,
     sampled_solution,
 )
-from jointwear.mechanism.impact.settings import COMPILED_INTEGRATOR, ContactImpactSettings
+from jointwear.mechanism.impact.settings import (
+    AUTO_INTEGRATOR,
+    COMPILED_INTEGRATOR,
+    ContactImpactSettings,
+)
 from jointwear.mechanism.inputs import MechanismInputs
 from jointwear.mechanism.slider_crank.dynamics import SliderCrank, inverse_dynamics
 from jointwear.mechanism.slider_crank.joint_load import slider_crank_cycle
@@ -621,10 +625,10 @@ def solve_contact_impact(
     contact = slider_crank_contact(inputs, settings, contour)
     choice = inputs.compiled if compiled is None else (None if compiled else False)
     if compiled is None and (
-        contact.film is not None or settings.integrator == COMPILED_INTEGRATOR
+        contact.film is not None or settings.integrator in (COMPILED_INTEGRATOR, AUTO_INTEGRATOR)
     ):
         # the film's force in Python costs far more than loading the compiled kernel; the
-        # compiled integrator asks for it
+        # compiled integrator (and ``auto``, which picks it where it runs) asks for it
         choice = None
     rod = inputs.mechanism.bushing_body == "rod"
     system = SliderCrankContactSystem(mechanism, omega, contact, choice, rod_bushing=rod)
