@@ -218,7 +218,7 @@ class Simulation:
     ) -> RunRecord:
         """The loop over the revolutions of one clearance joint, as a plain record
         (the parameters of :meth:`run`)."""
-        start, self._compiled_at_start = time.perf_counter(), compile_seconds()
+        start = (time.perf_counter(), compile_seconds())
         state = self.initial_state() if state is None else state
         self.config = self.load.resume(state)
         total = self.config.simulation.revolutions
@@ -275,17 +275,22 @@ class Simulation:
         return state, solved.solution
 
     def _finish(
-        self, state: SimulationState, first: ContactSolution | None, pressures: bool, start: float
+        self,
+        state: SimulationState,
+        first: ContactSolution | None,
+        pressures: bool,
+        start: tuple[float, float],
     ) -> RunRecord:
         """The record of the run: the contact on the unworn and the final contour (unless
-        ``pressures`` is false), said to stay in the model's range."""
+        ``pressures`` is false), said to stay in the model's range; ``start`` is the loop's
+        wall clock and compile seconds when it began [s]."""
         initial = final = None
         if pressures:
             initial = final = first
             if first is None:
                 final = self.contact(self.solver.contour(state.wear_depth))
                 initial = self.solver.solve(self.initial_contour(), self.load.unworn(state))
-        compiling = compile_seconds() - self._compiled_at_start
+        compiling = compile_seconds() - start[1]
         where = f"joint {self.joint!r}: " if len(self.config.joints) > 1 else ""
         said = warn_model_validity(self.config, self.law, state.wear_depth, (initial, final), where)
         return RunRecord(
@@ -296,7 +301,7 @@ class Simulation:
             contact_model=self.law.name if final is None else final.model,
             initial=None if initial is None else ContactSnapshot.of(initial),
             final=None if final is None else ContactSnapshot.of(final),
-            runtime=time.perf_counter() - start,
+            runtime=time.perf_counter() - start[0],
             compile_time=compiling + self.setup_compile_time,
             compile_in_runtime=compiling,
             warnings=(*self.feedback.messages, *(where + m for m in said.values())),
