@@ -330,7 +330,8 @@ def test_sigkill_then_resume_gives_the_uninterrupted_numbers(tmp_path, capsys):
 
 
 @pytest.mark.parametrize(
-    ("update_every", "pin_wear"), [(1, None), ("adaptive", None), (1, 1e-13), (3, 1e-13)]
+    ("update_every", "pin_wear"),
+    [(1, None), ("adaptive", None), (1, 1e-13), (3, 1e-13), ("adaptive", 1e-13)],
 )
 def test_a_run_along_the_pin_resumes_bitwise(tmp_path, update_every, pin_wear):
     # the wear map (slices, nodes), its saved maps and rates through a checkpoint; a
@@ -360,4 +361,3 @@ def test_a_run_along_the_pin_resumes_bitwise(tmp_path, update_every, pin_wear):
         assert state.pin_wear_depth.any()
     resumed = Simulation(resumed_config).run(state=state, on_step=saver)
     assert_same_dataset(reference.dataset, resumed.dataset)
-

@@ -216,12 +216,17 @@ def test_the_compiled_balance_is_the_axial_balance(extra):
 K_PIN = 2e-13
 
 
-@pytest.mark.parametrize("compiled", [None, False])
-def test_aligned_slices_with_a_wearing_pin_wear_as_the_planar_joint(compiled):
+@pytest.mark.parametrize(("update_every", "compiled"), [(1, None), (1, False), ("adaptive", None)])
+def test_aligned_slices_with_a_wearing_pin_wear_as_the_planar_joint(update_every, compiled):
     # an aligned rigid pin: every slice of the bushing and of the pin sees the planar
     # pressure, so both maps are the planar profiles in every slice, the pin's wear
-    # facing each slice at every step included (compiled balance and solve_axial alone)
-    extra = {"simulation.revolutions": 60, "materials.pin.wear_coefficient": K_PIN}
+    # facing each slice at every step included (compiled balance and solve_axial alone;
+    # adaptive jumps, which carry the pin's map with the bushing's)
+    extra = {
+        "simulation.revolutions": 60 if update_every == 1 else 600,
+        "simulation.update_every": update_every,
+        "materials.pin.wear_coefficient": K_PIN,
+    }
     planar = jw.Simulation(swing(**extra)).run()
     simulation = jw.Simulation(swing(**extra, **{"joint.axial_slices": 4}))
     simulation.solver.planar.compiled = compiled

@@ -7,7 +7,6 @@ import pytest
 
 from jointwear import Simulation
 from jointwear.config import Config, config_from_dict
-from jointwear.errors import ConfigError
 from jointwear.tribology import archard, metrics
 from jointwear.tribology.pin_wear import pin_on_bushing, pin_wear_depth
 
@@ -146,11 +145,3 @@ def test_the_slices_are_a_leading_axis_of_the_pin_wear_functions() -> None:
         one = pin_wear_depth(pressure[s], sliding, K_PIN, radius[s], 7.45e-3, rotation)
         np.testing.assert_array_equal(depth[s], one)
         np.testing.assert_array_equal(facing[s], pin_on_bushing(one, rotation))
-
-
-def test_pin_wear_needs_a_fixed_update_interval(small: Config) -> None:
-    config = small.replace(
-        {"materials.pin.wear_coefficient": K_PIN, "simulation.update_every": "adaptive"}
-    )
-    with pytest.raises(ConfigError, match="materials.pin.wear_coefficient"):
-        Simulation(config)
