@@ -18,6 +18,7 @@ from jointwear import Simulation
 from jointwear.config import Config, load_config
 from jointwear.coupling.jumping import adaptive_interval, jump_error
 from tests.conftest import REPO
+from tests.contact.test_sliced import swing
 
 PAPER = REPO / "examples" / "paper" / "table5_nlcp_15000r.toml"
 CALIBRATED = {
@@ -196,21 +197,9 @@ def test_adaptive_wear_through_stops_at_the_wall():
 def wearing_pin_on_slices(update_every) -> Config:
     """A pin wearing (``K_p = 2e-13``) as it swings ±25° under 200 N fixed in the bushing,
     on 3 slices misaligned by 2e-4 rad: 800 revolutions, 8 steps, 72 nodes."""
-    return load_config(
-        overrides={
-            "mechanism": {
-                "type": "oscillating",
-                "load": "200 N",
-                "load_angle": "-90 deg",
-                "amplitude": "25 deg",
-                "frequency": "1 Hz",
-            },
-            "contact.model": "asymmetric-winkler",
-            "contact.nodes": 72,
-            "contact.spring_area": None,
-            "simulation.steps_per_revolution": 8,
+    return swing(
+        **{
             "simulation.revolutions": 800,
-            "simulation.update_contour": True,
             "simulation.update_every": update_every,
             "joint.axial_slices": 3,
             "joint.misalignment": 2e-4,
