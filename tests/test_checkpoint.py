@@ -329,9 +329,14 @@ def test_sigkill_then_resume_gives_the_uninterrupted_numbers(tmp_path, capsys):
     print(f"killed after revolution {killed_at.revolution}")
 
 
-@pytest.mark.parametrize("update_every", [1, "adaptive"])
-def test_a_run_along_the_pin_resumes_bitwise(tmp_path, update_every):
-    # the wear map (slices, nodes), its saved maps and rates through a checkpoint
+@pytest.mark.parametrize(
+    ("update_every", "pin_wear"),
+    [(1, None), ("adaptive", None), (1, 1e-13), (3, 1e-13), ("adaptive", 1e-13)],
+)
+def test_a_run_along_the_pin_resumes_bitwise(tmp_path, update_every, pin_wear):
+    # the wear map (slices, nodes), its saved maps and rates through a checkpoint; a
+    # wearing pin's map in its own frame too, the resumed run solving the pin's wear
+    # facing each slice as before
     config = load_config(
         UPDATE_CONFIG,
         {
@@ -342,6 +347,7 @@ def test_a_run_along_the_pin_resumes_bitwise(tmp_path, update_every):
             "simulation.checkpoint_every": 4,
             "joint.axial_slices": 3,
             "joint.misalignment": "0.02 deg",
+            "materials.pin.wear_coefficient": pin_wear,
         },
     )
     reference = Simulation(config).run()
@@ -349,5 +355,9 @@ def test_a_run_along_the_pin_resumes_bitwise(tmp_path, update_every):
     interrupted_run(config, tmp_path, 9)
     resumed_config, state, saver = load_checkpoint(tmp_path)
     assert state.wear_depth.shape == (3, 60)
+    if pin_wear is not None:
+        assert reference.dataset["pin_wear_depth"].dims == ("z", "theta")
+        assert state.pin_wear_depth.shape == (3, 60)
+        assert state.pin_wear_depth.any()
     resumed = Simulation(resumed_config).run(state=state, on_step=saver)
     assert_same_dataset(reference.dataset, resumed.dataset)

@@ -147,10 +147,11 @@ class Simulation:
         return self.solver.wear_per_revolution(solution, law, self.sliding_distance)
 
     def pin_wear_per_revolution(self, solved: coupling.Solved) -> FloatArray:
-        """Stage 3b on the pin: its wear depth per revolution in its own frame [m]."""
+        """Stage 3b on the pin: its wear depth per revolution in its own frame [m] (a map
+        over the slices along the pin)."""
         joint, contour = self.config.joint, solved.contour
         return pin_wear_depth(
-            solved.solution.pressure,
+            self.solver.node_pressure(solved.solution),
             self.sliding_distance,
             self.pin_wear_coefficient,
             contour.radius,

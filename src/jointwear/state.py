@@ -200,10 +200,12 @@ class SimulationState:
     dynamics_threshold : float
         Growth of the deepest wear since the last solve at which the adaptive
         coupling solves the dynamics again [m] (0: not yet set).
-    pin_wear_depth : ndarray, shape (N,) or None
-        Accumulated wear depth of the pin in its own frame [m] (``None``: rigid pin).
-    pin_wear_rate : ndarray, shape (N,) or None
-        The pin's wear per revolution on the current contours [m].
+    pin_wear_depth : ndarray, shape (N,) or (slices, N), or None
+        Accumulated wear depth of the pin in its own frame [m] (``None``: rigid pin; a
+        map over the slices along the pin).
+    pin_wear_rate : ndarray, shape (N,) or (slices, N), or None
+        The pin's wear per revolution on the current contours [m] (adaptive jumps: at
+        the state's wear, as ``wear_rate``).
     """
 
     revolution: int | float

@@ -57,7 +57,6 @@ REFUSED = [
     ({**BEAM, **FORKS, "pin.clamp": 0.0}, "pin.clamp: a clevis pin has no clamp"),
     ({**SLICES, "contact.model": "hertz"}, "contact.model: 'hertz' solves a whole"),
     ({**SLICES, "contact.balance": "equilibrium"}, "contact.balance: axial slices balance"),
-    ({**SLICES, "materials.pin.wear_coefficient": 1e-15}, "materials.pin.wear_coefficient"),
     (
         {**SLICES, "lubrication.model": "short-bearing", "lubrication.viscosity": "0.1 Pa*s"},
         "lubrication.model: a film ('short-bearing') is solved for the whole bearing",

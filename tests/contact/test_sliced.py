@@ -210,3 +210,58 @@ def test_the_compiled_balance_is_the_axial_balance(extra):
     wear = solver.wear_per_revolution(fused, simulation.wear_law, sliding)
     expected = solver.wear_per_revolution(reference, simulation.wear_law, sliding)
     assert np.abs(wear - expected).max() <= 1e-12 * expected.max()
+
+
+#: a wearing pin (its wear coefficient of the same order as the bushing's) [1/Pa]
+K_PIN = 2e-13
+
+
+@pytest.mark.parametrize(("update_every", "compiled"), [(1, None), (1, False), ("adaptive", None)])
+def test_aligned_slices_with_a_wearing_pin_wear_as_the_planar_joint(update_every, compiled):
+    # an aligned rigid pin: every slice of the bushing and of the pin sees the planar
+    # pressure, so both maps are the planar profiles in every slice, the pin's wear
+    # facing each slice at every step included (compiled balance and solve_axial alone;
+    # adaptive jumps, which carry the pin's map with the bushing's)
+    extra = {
+        "simulation.revolutions": 60 if update_every == 1 else 600,
+        "simulation.update_every": update_every,
+        "materials.pin.wear_coefficient": K_PIN,
+    }
+    planar = jw.Simulation(swing(**extra)).run()
+    simulation = jw.Simulation(swing(**extra, **{"joint.axial_slices": 4}))
+    simulation.solver.planar.compiled = compiled
+    sliced = simulation.run()
+    assert sliced.dataset["pin_wear_depth"].dims == ("z", "theta")
+    assert planar.dataset["pin_wear_depth"].dims == ("theta",)
+    for name in ("wear_depth", "pin_wear_depth"):
+        reference, maps = planar.dataset[name].values, sliced.dataset[name].values
+        scale = reference.max()
+        assert scale > 0
+        assert np.abs(maps - np.expand_dims(reference, -2)).max() <= 1e-9 * scale, name
+    for key in ("pin_peak_wear_depth_m", "pin_wear_volume_m3", "peak_wear_depth_m"):
+        assert sliced.summary()[key] == pytest.approx(planar.summary()[key], rel=1e-9)
+
+
+def first_revolution(count: int, **extra):
+    """One revolution of the swinging pin on ``count`` slices, both surfaces unworn."""
+    wearing = {"joint.axial_slices": count, "materials.pin.wear_coefficient": K_PIN}
+    config = swing(**wearing, **extra)
+    return config, jw.Simulation(config).run()
+
+
+def test_a_tilted_pin_wears_its_loaded_edge_as_the_bushing_wears_its_own():
+    # on the unworn joint the pin's wear of slice s, summed over its nodes, is
+    # K_p sum_k sum_j p_sjk (R_b / R_p) ds_k, and the bushing's K_d sum_k sum_j p_sjk ds_k:
+    # in every slice their ratio is K_p R_b / (K_d R_p), so the pin's edges wear in the
+    # bushing's ratio (however differently each spreads its scar)
+    config, result = first_revolution(10, **{"joint.misalignment": 4e-4})
+    bushing = result.dataset["wear_depth"].values[-1]
+    pin = result.dataset["pin_wear_depth"].values
+    joint, k_bushing = config.joint, config.materials.bushing.wear_coefficient
+    ratio = K_PIN * joint.bushing_radius / (k_bushing * joint.pin_radius)
+    pin_totals, bushing_totals = pin.sum(axis=1), bushing.sum(axis=1)
+    np.testing.assert_allclose(pin_totals, ratio * bushing_totals, rtol=1e-12)
+    edge_to_edge = pin_totals[-1] / pin_totals[0]
+    assert edge_to_edge == pytest.approx(bushing_totals[-1] / bushing_totals[0], rel=1e-12)
+    assert edge_to_edge > 1.5  # (the tilt loads the last slice's edge)
+    assert pin[-1].max() > pin[0].max()

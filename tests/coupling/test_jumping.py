@@ -18,6 +18,7 @@ from jointwear import Simulation
 from jointwear.config import Config, load_config
 from jointwear.coupling.jumping import adaptive_interval, jump_error
 from tests.conftest import REPO
+from tests.contact.test_sliced import swing
 
 PAPER = REPO / "examples" / "paper" / "table5_nlcp_15000r.toml"
 CALIBRATED = {
@@ -193,19 +194,34 @@ def test_adaptive_wear_through_stops_at_the_wall():
     assert last.revolution < 200000
 
 
-def test_adaptive_updating_of_a_wearing_pin_is_refused(paper_config: Config):
-    """Adaptive jumps integrate the bushing's wear only: a wearing pin is refused, by name."""
-    from jointwear.coupling import Jumps
-    from jointwear.errors import ConfigError
-
-    config = paper_config.replace(
-        {
-            "simulation.update_contour": True,
-            "simulation.update_every": "adaptive",
-            "materials.pin.wear_coefficient": 1e-13,
+def wearing_pin_on_slices(update_every) -> Config:
+    """A pin wearing (``K_p = 2e-13``) as it swings ±25° under 200 N fixed in the bushing,
+    on 3 slices misaligned by 2e-4 rad: 800 revolutions, 8 steps, 72 nodes."""
+    return swing(
+        **{
+            "simulation.revolutions": 800,
+            "simulation.update_every": update_every,
+            "joint.axial_slices": 3,
+            "joint.misalignment": 2e-4,
+            "materials.pin.wear_coefficient": 2e-13,
         }
     )
-    with pytest.raises(ConfigError, match=r"^materials\.pin\.wear_coefficient: .*fixed"):
-        Jumps.from_config(config)
-    with pytest.raises(ConfigError, match=r"^materials\.pin\.wear_coefficient"):
-        Simulation(config)
+
+
+@pytest.mark.filterwarnings("ignore:joint.axial_slices:jointwear.errors.ContactModelWarning")
+def test_adaptive_jumps_carry_a_wearing_pin_as_per_revolution_updating():
+    """The pin's wear map jumps with the bushing's (predicted, corrected, its error
+    controlled): both surfaces within the tolerance of per-revolution updating."""
+    adaptive = Simulation(wearing_pin_on_slices("adaptive")).run()
+    per_revolution = Simulation(wearing_pin_on_slices(1)).run()
+    tolerance = adaptive.config.simulation.adaptive_tolerance
+    a, p = adaptive.summary(), per_revolution.summary()
+    for key in ("peak_wear_depth_m", "wear_volume_m3", "pin_peak_wear_depth_m"):
+        assert a[key] == pytest.approx(p[key], rel=tolerance), key
+    assert a["pin_wear_volume_m3"] == pytest.approx(p["pin_wear_volume_m3"], rel=tolerance)
+    pin_a, pin_p = (r.dataset["pin_wear_depth"].values for r in (adaptive, per_revolution))
+    for maps in ((adaptive.wear_depth, per_revolution.wear_depth), (pin_a, pin_p)):
+        assert np.linalg.norm(maps[0] - maps[1]) <= tolerance * np.linalg.norm(maps[1])
+    # the pin wore over a fifth of the bushing's depth, and the jumps were few
+    assert p["pin_peak_wear_depth_m"] > 0.2 * p["peak_wear_depth_m"]
+    assert a["contour_updates"] <= 60 < p["contour_updates"]

@@ -7,7 +7,6 @@ import pytest
 
 from jointwear import Simulation
 from jointwear.config import Config, config_from_dict
-from jointwear.errors import ConfigError
 from jointwear.tribology import archard, metrics
 from jointwear.tribology.pin_wear import pin_on_bushing, pin_wear_depth
 
@@ -91,9 +90,58 @@ def test_a_swinging_pin_spreads_its_wear_over_the_swing() -> None:
     assert s["pin_wear_volume_m3"] == pytest.approx(s["wear_volume_m3"], rel=0.015)
 
 
-def test_pin_wear_needs_a_fixed_update_interval(small: Config) -> None:
+@pytest.mark.parametrize(("model", "update"), [("asymmetric-winkler", True), ("winkler", False)])
+def test_a_pin_on_slices_wears_archards_global_form_over_all_slices(
+    small: Config, model: str, update: bool
+) -> None:
+    # a misaligned pin on 5 slices, one revolution: the volume off the pin, summed over
+    # its slices (each of width L / 5), is K_p sum_k N_k ds_k with N_k the normal force
+    # of all slices' nodes (the compiled balance in the loop; solve_axial, the symmetric
+    # law, in a run without contour update)
+    count = 5
     config = small.replace(
-        {"materials.pin.wear_coefficient": K_PIN, "simulation.update_every": "adaptive"}
+        {
+            "contact.model": model,
+            "joint.axial_slices": count,
+            "joint.misalignment": "0.02 deg",
+            "materials.pin.wear_coefficient": K_PIN,
+            "simulation.revolutions": 1,
+            "simulation.update_contour": update,
+        }
     )
-    with pytest.raises(ConfigError, match="materials.pin.wear_coefficient"):
-        Simulation(config)
+    simulation = Simulation(config)
+    contour = simulation.initial_contour()
+    solution = simulation.contact(contour)
+    width = config.joint.axial_length / count
+    area = contour.radius * contour.dtheta * width  # (slices, nodes) [m^2]
+    normal = np.einsum("skj,sj->k", solution.slice_pressure, area)
+    expected = archard.archard_volume(normal, simulation.sliding_distance, K_PIN)
+    result = simulation.run()
+    pin = result.dataset["pin_wear_depth"].values
+    assert pin.shape == (count, config.contact.nodes)
+    pin_radius = config.joint.pin_radius
+    assert float(np.sum(pin) * pin_radius * contour.dtheta * width) == pytest.approx(
+        expected, rel=1e-12
+    )
+    # (the summary's volume takes the removed area to second order in h / R_p)
+    assert result.summary()["pin_wear_volume_m3"] == pytest.approx(expected, rel=1e-6)
+    assert result.summary()["pin_peak_wear_depth_m"] == pin.max()
+    # the slices differ (the tilt), so the sum is not one slice's times five
+    peaks = pin.max(axis=1)
+    assert peaks.max() > 1.1 * peaks.min()
+
+
+def test_the_slices_are_a_leading_axis_of_the_pin_wear_functions() -> None:
+    rng = np.random.default_rng(7)
+    slices, steps, nodes = 3, 20, 36
+    pressure = rng.random((slices, steps, nodes)) * 1e6
+    radius = 7.5e-3 + rng.random((slices, nodes)) * 1e-5
+    sliding, rotation = rng.random(steps) * 1e-3, np.cumsum(rng.random(steps))
+    depth = pin_wear_depth(pressure, sliding, K_PIN, radius, 7.45e-3, rotation)
+    facing = pin_on_bushing(depth, rotation)
+    assert depth.shape == (slices, nodes)
+    assert facing.shape == (slices, steps, nodes)
+    for s in range(slices):
+        one = pin_wear_depth(pressure[s], sliding, K_PIN, radius[s], 7.45e-3, rotation)
+        np.testing.assert_array_equal(depth[s], one)
+        np.testing.assert_array_equal(facing[s], pin_on_bushing(one, rotation))

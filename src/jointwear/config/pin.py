@@ -123,11 +123,6 @@ def check_along_the_pin(config) -> None:
             f"contact.model: {config.contact.model!r} solves a whole cross-section and cannot "
             f"be cut into joint.axial_slices; use 'asymmetric-winkler', 'nlcp' or 'winkler'"
         )
-    if config.materials.pin.wear_coefficient is not None:
-        raise ValueError(
-            "materials.pin.wear_coefficient: a wearing pin needs joint.axial_slices = 1 (the "
-            "pin's wear is not yet followed slice by slice)"
-        )
     lubrication = getattr(config, "lubrication", None)
     if lubrication is not None and lubrication.model != "dry":
         raise ValueError(

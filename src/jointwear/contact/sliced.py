@@ -14,6 +14,13 @@ over the length, the pin centre at the mid-plane, the widest contact of any slic
 the loop's records, warnings and pressure snapshots read it as a planar solve, and it
 carries each slice's pressure, from which :meth:`SlicedSolver.wear_per_revolution`
 applies the run's wear law slice by slice: a wear map of shape ``(N, nodes)``.
+
+A wearing pin (``materials.pin.wear_coefficient``) wears slice by slice too: its wear is
+a map in its own frame, slice ``s`` of the pin facing slice ``s`` of the bushing, and
+every step is balanced on the slices worn by the bushing's map plus the pin's wear
+facing them at that step (:meth:`SlicedSolver.solve` with ``facing``), as the planar
+solver does for one slice; the revolution's pressure is then kept for the pin's wear
+(:func:`jointwear.tribology.pin_wear.pin_wear_depth`).
 """
 
 from __future__ import annotations
@@ -34,7 +41,6 @@ from jointwear.contact.axial import (
 from jointwear.contact.pin_beam import Cantilever, Clevis, PinBeam, compliance
 from jointwear.contact.solution import ContactSolution
 from jointwear.contact.solver import ContactSolver, WarmStart
-from jointwear.errors import ConfigError
 from jointwear.geometry.angles import wrap_angle
 from jointwear.geometry.slices import SlicedContour
 
@@ -120,6 +126,9 @@ class SlicedSolver:
         The pin's compliance at the slice centres [m/N] (``None``: a rigid pin).
     play : float
         Tilt the supports allow about the imposed one [rad].
+    pin_wears : bool
+        The pin wears (``materials.pin.wear_coefficient``): every revolution keeps its
+        slices' pressure (the compiled balance does not add up Archard's wear inside).
     """
 
     def __init__(
@@ -132,6 +141,7 @@ class SlicedSolver:
         load_offset: float = 0.0,
         matrix: FloatArray | None = None,
         play: float = 0.0,
+        pin_wears: bool = False,
     ) -> None:
         self.planar = planar
         self.law, self.pin, self.parameters = planar.law, planar.pin, planar.parameters
@@ -139,6 +149,7 @@ class SlicedSolver:
         self.slices = slices
         self.misalignment, self.misalignment_plane = misalignment, misalignment_plane
         self.load_offset, self.matrix, self.play = load_offset, matrix, play
+        self.pin_wears = pin_wears
         # what the compiled balance reads, kept between solves (_steps, _areas, _angles)
         self._cycle: _Steps | None = None
         self._area: FloatArray | None = None
@@ -167,6 +178,7 @@ class SlicedSolver:
             load_offset=joint.load_offset,
             matrix=matrix,
             play=play,
+            pin_wears=config.materials.pin.wear_coefficient is not None,
         )
 
     # ---------------------------------------------------------------- contours
@@ -202,23 +214,23 @@ class SlicedSolver:
         facing: FloatArray | None = None,
     ) -> SlicedSolution:
         """Every step of ``cycle`` balanced on the slices of ``contour`` (the parameters
-        of :meth:`jointwear.contact.solver.ContactSolver.solve`; a worn pin is refused by
-        the configuration).
+        of :meth:`jointwear.contact.solver.ContactSolver.solve`; ``facing``, shape
+        ``(N, M, nodes)``: the worn pin's wear facing each node of each slice at each
+        step [m]).
 
         A rigid pin under a power law goes through the compiled balance
         (:mod:`jointwear.contact._sliced_kernel`, warm from the last solve or cold), which
         inside the loop with Archard's law (``sliding`` given) adds up each slice's wear
-        without assembling the pressure; a load it does not balance, a bending pin and
-        any other law are balanced by :func:`~jointwear.contact.axial.solve_axial` step
-        by step.
+        without assembling the pressure (unless the pin wears); a load it does not
+        balance, a bending pin and any other law are balanced by
+        :func:`~jointwear.contact.axial.solve_axial` step by step. A worn pin: each step
+        on the slices worn by ``contour``'s map plus ``facing`` at that step.
         """
-        if facing is not None:
-            raise ConfigError(
-                "materials.pin.wear_coefficient: a wearing pin needs joint.axial_slices = 1"
-            )
         guess = None if warm is None else np.asarray(warm.guess(ahead), dtype=float)
         if guess is not None and guess.shape != (cycle.steps, 2):
             guess = None  # (a state of another cycle)
+        if facing is not None:
+            return self._worn_pin(contour, cycle, facing, guess)
         if self._compiles:
             return self._compiled(contour, cycle, guess, sliding)
         balances = [self._balance(contour, load, azimuth) for load, azimuth in _loads(cycle)]
@@ -320,12 +332,29 @@ class SlicedSolver:
     ) -> SlicedSolution:
         """The compiled balance of every step from ``guess`` (``(delta_0, gamma)`` per step
         [m, rad]; ``None``: a cold start); the loads it leaves go to :func:`solve_axial`."""
+        steps = self._steps(cycle, sliding)
+        fused = sliding is not None and self.planar.wear_coefficient is not None
+        fused = fused and not self.pin_wears  # (the pin's wear reads the pressure)
+        state, evaluations, wear, pressure, force = self._balanced(contour, steps, guess, fused)
+        if fused:
+            return self._solution(
+                contour, cycle, state, iterations=evaluations, wear=wear, direction=steps.direction
+            )
+        return self._solution(contour, cycle, state, pressure=pressure, force=force,
+                              iterations=evaluations)  # fmt: skip
+
+    def _balanced(
+        self, contour: SlicedContour, steps: _Steps, guess: FloatArray | None, fused: bool
+    ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray | None]:
+        """The compiled balance of ``steps`` on ``contour`` from ``guess`` (module notes
+        of :meth:`_compiled`): each step's ``(delta_0, gamma)`` [m, rad], evaluations,
+        the slices' Archard wear where ``fused`` [m], else their pressure [Pa] and
+        resultants along the load [N]."""
         from jointwear.compile_time import watch_compiles
 
         watch_compiles()  # (before the kernel compiles: its time is counted)
         from jointwear.contact import _sliced_kernel as kernel  # (numba: loaded when used)
 
-        steps = self._steps(cycle, sliding)
         law = np.array([self.pin.radius, self.slice_law.coefficient, self.slice_law.exponent])
         count, nodes = contour.radius.shape
         area = self._areas(contour)
@@ -333,7 +362,6 @@ class SlicedSolver:
         size = steps.load.size
         state = np.zeros((size, 2)) if guess is None else np.array(guess, dtype=float)
         status, evaluations = np.zeros(size, dtype=np.int64), np.zeros(size, dtype=np.int64)
-        fused = sliding is not None and self.planar.wear_coefficient is not None
         wear = np.empty((count, nodes))
         pressure = np.zeros((0, 0, 0)) if fused else np.zeros((count, size, nodes))
         if self._work is None or self._work[-2].size != 3 * count * nodes:
@@ -351,16 +379,42 @@ class SlicedSolver:
             state[k] = balanced.centre_offset, balanced.tilt
             evaluations[k] += balanced.evaluations
             if fused:
-                wear += self.planar.wear_coefficient * sliding[k] * balanced.pressure
+                wear += self.planar.wear_coefficient * steps.sliding_distance[k] * balanced.pressure
             else:
                 pressure[:, k] = balanced.pressure
         if fused:
-            return self._solution(
-                contour, cycle, state, iterations=evaluations, wear=wear, direction=steps.direction
-            )
+            return state, evaluations, wear, pressure, None
         area = area[:, :nodes]
         cosine = np.cos(contour.theta[None, :] - steps.azimuth[:, None])
         force = np.einsum("ikj,ij,kj->ki", pressure, area, cosine)
+        return state, evaluations, wear, pressure, force
+
+    def _worn_pin(
+        self,
+        contour: SlicedContour,
+        cycle: LoadCycle,
+        facing: FloatArray,
+        guess: FloatArray | None,
+    ) -> SlicedSolution:
+        """Each step on its own slices: slice ``s`` worn by ``contour``'s map plus the
+        pin's wear ``facing[s, k]`` [m] facing it at step ``k``, from ``guess`` (per step
+        ``(delta_0, gamma)`` [m, rad]; ``None``: cold), as the planar solver's worn pin."""
+        steps = self._steps(cycle, None)
+        count, size, nodes = facing.shape
+        pressure, force = np.empty((count, size, nodes)), np.empty((size, count))
+        state, evaluations = np.empty((size, 2)), np.empty(size, dtype=np.int64)
+        for k in range(size):
+            worn = self.contour(contour.wear_depth + facing[:, k])
+            if self._compiles:
+                one = None if guess is None else guess[k : k + 1]
+                balanced = self._balanced(worn, steps.step(k), one, False)
+                state[k], evaluations[k] = balanced[0][0], balanced[1][0]
+                pressure[:, k], force[k] = balanced[3][:, 0], balanced[4][0]
+                continue
+            solved = self._balance(worn, float(steps.load[k]), float(steps.azimuth[k]))
+            state[k] = solved.centre_offset, solved.tilt
+            evaluations[k], pressure[:, k] = solved.evaluations, solved.pressure
+            force[k] = solved.force
         return self._solution(contour, cycle, state, pressure=pressure, force=force,
                               iterations=evaluations)  # fmt: skip
 
@@ -413,6 +467,11 @@ class SlicedSolver:
             tilt=state[:, 1],
             slice_wear=wear,
         )
+
+    def node_pressure(self, solution: SlicedSolution) -> FloatArray:
+        """Each slice's pressure on every node at every step [Pa], shape ``(N, M, nodes)``
+        (what the pin's wear reads)."""
+        return solution.slice_pressure
 
     def film_record(self, cycle: LoadCycle) -> None:
         """A joint along the pin is dry (a film needs one slice): no lubrication record."""
@@ -485,6 +544,12 @@ class _Steps(NamedTuple):
     across: FloatArray
     sliding_distance: FloatArray
     direction: FloatArray
+
+    def step(self, k: int) -> _Steps:
+        """Step ``k`` alone (its arrays one long, views of these)."""
+        arrays = (self.load, self.azimuth, self.along, self.across, self.sliding_distance)
+        return _Steps(self.cycle, self.sliding, *(a[k : k + 1] for a in arrays),
+                      self.direction[k : k + 1])  # fmt: skip
 
 
 def _loads(cycle: LoadCycle):

@@ -421,6 +421,11 @@ class ContactSolver:
             kept = self._warm_kernel = (cycle, sliding, revolutions)
         return kept[2]
 
+    def node_pressure(self, solution: ContactSolution) -> FloatArray:
+        """The pressure on every node at every step [Pa], shape ``(M, N)`` (what the pin's
+        wear reads)."""
+        return solution.pressure
+
     def film_record(self, cycle: LoadCycle) -> FilmRecord | None:
         """The lubrication state of every step of ``cycle`` (``None``: a dry joint)."""
         if self.lubrication is None:

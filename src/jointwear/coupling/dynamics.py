@@ -414,8 +414,9 @@ class JointLoad:
 
         Parameters
         ----------
-        pin_wear_depth : ndarray, shape (N,) or None
-            Wear depth of the pin in its own frame [m].
+        pin_wear_depth : ndarray, shape (N,) or (S, N), or None
+            Wear depth of the pin in its own frame [m] (a map over the slices along the
+            pin: then shape (S, M, N)).
         """
         if pin_wear_depth is None or not pin_wear_depth.any():
             return None

@@ -5,9 +5,11 @@ worn by ``h``. A fixed update interval (``simulation.update_every = k``) is the 
 explicit scheme: the wear of one revolution on the current contour, times ``k``.
 ``"adaptive"`` jumps many revolutions with a trapezoid predictor-corrector in the
 spirit of Mukras et al. (:func:`adaptive_step`): the jump's length is chosen by an
-error estimate (:func:`jump_error`, :func:`adaptive_interval`). A :class:`WearStep` is
-one update before it is applied (:func:`next_step`); :func:`applied` applies it, cut short
-where a ``[life]`` limit is reached inside it.
+error estimate (:func:`jump_error`, :func:`adaptive_interval`). A wearing pin is a second
+surface integrated the same way: its wear map jumps with the bushing's, predicted and
+corrected alike, and the jump's error is the larger of the two surfaces'. A
+:class:`WearStep` is one update before it is applied (:func:`next_step`); :func:`applied`
+applies it, cut short where a ``[life]`` limit is reached inside it.
 """
 
 from __future__ import annotations
@@ -21,7 +23,6 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear.coupling.limits import LifeLimits, at_stop
-from jointwear.errors import ConfigError
 from jointwear.geometry.update import update_contour
 from jointwear.state import SimulationState, revolution_number
 
@@ -92,7 +93,10 @@ class WearStep(NamedTuple):
     error : float
         Error estimate of an adaptive jump [-] (0 otherwise).
     pin_rate : ndarray, shape (N,) or None
-        The pin's wear per revolution in its own frame (a wearing pin) [m].
+        The pin's wear per revolution in its own frame (a wearing pin) [m], at the start
+        of the interval.
+    end_pin_rate : ndarray, shape (N,) or None
+        The pin's wear per revolution at the predicted end of an adaptive jump [m].
     """
 
     base: SimulationState
@@ -103,12 +107,15 @@ class WearStep(NamedTuple):
     contour: BushingContour
     error: float = 0.0
     pin_rate: FloatArray | None = None
+    end_pin_rate: FloatArray | None = None
 
     def pin_depth_at(self, revolutions: float) -> FloatArray | None:
-        """The pin's wear depth ``revolutions`` (real) into the interval [m] (explicit scheme)."""
+        """The pin's wear depth ``revolutions`` (real) into the interval [m]: linear
+        (explicit scheme), or the trapezoid corrector's quadratic (adaptive jumps)."""
         if self.pin_rate is None:
             return self.base.pin_wear_depth
-        return self.base.pin_wear_depth + self.pin_rate * revolutions
+        return _along(self.base.pin_wear_depth, self.pin_rate, self.end_pin_rate,
+                      revolutions, self.interval)  # fmt: skip
 
     def depth_at(self, revolutions: float) -> FloatArray:
         """Wear depth ``revolutions`` (real, ``0 <= revolutions <= interval``) into the
@@ -121,10 +128,20 @@ class WearStep(NamedTuple):
         if end is None:
             # (1 x is exact: a per-revolution update skips the product)
             return depth + (rate if revolutions == 1 else rate * revolutions)
-        if revolutions == self.interval:
-            return depth + 0.5 * self.interval * (rate + end)
-        tau = revolutions
-        return depth + tau * rate + (0.5 * tau * tau / self.interval) * (end - rate)
+        return _along(depth, rate, end, revolutions, self.interval)
+
+
+def _along(
+    depth: FloatArray, rate: FloatArray, end: FloatArray | None, tau: float, interval: int
+) -> FloatArray:
+    """Depth ``tau`` revolutions into an update [m] from ``depth`` [m] and the wear per
+    revolution at its start, ``rate``, and at its predicted end, ``end`` (``None``: the
+    explicit scheme's line; else the trapezoid corrector's quadratic over ``interval``)."""
+    if end is None:
+        return depth + rate * tau
+    if tau == interval:
+        return depth + 0.5 * interval * (rate + end)
+    return depth + tau * rate + (0.5 * tau * tau / interval) * (end - rate)
 
 
 #: step-size control of adaptive updating: safety factor, largest growth and shrink
@@ -207,30 +224,26 @@ class Jumps:
         Bushing wall thickness [m].
     radius : float
         Unworn bushing radius [m].
+    pin_radius : float
+        Unworn pin radius [m] (a wearing pin's jump error).
     """
 
     every: int | str
     tolerance: float
     wall_thickness: float
     radius: float
+    pin_radius: float = 0.0
 
     @classmethod
     def from_config(cls, config: Config) -> Jumps:
-        """The updates of ``config.simulation`` on ``config.joint``.
-
-        Raises
-        ------
-        ConfigError
-            Adaptive updating with a wearing pin (it integrates the bushing only).
-        """
+        """The updates of ``config.simulation`` on ``config.joint``."""
         sim, joint = config.simulation, config.joint
-        if config.materials.pin.wear_coefficient is not None and sim.update_every == "adaptive":
-            raise ConfigError(
-                "materials.pin.wear_coefficient: a wearing pin is updated with a fixed "
-                "simulation.update_every (adaptive updating integrates the bushing only)"
-            )
         return cls(
-            sim.update_every, sim.adaptive_tolerance, joint.bushing_thickness, joint.bushing_radius
+            sim.update_every,
+            sim.adaptive_tolerance,
+            joint.bushing_thickness,
+            joint.bushing_radius,
+            joint.pin_radius,
         )
 
     @property
@@ -283,14 +296,22 @@ def next_step(
             base, interval, solved.rate, None, solved.solution, solved.contour, 0.0, pin
         )
     solved = None
-    if base.wear_rate is None:  # the first update (or a new load): the current rate
+    pin_unknown = base.pin_wear_depth is not None and base.pin_wear_rate is None
+    if base.wear_rate is None or pin_unknown:  # the first update (or a new load): the rates
         solved = rate_at(base, base.wear_depth, 0)
+        pin = {} if base.pin_wear_depth is None else {"pin_wear_rate": pin_rate(solved)}
         # (a new load keeps the step size; its jumps are error-controlled anyway)
         base = replace(
-            base, wear_rate=solved.rate, next_interval=base.next_interval or 1, **warm_start(solved)
+            base,
+            wear_rate=solved.rate,
+            next_interval=base.next_interval or 1,
+            **warm_start(solved),
+            **pin,
         )
     ahead = None if due_in is None else due_in(base)
-    return adaptive_step(base, remaining, rate_at, jumps, dynamics_due_in=ahead, solved=solved)
+    return adaptive_step(
+        base, remaining, rate_at, jumps, dynamics_due_in=ahead, solved=solved, pin_rate=pin_rate
+    )
 
 
 def adaptive_step(
@@ -301,6 +322,7 @@ def adaptive_step(
     *,
     dynamics_due_in: int | None = None,
     solved: Solved | None = None,
+    pin_rate: Callable[[Solved], FloatArray] | None = None,
 ) -> WearStep:
     """One adaptive contour update: a jump of many revolutions, error-controlled.
 
@@ -311,7 +333,10 @@ def adaptive_step(
     of the Euler jump (:func:`jump_error`); above the tolerance the jump is rejected and
     retried shorter. The predicted contour stays inside the wall: the last jumps before
     wear-through shrink to single revolutions, and the revolution in which the wall goes
-    is explicit (there is no contour to predict beyond it).
+    is explicit (there is no contour to predict beyond it). A wearing pin's map jumps
+    alike from ``base.pin_wear_rate``: the prediction solves the contact with the pin
+    worn by ``h_p + J w_p`` too, and the jump's error is the larger of the bushing's and
+    the pin's.
 
     Parameters
     ----------
@@ -329,8 +354,12 @@ def adaptive_step(
         see the wear) [-].
     solved : Solved, optional
         The solve that gave ``base``'s wear rate, when it was just made.
+    pin_rate : callable, optional
+        ``pin_rate(solved)``: the pin's wear per revolution [m] (a wearing pin, whose
+        rate at ``base`` is ``base.pin_wear_rate``).
     """
     rate0, tolerance = base.wear_rate, jumps.tolerance
+    pin0 = None if base.pin_wear_depth is None else base.pin_wear_rate
     interval = min(max(1, base.next_interval or base.interval), remaining)
     wearing = rate0 > 0
     if np.any(wearing):
@@ -340,17 +369,29 @@ def adaptive_step(
             # rate, and the wall limit ends the run inside it
             if solved is None:
                 solved = rate_at(base, base.wear_depth, base.interval)
-            return WearStep(base, 1, solved.rate, None, solved.solution, solved.contour)
+                pin0 = None if pin0 is None else pin_rate(solved)
+            return WearStep(base, 1, solved.rate, None, solved.solution, solved.contour, 0.0, pin0)
         interval = max(1, min(interval, math.floor(room)))
     if dynamics_due_in is not None:
         interval = max(1, min(interval, dynamics_due_in))
+    end_pin = None
     while True:
-        solved = rate_at(base, base.wear_depth + interval * rate0, interval)
+        ahead = base
+        if pin0 is not None:  # (the pin predicted too: its wear faces the bushing's)
+            ahead = replace(base, pin_wear_depth=base.pin_wear_depth + interval * pin0)
+        solved = rate_at(ahead, base.wear_depth + interval * rate0, interval)
         error = jump_error(base.wear_depth, rate0, solved.rate, interval, jumps.radius)
+        if pin0 is not None:
+            end_pin = pin_rate(solved)
+            # (the worn pin's area, ``(R_p - h/2) h``, taken as the bushing's to first order)
+            pin_error = jump_error(base.pin_wear_depth, pin0, end_pin, interval, jumps.pin_radius)
+            error = max(error, pin_error)
         if error <= tolerance or interval == 1:
             break
         interval = max(1, min(interval - 1, adaptive_interval(error, interval, tolerance)))
-    return WearStep(base, interval, rate0, solved.rate, solved.solution, solved.contour, error)
+    return WearStep(
+        base, interval, rate0, solved.rate, solved.solution, solved.contour, error, pin0, end_pin
+    )
 
 
 def grown(contour: BushingContour, increment: FloatArray) -> FloatArray:
@@ -441,7 +482,10 @@ def applied(
         "stopped_by": stopped_by,
         "updates_since_dynamics": base.updates_since_dynamics + 1,
         "pin_wear_depth": step.pin_depth_at(interval),
-        "pin_wear_rate": step.pin_rate,
+        # (an adaptive jump's next starts from the pin's rate at its end, as the bushing's)
+        "pin_wear_rate": step.end_pin_rate
+        if adaptive and step.end_pin_rate is not None
+        else step.pin_rate,
     }
 
 

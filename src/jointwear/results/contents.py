@@ -139,10 +139,11 @@ def build_contents(record: RunRecord) -> ResultContents:
         coords["snapshot"] = snapshot
     data_vars.update(film_variables(record))
     pin = record.state.pin_wear_depth
-    if pin is not None:
+    if pin is not None:  # (a map over (z, theta) along the pin, as the bushing's)
         data_vars["pin_wear_depth"] = _var(
-            ("theta",), pin, "m", "final wear depth of the pin, pin frame"
-        )
+            axial_shape(record.config, pin.shape[-1])[1], pin, "m",
+            "final wear depth of the pin, pin frame",
+        )  # fmt: skip
     updates, update_coords = _record_variables(record)
     data_vars.update(updates)
     coords.update(update_coords)

@@ -132,11 +132,13 @@ def pin_metrics(pin_wear_depth: ArrayLike, joint: JointConfig) -> dict[str, floa
     """The :data:`PIN_METRICS` of a pin wear profile (pin frame) [SI].
 
     The removed area of a pin of radius ``R_p`` worn inwards by ``h`` is
-    ``sum h_j (R_p - h_j / 2) dtheta``.
+    ``sum h_j (R_p - h_j / 2) dtheta``. Of a map over ``S`` slices along the pin: the
+    peak is its deepest point, the area the mean of the slices' (so the volume is the sum
+    of the slices' areas times their width ``b / S``), as the bushing's.
 
     Parameters
     ----------
-    pin_wear_depth : array_like, shape (N,)
+    pin_wear_depth : array_like, shape (N,) or (S, N)
         Wear depth of the pin [m].
     joint : jointwear.config.JointConfig
         The ``[joint]`` section: ``pin_radius`` ``R_p`` [m] and ``axial_length`` ``b`` [m].

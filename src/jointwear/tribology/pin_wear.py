@@ -19,6 +19,12 @@ law with the pin's ``K_p`` over the same slip ``ds_k`` wears it by
 ``K_p p_jk (r_j / R_p) ds_k`` at pin angle ``theta_j - phi_k`` (:func:`pin_wear_depth`).
 Summed over the pin, the worn volume is Archard's global form ``K_p sum_k N_k ds_k``,
 as the bushing's is with ``K_d``.
+
+*Along the pin* (``joint.axial_slices = S > 1``) the pin's wear is a map ``h_p,s`` of
+shape ``(S, N)``: slice ``s`` of the pin faces slice ``s`` of the bushing, and the pin
+turns as a rigid body, so every slice shares the rotation ``phi_k``. Slice ``s`` is
+solved on ``r_sj + h_p,s(theta_j - phi_k)`` and wears by ``K_p p_sjk (r_sj / R_p) ds_k``;
+both functions take the slices as a leading axis of their arrays.
 """
 
 from __future__ import annotations
@@ -60,21 +66,23 @@ def pin_on_bushing(pin_depth: ArrayLike, rotation: ArrayLike) -> FloatArray:
 
     Parameters
     ----------
-    pin_depth : array_like, shape (N,)
-        Wear depth of the pin at its nodes, pin frame [m].
+    pin_depth : array_like, shape (N,) or (S, N)
+        Wear depth of the pin at its nodes, pin frame [m]; along the pin, one row per
+        slice.
     rotation : array_like, shape (M,)
-        Rotation of the pin relative to the bushing at each step [rad].
+        Rotation of the pin relative to the bushing at each step [rad] (the same for
+        every slice: the pin turns as a rigid body).
 
     Returns
     -------
-    ndarray, shape (M, N)
+    ndarray, shape (M, N) or (S, M, N)
     """
     depth = np.asarray(pin_depth, dtype=float)
-    nodes = depth.size
+    nodes = depth.shape[-1]
     shift, fraction = shift_weights(rotation, nodes)
     index = (np.arange(nodes)[None, :] - shift[:, None]) % nodes
     # theta_j - phi = (j - shift - fraction) dtheta: between pin nodes index - 1 and index
-    return (1.0 - fraction[:, None]) * depth[index] + fraction[:, None] * depth[index - 1]
+    return (1.0 - fraction[:, None]) * depth[..., index] + fraction[:, None] * depth[..., index - 1]
 
 
 def pin_wear_depth(
@@ -93,29 +101,36 @@ def pin_wear_depth(
     with ``w_ijk`` the linear weights that put bushing node ``j`` at pin angle
     ``theta_j - phi_k``.
 
+    Along the pin, slice ``s`` of the pin wears by its bushing slice's pressure
+    ``p_sjk`` and radii ``r_sj``, at the angles of the one rotation ``phi_k``.
+
     Parameters
     ----------
-    pressure : array_like, shape (M, N)
-        Bushing pressure on node ``j`` at step ``k`` [Pa].
+    pressure : array_like, shape (M, N) or (S, M, N)
+        Bushing pressure on node ``j`` at step ``k`` [Pa] (of slice ``s``).
     sliding_distance : array_like, shape (M,)
         Slip of the step [m].
     wear_coefficient : float
         The pin's ``K_p`` [1/Pa].
-    bushing_radius : array_like, shape (N,)
-        Radius of the bushing nodes (their spring areas) [m].
+    bushing_radius : array_like, shape (N,) or (S, N)
+        Radius of the bushing nodes (their spring areas) [m] (of slice ``s``).
     pin_radius : float
         Unworn pin radius ``R_p`` [m].
     rotation : array_like, shape (M,)
         Rotation of the pin relative to the bushing at each step [rad].
+
+    Returns
+    -------
+    ndarray, shape (N,) or (S, N)
+        The pin's wear depth in its frame [m].
     """
-    load = np.asarray(pressure, dtype=float) * (
-        np.asarray(bushing_radius, dtype=float) / pin_radius
-    )
+    radius = np.asarray(bushing_radius, dtype=float) / pin_radius
+    load = np.asarray(pressure, dtype=float) * radius[..., None, :]
     load = load * np.asarray(sliding_distance, dtype=float)[:, None]
-    nodes = load.shape[1]
+    nodes = load.shape[-1]
     shift, fraction = shift_weights(rotation, nodes)
     index = (np.arange(nodes)[None, :] - shift[:, None]) % nodes
-    depth = np.zeros(nodes)
-    np.add.at(depth, index, (1.0 - fraction[:, None]) * load)
-    np.add.at(depth, (index - 1) % nodes, fraction[:, None] * load)
+    depth = np.zeros((*load.shape[:-2], nodes))
+    np.add.at(depth, (..., index), (1.0 - fraction[:, None]) * load)
+    np.add.at(depth, (..., (index - 1) % nodes), fraction[:, None] * load)
     return wear_coefficient * depth
