@@ -35,7 +35,7 @@ from numpy.typing import NDArray
 from scipy.optimize import brentq
 
 from jointwear.geometry.angles import wrap_angle
-from jointwear.lubrication.asperity import asperity_pressure, composite_modulus
+from jointwear.lubrication.asperity import FIT_OMEGA, asperity_pressure, composite_modulus
 from jointwear.lubrication.lubricants import section_viscosity
 from jointwear.lubrication.orbit import Orbit, OrbitSolver, periodic_orbit
 
@@ -256,13 +256,17 @@ class LubricatedContact:
             return kept[2].copy()
         orbit, _ = self.orbit(cycle)
         angles = 2.0 * np.pi * np.arange(nodes) / nodes
-        offset = orbit.eccentricity_x[:, None] * np.cos(angles) + orbit.eccentricity_y[
-            :, None
-        ] * np.sin(angles)
-        pressure = asperity_pressure(
-            self.clearance * (1.0 - offset), self.roughness, self.modulus, **self.asperity
+        offset = orbit.eccentricity_x[:, None] * np.cos(angles)
+        offset += orbit.eccentricity_y[:, None] * np.sin(angles)
+        film = self.clearance * (1.0 - offset)
+        # the pressure only where the asperities reach, a few per cent of the nodes
+        # along an orbit (the values there as on the whole grid)
+        within = film / self.roughness < FIT_OMEGA
+        within &= (cycle.load > 0.0)[:, None]
+        pressure = np.zeros_like(film)
+        pressure[within] = asperity_pressure(
+            film[within], self.roughness, self.modulus, **self.asperity
         )
-        pressure = np.where((cycle.load > 0.0)[:, None], pressure, 0.0)
         self._pressure = (cycle, nodes, pressure)
         return pressure.copy()
 

@@ -124,17 +124,6 @@ def bicubic(tx, ty, coefficients, x, y):
     return _bicubic_sum(coefficients, span_x, span_y, ty.size - 4, wx, wy)
 
 
-@njit(cache=True)
-def bicubic_pair(tx, ty, first, second, x, y):
-    """Two bicubic B-splines on the same knots at one point (:func:`bicubic` of each)."""
-    span_x, span_y, wx, wy = _spans(tx, ty, x, y)
-    columns = ty.size - 4
-    return (
-        _bicubic_sum(first, span_x, span_y, columns, wx, wy),
-        _bicubic_sum(second, span_x, span_y, columns, wx, wy),
-    )
-
-
 #: ``G(eps, beta; L/D)`` of the short bearing in closed form [-]
 short_shape = njit(cache=True)(short_shape_scalar)
 
@@ -142,23 +131,51 @@ short_shape = njit(cache=True)(short_shape_scalar)
 @njit(cache=True)
 def shape(eps, beta, model, ratio, log_gap_max, tx, ty, radial, tangential):
     """``G(eps, beta)`` of the film model (``orbit.OrbitSolver.scalar_shape``) [-]."""
+    return shape_along(film_at(eps, model, ratio, log_gap_max, tx, ty, radial, tangential), beta)
+
+
+@njit(cache=True)
+def film_at(eps, model, ratio, log_gap_max, tx, ty, radial, tangential):
+    """What :func:`shape_along` needs at ``eps``, evaluated once for all directions.
+
+    The tabulated models' log-gap coordinate, their ``(1 - eps^2)^2.5`` and the knot
+    span and B-spline basis along it: the direction of motion is sought at one ``eps``
+    over some ten directions, and only the basis along ``beta`` changes between them
+    (the same operations as :func:`bicubic` for each component, so the same values
+    bit for bit).
+    """
+    if model == SHORT:
+        return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, radial, tangential
+    log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
+    x = min(max(log_gap, tx[3]), tx[tx.size - 4])
+    span_x = _interval(tx, x, 3, tx.size - 5)
+    scale = (1.0 - eps * eps) ** 2.5
+    return model, eps, ratio, scale, span_x, _basis(tx, x, span_x), ty, radial, tangential
+
+
+@njit(cache=True)
+def shape_along(film, beta):
+    """``G(eps, beta)`` at the ``eps`` of ``film`` (:func:`film_at`) [-]."""
+    model, eps, ratio, scale, span_x, wx, ty, radial, tangential = film
     if model == SHORT:
         return short_shape(eps, beta, ratio)
-    log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
-    wrapped = _wrap(beta)
-    scale = (1.0 - eps * eps) ** 2.5
-    g_r, g_t = bicubic_pair(tx, ty, radial, tangential, log_gap, wrapped)
+    y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
+    span_y = _interval(ty, y, 3, ty.size - 5)
+    wy = _basis(ty, y, span_y)
+    columns = ty.size - 4
+    g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+    g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
     return g_r / scale, g_t / scale
 
 
 @njit(cache=True)
-def _mismatch(direction, eps, target, model, ratio, log_gap_max, tx, ty, radial, tangential):
-    g_r, g_t = shape(eps, direction, model, ratio, log_gap_max, tx, ty, radial, tangential)
+def _mismatch(direction, target, film):
+    g_r, g_t = shape_along(film, direction)
     return _wrap(math.atan2(g_t, g_r) - target)
 
 
 @njit(cache=True)
-def _brent(low, high, f_low, f_high, eps, target, model, ratio, log_gap_max, tx, ty, rr, tt):
+def _brent(low, high, f_low, f_high, target, film):
     """The root of the mismatch in ``[low, high]``: scipy's ``brentq`` (xtol 1e-13, rtol 1e-15)."""
     xtol, rtol = 1e-13, 1e-15
     xpre, xcur, fpre, fcur = low, high, f_low, f_high
@@ -196,7 +213,7 @@ def _brent(low, high, f_low, f_high, eps, target, model, ratio, log_gap_max, tx,
             xcur += scur
         else:
             xcur += delta if sbis > 0.0 else -delta
-        fcur = _mismatch(xcur, eps, target, model, ratio, log_gap_max, tx, ty, rr, tt)
+        fcur = _mismatch(xcur, target, film)
     return xcur
 
 
@@ -206,7 +223,13 @@ def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, 
 
     ``memory[0]`` holds the last root (NaN: none); returns NaN where none is found.
     """
-    args = (eps, target, model, ratio, log_gap_max, tx, ty, rr, tt)
+    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
+    return direction_along(film, target, memory, nodes)
+
+
+@njit(cache=True)
+def direction_along(film, target, memory, nodes):
+    """:func:`direction_of_motion` at the ``eps`` of ``film`` (:func:`film_at`) [rad]."""
     for search in range(2):
         found = False
         if search == 0:
@@ -215,7 +238,7 @@ def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, 
                 continue
             width = 0.05
             low, high = centre - width, centre + width
-            below, above = _mismatch(low, *args), _mismatch(high, *args)
+            below, above = _mismatch(low, target, film), _mismatch(high, target, film)
             while width < 1.0:
                 if below <= 0.0 < above and above - below < math.pi:
                     found = True
@@ -223,18 +246,18 @@ def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, 
                 width *= 3.0
                 if below > 0.0:
                     low = centre - width
-                    below = _mismatch(low, *args)
+                    below = _mismatch(low, target, film)
                 else:
                     high = centre + width
-                    above = _mismatch(high, *args)
+                    above = _mismatch(high, target, film)
             if not found:
                 continue
         else:
             step = _TWO_PI / nodes
-            previous = _wrap(_mismatch(-math.pi, *args))
+            previous = _wrap(_mismatch(-math.pi, target, film))
             cell = 0
             for k in range(1, nodes + 1):
-                current = _mismatch(-math.pi + step * k, *args)
+                current = _mismatch(-math.pi + step * k, target, film)
                 if previous <= 0.0 < current and current - previous < math.pi:
                     cell = k - 1
                     break
@@ -243,11 +266,11 @@ def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, 
             high = low + step
             if cell + 1 == nodes:
                 high = math.pi
-            below, above = _mismatch(low, *args), _mismatch(high, *args)
+            below, above = _mismatch(low, target, film), _mismatch(high, target, film)
         if min(abs(below), abs(above)) <= _ROUND_OFF:
             root = low if abs(below) <= abs(above) else high
         elif below < 0.0 < above and above - below < math.pi:
-            root = _brent(low, high, below, above, *args)
+            root = _brent(low, high, below, above, target, film)
         else:
             continue
         memory[0] = root
@@ -288,12 +311,11 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
     radial = tangential = 0.0
     if carried > 0.0:
         target = math.atan2(film_y, film_x) - phi + math.pi
-        beta = direction_of_motion(
-            eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, nodes
-        )
+        film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
+        beta = direction_along(film, target, memory, nodes)
         if math.isnan(beta):
             return math.nan, math.nan
-        g_r, g_t = shape(eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt)
+        g_r, g_t = shape_along(film, beta)
         size = ratio / (3.0 * math.hypot(g_r, g_t))
         rate = carried * scale * size
         radial, tangential = rate * math.sin(beta), -rate * math.cos(beta)
