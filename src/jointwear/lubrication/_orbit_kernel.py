@@ -326,10 +326,13 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
 @njit(cache=True)
 def right_hand_side(t, qx, qy, inputs, joint, asperity, memory, tables, nodes):
     """``dq/dt`` in the stretched coordinate (``CycleMap.right_hand_side``) [1/s]."""
-    breaks, coefficients = inputs
-    load_x = _spline(breaks, coefficients, t, 0)
-    load_y = _spline(breaks, coefficients, t, 1)
-    speed = _spline(breaks, coefficients, t, 2)
+    breaks, c = inputs
+    # the three inputs share their breaks: one interval for all (as _spline finds it)
+    k = _interval(breaks, t, 0, breaks.size - 2)
+    dx = t - breaks[k]
+    load_x = ((c[0, k, 0] * dx + c[1, k, 0]) * dx + c[2, k, 0]) * dx + c[3, k, 0]
+    load_y = ((c[0, k, 1] * dx + c[1, k, 1]) * dx + c[2, k, 1]) * dx + c[3, k, 1]
+    speed = ((c[0, k, 2] * dx + c[1, k, 2]) * dx + c[2, k, 2]) * dx + c[3, k, 2]
     norm = 1.0 + math.hypot(qx, qy)
     x, y = qx / norm, qy / norm
     vx, vy = velocity(x, y, load_x, load_y, speed, joint, asperity, memory, tables, nodes)
@@ -339,28 +342,32 @@ def right_hand_side(t, qx, qy, inputs, joint, asperity, memory, tables, nodes):
 
 
 @njit(cache=True)
+def _rms(a, b):
+    """``sqrt(mean([a, b]^2))``, as ``np.mean`` sums."""
+    return math.sqrt((0.0 + a**2 + b**2) / 2.0)
+
+
+@njit(cache=True)
 def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, path):
     """``q`` over one cycle from ``q0`` at ``ends[0]``, written to ``path[:, k]`` at ``ends``.
 
     Dormand--Prince 5(4) with its continuous extension and the step control of
-    :class:`scipy.integrate.RK45`. Returns ``(status, evaluations)``.
+    :class:`scipy.integrate.RK45`. Returns ``(status, evaluations)``. The two
+    components are carried as scalars: no array is allocated per step.
     """
     k = np.empty((7, 2))
-    y = np.array([q0[0], q0[1]])
-    new = np.empty(2)
-    stage = np.empty(2)
+    y0, y1 = q0[0], q0[1]
     t, t_end = ends[0], ends[-1]
     args = (inputs, joint, asperity, memory, tables, nodes)
-    fx, fy = right_hand_side(t, y[0], y[1], *args)
+    k[0, 0], k[0, 1] = right_hand_side(t, y0, y1, *args)
     evaluations = 1
-    k[0, 0], k[0, 1] = fx, fy
-    path[0, 0], path[1, 0] = y[0], y[1]
+    path[0, 0], path[1, 0] = y0, y1
     sample = 1
     # the first step as scipy's select_initial_step, order 4, simplified: 1e-2 of the
     # scaled ratio of state and rate, at most the whole cycle
-    scale0 = atol + np.abs(y) * rtol
-    d0 = math.sqrt(np.mean((y / scale0) ** 2))
-    d1 = math.sqrt(np.mean((k[0] / scale0) ** 2))
+    scale0, scale1 = atol + abs(y0) * rtol, atol + abs(y1) * rtol
+    d0 = _rms(y0 / scale0, y1 / scale1)
+    d1 = _rms(k[0, 0] / scale0, k[0, 1] / scale1)
     h = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
     h = min(h, t_end - t)
     for _ in range(_STEPS):
@@ -372,22 +379,27 @@ def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, 
         if last:
             h = t_end - t
         for s in range(1, 6):
-            stage[:] = y
+            stage0, stage1 = y0, y1
             for j in range(s):
-                stage += h * _A[s, j] * k[j]
-            fx, fy = right_hand_side(t + _C[s] * h, stage[0], stage[1], *args)
-            k[s, 0], k[s, 1] = fx, fy
-        new[:] = y
+                weight = h * _A[s, j]
+                stage0 += weight * k[j, 0]
+                stage1 += weight * k[j, 1]
+            k[s, 0], k[s, 1] = right_hand_side(t + _C[s] * h, stage0, stage1, *args)
+        new0, new1 = y0, y1
         for j in range(6):
-            new += h * _B[j] * k[j]
-        fx, fy = right_hand_side(t + h, new[0], new[1], *args)
-        k[6, 0], k[6, 1] = fx, fy
+            weight = h * _B[j]
+            new0 += weight * k[j, 0]
+            new1 += weight * k[j, 1]
+        k[6, 0], k[6, 1] = right_hand_side(t + h, new0, new1, *args)
         evaluations += 6
-        error = np.zeros(2)
+        error0 = error1 = 0.0
         for j in range(7):
-            error += h * _E[j] * k[j]
-        scale = atol + np.maximum(np.abs(y), np.abs(new)) * rtol
-        norm = math.sqrt(np.mean((error / scale) ** 2))
+            weight = h * _E[j]
+            error0 += weight * k[j, 0]
+            error1 += weight * k[j, 1]
+        scale0 = atol + max(abs(y0), abs(new0)) * rtol
+        scale1 = atol + max(abs(y1), abs(new1)) * rtol
+        norm = _rms(error0 / scale0, error1 / scale1)
         if not np.isfinite(norm):
             h *= 0.2
             continue
@@ -396,7 +408,7 @@ def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, 
             # the samples within the step from the continuous extension
             while sample < ends.size and ends[sample] <= t_new:
                 theta = (ends[sample] - t) / h
-                powers = np.array([theta, theta**2, theta**3, theta**4])
+                powers = (theta, theta**2, theta**3, theta**4)
                 for c in range(2):
                     increment = 0.0
                     for j in range(7):
@@ -406,12 +418,12 @@ def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, 
                             + _P[j, 2] * powers[2]
                             + _P[j, 3] * powers[3]
                         )
-                    path[c, sample] = y[c] + h * increment
+                    path[c, sample] = (y0 if c == 0 else y1) + h * increment
                 sample += 1
             factor = 10.0 if norm == 0.0 else min(10.0, 0.9 * norm**-0.2)
             t = t_new
-            y[:] = new
-            k[0] = k[6]
+            y0, y1 = new0, new1
+            k[0, 0], k[0, 1] = k[6, 0], k[6, 1]
             h *= factor
         else:
             h *= max(0.2, 0.9 * norm**-0.2)
