@@ -6,7 +6,9 @@ factor (the short bearing in closed form, the long and finite bearings from the
 bicubic B-spline of :func:`jointwear.lubrication.orbit.shape_table`, evaluated as
 FITPACK's ``bisplev`` does), the direction of motion whose film force balances the
 load (bracketed as :meth:`OrbitSolver.direction_of_motion` does, refined with the
-algorithm of :func:`scipy.optimize.brentq`, which numba cannot call), the
+algorithm of :func:`scipy.optimize.brentq`, which numba cannot call; for the tabulated
+models first by Newton's method from the last root, with the spline's derivative:
+some four force evaluations instead of some eleven, the same root to 1e-13), the
 Greenwood--Tripp asperity force from its cubic spline, the centre's velocity and the
 right-hand side in the stretched coordinate. The cycle is integrated with the
 Dormand--Prince 5(4) pair and its continuous extension (the coefficients of
@@ -36,6 +38,8 @@ _TWO_PI = 2.0 * math.pi
 _LARGEST = 1.0 - 1e-12
 _ROUND_OFF = 1e-12
 _STEPS = 200_000
+#: Newton steps of the direction of motion before the bracketing search takes over
+_NEWTON_STEPS = 8
 
 # Dormand-Prince 5(4) (nodes, stages, weights, error weights, continuous extension):
 # scipy's own RK45 tables, so that the compiled loop takes scipy's steps
@@ -92,6 +96,32 @@ def _basis(knots, x, span):
     b2 += factor * (knots[right] - x)
     b3 = factor * (x - knots[left])
     return b0, b1, b2, b3
+
+
+@njit(cache=True)
+def _basis_slope(knots, x, span):
+    """The derivatives of the four cubic B-splines of :func:`_basis` at ``x``.
+
+    From the quadratic ones, ``N'_{i,3} = 3 (N_{i,2} / (t_{i+3} - t_i) - N_{i+1,2} /
+    (t_{i+4} - t_{i+1}))`` (de Boor, *A Practical Guide to Splines*, 1978, X (12)).
+    """
+    right, left = span + 1, span
+    factor = 1.0 / (knots[right] - knots[left])
+    b0 = factor * (knots[right] - x)
+    b1 = factor * (x - knots[left])
+    s0, s1 = b0, b1
+    right, left = span + 1, span - 1
+    factor = s0 / (knots[right] - knots[left])
+    q0 = factor * (knots[right] - x)
+    q1 = factor * (x - knots[left])
+    right, left = span + 2, span
+    factor = s1 / (knots[right] - knots[left])
+    q1 += factor * (knots[right] - x)
+    q2 = factor * (x - knots[left])
+    d0 = 3.0 * q0 / (knots[span + 1] - knots[span - 2])
+    d1 = 3.0 * q1 / (knots[span + 2] - knots[span - 1])
+    d2 = 3.0 * q2 / (knots[span + 3] - knots[span])
+    return -d0, d0 - d1, d1 - d2, d2
 
 
 @njit(cache=True)
@@ -218,6 +248,40 @@ def _brent(low, high, f_low, f_high, target, film):
 
 
 @njit(cache=True)
+def _newton(start, target, film):
+    """The rising root of the mismatch of a tabulated model by Newton's method [rad].
+
+    From ``start`` (the last root: the state moves little between calls), with the
+    mismatch's slope ``(G_r G_t' - G_t G_r') / |G|^2`` from the splines' derivatives
+    along ``beta``; done when a step is below the tolerance of :func:`_brent`. NaN
+    where the slope is not positive, the iterate strays a radian from the start or
+    it does not settle: the bracketing search takes over.
+    """
+    _, _, _, scale, span_x, wx, ty, radial, tangential = film
+    columns = ty.size - 4
+    beta = start
+    for _ in range(_NEWTON_STEPS):
+        y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
+        span_y = _interval(ty, y, 3, ty.size - 5)
+        wy = _basis(ty, y, span_y)
+        dy = _basis_slope(ty, y, span_y)
+        g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+        g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
+        d_r = _bicubic_sum(radial, span_x, span_y, columns, wx, dy)
+        d_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
+        slope = (g_r * d_t - g_t * d_r) / (g_r * g_r + g_t * g_t)
+        if not slope > 0.0:
+            return math.nan
+        step = _wrap(math.atan2(g_t / scale, g_r / scale) - target) / slope
+        beta -= step
+        if abs(beta - start) > 1.0:
+            return math.nan
+        if abs(step) <= 0.5 * (1e-13 + 1e-15 * abs(beta)):
+            return beta
+    return math.nan
+
+
+@njit(cache=True)
 def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, nodes):
     """``beta`` whose film force points at ``target`` (``OrbitSolver.direction_of_motion``).
 
@@ -236,6 +300,11 @@ def direction_along(film, target, memory, nodes):
             centre = memory[0]
             if math.isnan(centre):
                 continue
+            if film[0] == TABULATED:
+                root = _newton(centre, target, film)
+                if not math.isnan(root):
+                    memory[0] = root
+                    return root
             width = 0.05
             low, high = centre - width, centre + width
             below, above = _mismatch(low, target, film), _mismatch(high, target, film)
