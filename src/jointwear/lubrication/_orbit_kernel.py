@@ -301,9 +301,14 @@ def direction_along(film, target, memory, nodes):
             if math.isnan(centre):
                 continue
             if film[0] == TABULATED:
-                root = _newton(centre, target, film)
+                # the root turns with the load: start from the last root turned as far
+                # as the target has turned since (memory[1], NaN: not at all)
+                turn = _wrap(target - memory[1]) if memory.size > 1 else math.nan
+                root = _newton(centre + (0.0 if math.isnan(turn) else turn), target, film)
                 if not math.isnan(root):
                     memory[0] = root
+                    if memory.size > 1:
+                        memory[1] = target
                     return root
             width = 0.05
             low, high = centre - width, centre + width
@@ -343,6 +348,8 @@ def direction_along(film, target, memory, nodes):
         else:
             continue
         memory[0] = root
+        if memory.size > 1:
+            memory[1] = target
         return root
     return math.nan
 

@@ -363,8 +363,9 @@ class OrbitSolver:
         self.asperity_at = scalar_spline(self.asperity_spline)
         self.cutoff = cutoff
         self.roughness = roughness
-        #: the compiled kernel's last direction of motion (NaN: none yet) [rad]
-        self.memory = np.array([math.nan])
+        #: the compiled kernel's last direction of motion and the target direction of
+        #: the film's force it was found for (NaN: none yet) [rad]
+        self.memory = np.array([math.nan, math.nan])
 
     def kernel_arguments(self) -> tuple[Any, ...]:
         """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity."""
