@@ -96,7 +96,7 @@ def test_newtons_direction_of_motion_is_the_bracketed_one(kernel, model):
         bracketed = kernel.direction_of_motion(eps, target, memory, *arguments)
         memory[0] = bracketed + rng.uniform(-0.1, 0.1)
         film = kernel.film_at(eps, *arguments[:-1])
-        newton = kernel._newton(memory[0], target, film)
+        newton = kernel._newton(memory[0], target, film)[0]
         assert newton == pytest.approx(bracketed, abs=1e-12)
         assert kernel.direction_of_motion(eps, target, memory, *arguments) == newton
 

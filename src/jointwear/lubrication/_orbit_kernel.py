@@ -253,9 +253,10 @@ def _newton(start, target, film):
 
     From ``start`` (the last root: the state moves little between calls), with the
     mismatch's slope ``(G_r G_t' - G_t G_r') / |G|^2`` from the splines' derivatives
-    along ``beta``; done when a step is below the tolerance of :func:`_brent`. NaN
-    where the slope is not positive, the iterate strays a radian from the start or
-    it does not settle: the bracketing search takes over.
+    along ``beta``; done when a step is below the tolerance of :func:`_brent`.
+    Returns the root and ``G`` at the iterate before the last step (it moved less
+    than 1e-13 rad); NaN where the slope is not positive, the iterate strays a
+    radian from the start or it does not settle: the bracketing search takes over.
     """
     _, _, _, scale, span_x, wx, ty, radial, tangential = film
     columns = ty.size - 4
@@ -271,14 +272,15 @@ def _newton(start, target, film):
         d_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
         slope = (g_r * d_t - g_t * d_r) / (g_r * g_r + g_t * g_t)
         if not slope > 0.0:
-            return math.nan
-        step = _wrap(math.atan2(g_t / scale, g_r / scale) - target) / slope
+            return math.nan, 0.0, 0.0
+        g_r, g_t = g_r / scale, g_t / scale
+        step = _wrap(math.atan2(g_t, g_r) - target) / slope
         beta -= step
         if abs(beta - start) > 1.0:
-            return math.nan
+            return math.nan, 0.0, 0.0
         if abs(step) <= 0.5 * (1e-13 + 1e-15 * abs(beta)):
-            return beta
-    return math.nan
+            return beta, g_r, g_t
+    return math.nan, 0.0, 0.0
 
 
 @njit(cache=True)
@@ -288,12 +290,13 @@ def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, 
     ``memory[0]`` holds the last root (NaN: none); returns NaN where none is found.
     """
     film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
-    return direction_along(film, target, memory, nodes)
+    return direction_along(film, target, memory, nodes)[0]
 
 
 @njit(cache=True)
 def direction_along(film, target, memory, nodes):
-    """:func:`direction_of_motion` at the ``eps`` of ``film`` (:func:`film_at`) [rad]."""
+    """:func:`direction_of_motion` at the ``eps`` of ``film`` (:func:`film_at`) [rad],
+    and ``G`` there (:func:`shape_along`; NaN where no root is found) [-]."""
     for search in range(2):
         found = False
         if search == 0:
@@ -304,12 +307,12 @@ def direction_along(film, target, memory, nodes):
                 # the root turns with the load: start from the last root turned as far
                 # as the target has turned since (memory[1], NaN: not at all)
                 turn = _wrap(target - memory[1]) if memory.size > 1 else math.nan
-                root = _newton(centre + (0.0 if math.isnan(turn) else turn), target, film)
+                root, g_r, g_t = _newton(centre + (0.0 if math.isnan(turn) else turn), target, film)
                 if not math.isnan(root):
                     memory[0] = root
                     if memory.size > 1:
                         memory[1] = target
-                    return root
+                    return root, g_r, g_t
             width = 0.05
             low, high = centre - width, centre + width
             below, above = _mismatch(low, target, film), _mismatch(high, target, film)
@@ -350,8 +353,9 @@ def direction_along(film, target, memory, nodes):
         memory[0] = root
         if memory.size > 1:
             memory[1] = target
-        return root
-    return math.nan
+        g_r, g_t = shape_along(film, root)
+        return root, g_r, g_t
+    return math.nan, math.nan, math.nan
 
 
 @njit(cache=True)
@@ -388,10 +392,9 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
     if carried > 0.0:
         target = math.atan2(film_y, film_x) - phi + math.pi
         film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
-        beta = direction_along(film, target, memory, nodes)
+        beta, g_r, g_t = direction_along(film, target, memory, nodes)
         if math.isnan(beta):
             return math.nan, math.nan
-        g_r, g_t = shape_along(film, beta)
         size = ratio / (3.0 * math.hypot(g_r, g_t))
         rate = carried * scale * size
         radial, tangential = rate * math.sin(beta), -rate * math.cos(beta)
