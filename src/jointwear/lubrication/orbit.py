@@ -391,20 +391,6 @@ class OrbitSolver:
         tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
         return joint, asperity, self.memory, tables, DIRECTION_NODES
 
-    def fast_shape(self) -> Callable[[float, float], tuple[float, float]]:
-        """:attr:`scalar_shape`, compiled where the kernel is there (the tabulated
-        models' spline as FITPACK evaluates it, to 1e-13, in a tenth of the time)."""
-        kernel = compiled_kernel()
-        if kernel is None or self.model == "short":
-            return self.scalar_shape
-        _, _, _, (tx, ty, radial, tangential), _ = self.kernel_arguments()
-        ratio, log_gap_max = self.ratio, float(LOG_GAP_MAX)
-
-        def shape(eps: float, beta: float) -> tuple[float, float]:
-            return kernel.shape(eps, beta, 1, ratio, log_gap_max, tx, ty, radial, tangential)
-
-        return shape
-
     def asperity_force(self, eccentricity_ratio: ArrayLike) -> FloatArray:
         """Radial asperity force at ``eps`` (tabulated, linear between nodes) [N]."""
         gap = (1.0 - np.asarray(eccentricity_ratio, float)) * self.clearance / self.roughness
