@@ -13,6 +13,9 @@ CPU time of this process (the machine is shared) and wall time, medians of ``--r
 runs (the Python path: ``--python-repeats``); each run of a case is followed by a dry run
 of as many revolutions, and the ratio is that of the two CPU medians (a changing load
 changes both alike). The load average is printed at the start and the end.
+Target: a lubricated revolution within 2x of a dry one; the last measurement and where the
+time goes are in docs/lubrication.md (*Speed*): 1.6x (short), 2.1x (finite length) and 2.7x
+(long bearing on the wall, whose orbit search takes 41-45 cycles) for one revolution.
 
 Run: ``python benchmarks/bench_lubrication.py [--repeats N]``
 """

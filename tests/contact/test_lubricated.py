@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from jointwear import Simulation, load_config
-from jointwear.contact.lubricated import bulk_weight, film_speeds
+from jointwear.contact.lubricated import bulk_weight, film_speeds, reach_columns
 from jointwear.lubrication.mixed import steady_load_sharing
 from jointwear.lubrication.orbit import periodic_orbit
 from jointwear.mechanism.cycle import LoadCycle
@@ -318,3 +318,24 @@ def test_reynolds_film_carries_more_and_wears_less_than_half_sommerfelds(crank_p
     assert wets[1]["min_film_parameter"] > wets[0]["min_film_parameter"]
     assert wets[1]["asperity_load_fraction"] < wets[0]["asperity_load_fraction"]
     assert wets[1]["wear_volume_m3"] < wets[0]["wear_volume_m3"]
+
+
+@pytest.mark.parametrize("reach", [0.002, 0.03, 0.5, 1.5])
+def test_the_asperities_reach_only_the_nodes_kept_for_them(reach):
+    """Every node whose film is thinner than the reach, found on the whole grid, is
+    among the nodes kept for its step (the asperity pressure is evaluated there only)."""
+    rng = np.random.default_rng(2)
+    steps, nodes = 200, 360
+    eps = np.concatenate([1.0 - rng.uniform(0.0, 0.05, steps - 2), [0.0, 0.3]])
+    phi = rng.uniform(-np.pi, np.pi, steps)
+    ex, ey = eps * np.cos(phi), eps * np.sin(phi)
+    angles = 2.0 * np.pi * np.arange(nodes) / nodes
+    thin = 1.0 - (ex[:, None] * np.cos(angles) + ey[:, None] * np.sin(angles)) < reach
+    columns = reach_columns(ex, ey, nodes, reach)
+    kept = np.zeros_like(thin)
+    np.put_along_axis(kept, columns, True, axis=1)
+    assert thin.any()
+    assert np.all(kept[thin])
+    # and only a few more than those where the arc is short
+    if reach < 0.1:
+        assert columns.shape[1] < nodes / 4

@@ -66,6 +66,41 @@ def test_the_compiled_bicubic_spline_is_fitpacks(kernel):
         assert kernel.bicubic(tx, ty, radial, x, y) == pytest.approx(expected, rel=1e-13, abs=1e-15)
 
 
+def test_the_compiled_spline_slope_along_the_direction_is_fitpacks(kernel):
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, "long")
+    _, _, _, (tx, ty, radial, _), _ = solver.kernel_arguments()
+    columns = ty.size - 4
+    rng = np.random.default_rng(5)
+    for x, y in rng.uniform([0.0, -np.pi], [2.3, np.pi], size=(100, 2)):
+        span_x = kernel._interval(tx, x, 3, tx.size - 5)
+        span_y = kernel._interval(ty, y, 3, ty.size - 5)
+        wx = kernel._basis(tx, x, span_x)
+        slope = kernel._basis_slope(ty, y, span_y)
+        compiled = kernel._bicubic_sum(radial, span_x, span_y, columns, wx, slope)
+        expected = bisplev(x, y, (tx, ty, radial, 3, 3), dy=1)
+        assert compiled == pytest.approx(expected, rel=1e-11, abs=1e-13 * np.abs(radial).max())
+
+
+@pytest.mark.parametrize("model", ["long", "finite"])
+def test_newtons_direction_of_motion_is_the_bracketed_one(kernel, model):
+    """From the last root (within a tenth of a radian, as between the integration's
+    calls) Newton's method finds the root that the scan and Brent's method find."""
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, model)
+    joint, _, memory, tables, nodes = solver.kernel_arguments()
+    _, _, _, _, ratio, code, log_gap_max = joint
+    arguments = (int(code), ratio, log_gap_max, *tables, nodes)
+    rng = np.random.default_rng(11)
+    for _ in range(200):
+        eps, target = rng.uniform(0.0, 0.995), rng.uniform(-np.pi, 2 * np.pi)
+        memory[0] = math.nan
+        bracketed = kernel.direction_of_motion(eps, target, memory, *arguments)
+        memory[0] = bracketed + rng.uniform(-0.1, 0.1)
+        film = kernel.film_at(eps, *arguments[:-1])
+        newton = kernel._newton(memory[0], target, film)[0]
+        assert newton == pytest.approx(bracketed, abs=1e-12)
+        assert kernel.direction_of_motion(eps, target, memory, *arguments) == newton
+
+
 def cycle_inputs(steps: int = 60, period: float = 0.2):
     time = np.arange(steps) * period / steps
     phase = 2 * math.pi * time / period

@@ -35,7 +35,7 @@ from numpy.typing import NDArray
 from scipy.optimize import brentq
 
 from jointwear.geometry.angles import wrap_angle
-from jointwear.lubrication.asperity import asperity_pressure, composite_modulus
+from jointwear.lubrication.asperity import FIT_OMEGA, asperity_pressure, composite_modulus
 from jointwear.lubrication.lubricants import section_viscosity
 from jointwear.lubrication.orbit import Orbit, OrbitSolver, periodic_orbit
 
@@ -44,7 +44,14 @@ if TYPE_CHECKING:
     from jointwear.contact.laws import ContactParameters
     from jointwear.mechanism.cycle import LoadCycle
 
-__all__ = ["FILM_MODEL_OF", "FilmRecord", "LubricatedContact", "bulk_weight", "film_speeds"]
+__all__ = [
+    "FILM_MODEL_OF",
+    "FilmRecord",
+    "LubricatedContact",
+    "bulk_weight",
+    "film_speeds",
+    "reach_columns",
+]
 
 FloatArray = NDArray[np.float64]
 
@@ -113,6 +120,35 @@ def bulk_weight(film_parameter: FloatArray) -> FloatArray:
     """
     x = np.clip(np.asarray(film_parameter, float), 0.0, 1.0)
     return 1.0 - 3.0 * x * x + 2.0 * x**3
+
+
+def reach_columns(
+    eccentricity_x: FloatArray, eccentricity_y: FloatArray, nodes: int, reach: float
+) -> NDArray[np.intp]:
+    """The nodes of each step that the asperities may reach, (M, W) indices.
+
+    The film ``c (1 - eps cos(theta - phi))`` is thinner than ``reach c`` on the arc
+    ``|theta - phi| < arccos((1 - reach) / eps)`` around the line of centres; the
+    nodes of that arc and two more on each side (round-off), or all nodes where the
+    arc is most of the circle.
+
+    Parameters
+    ----------
+    eccentricity_x, eccentricity_y : ndarray, shape (M,)
+        The orbit, ``e / c`` [-].
+    nodes : int
+        Nodes around the bushing, the first at ``theta = 0`` [-].
+    reach : float
+        The asperities' reach over the clearance [-].
+    """
+    eps = np.hypot(eccentricity_x, eccentricity_y)
+    ratio = np.divide(1.0 - reach, eps, out=np.full_like(eps, 2.0), where=eps > 0.0)
+    spacing = 2.0 * np.pi / nodes
+    width = int(np.ceil(np.arccos(np.clip(ratio, -1.0, 1.0)).max() / spacing)) + 2
+    if 2 * width + 1 >= nodes:
+        return np.broadcast_to(np.arange(nodes), (eps.size, nodes))
+    centre = np.rint(np.arctan2(eccentricity_y, eccentricity_x) / spacing).astype(np.intp)
+    return (centre[:, None] + np.arange(-width, width + 1)) % nodes
 
 
 class LubricatedContact:
@@ -256,13 +292,25 @@ class LubricatedContact:
             return kept[2].copy()
         orbit, _ = self.orbit(cycle)
         angles = 2.0 * np.pi * np.arange(nodes) / nodes
-        offset = orbit.eccentricity_x[:, None] * np.cos(angles) + orbit.eccentricity_y[
-            :, None
-        ] * np.sin(angles)
-        pressure = asperity_pressure(
-            self.clearance * (1.0 - offset), self.roughness, self.modulus, **self.asperity
+        # the pressure only at the nodes the asperities reach, a few per cent along an
+        # orbit: candidates around each step's line of centres, then the same test and
+        # the same values as on the whole grid
+        columns = reach_columns(
+            orbit.eccentricity_x,
+            orbit.eccentricity_y,
+            nodes,
+            FIT_OMEGA * self.roughness / self.clearance,
         )
-        pressure = np.where((cycle.load > 0.0)[:, None], pressure, 0.0)
+        offset = orbit.eccentricity_x[:, None] * np.cos(angles)[columns]
+        offset += orbit.eccentricity_y[:, None] * np.sin(angles)[columns]
+        film = self.clearance * (1.0 - offset)
+        within = film / self.roughness < FIT_OMEGA
+        within &= (cycle.load > 0.0)[:, None]
+        rows = np.broadcast_to(np.arange(columns.shape[0])[:, None], columns.shape)
+        pressure = np.zeros((columns.shape[0], nodes))
+        pressure[rows[within], columns[within]] = asperity_pressure(
+            film[within], self.roughness, self.modulus, **self.asperity
+        )
         self._pressure = (cycle, nodes, pressure)
         return pressure.copy()
 

@@ -6,7 +6,9 @@ factor (the short bearing in closed form, the long and finite bearings from the
 bicubic B-spline of :func:`jointwear.lubrication.orbit.shape_table`, evaluated as
 FITPACK's ``bisplev`` does), the direction of motion whose film force balances the
 load (bracketed as :meth:`OrbitSolver.direction_of_motion` does, refined with the
-algorithm of :func:`scipy.optimize.brentq`, which numba cannot call), the
+algorithm of :func:`scipy.optimize.brentq`, which numba cannot call; for the tabulated
+models first by Newton's method from the last root, with the spline's derivative:
+some four force evaluations instead of some eleven, the same root to 1e-13), the
 Greenwood--Tripp asperity force from its cubic spline, the centre's velocity and the
 right-hand side in the stretched coordinate. The cycle is integrated with the
 Dormand--Prince 5(4) pair and its continuous extension (the coefficients of
@@ -36,6 +38,8 @@ _TWO_PI = 2.0 * math.pi
 _LARGEST = 1.0 - 1e-12
 _ROUND_OFF = 1e-12
 _STEPS = 200_000
+#: Newton steps of the direction of motion before the bracketing search takes over
+_NEWTON_STEPS = 8
 
 # Dormand-Prince 5(4) (nodes, stages, weights, error weights, continuous extension):
 # scipy's own RK45 tables, so that the compiled loop takes scipy's steps
@@ -95,6 +99,32 @@ def _basis(knots, x, span):
 
 
 @njit(cache=True)
+def _basis_slope(knots, x, span):
+    """The derivatives of the four cubic B-splines of :func:`_basis` at ``x``.
+
+    From the quadratic ones, ``N'_{i,3} = 3 (N_{i,2} / (t_{i+3} - t_i) - N_{i+1,2} /
+    (t_{i+4} - t_{i+1}))`` (de Boor, *A Practical Guide to Splines*, 1978, X (12)).
+    """
+    right, left = span + 1, span
+    factor = 1.0 / (knots[right] - knots[left])
+    b0 = factor * (knots[right] - x)
+    b1 = factor * (x - knots[left])
+    s0, s1 = b0, b1
+    right, left = span + 1, span - 1
+    factor = s0 / (knots[right] - knots[left])
+    q0 = factor * (knots[right] - x)
+    q1 = factor * (x - knots[left])
+    right, left = span + 2, span
+    factor = s1 / (knots[right] - knots[left])
+    q1 += factor * (knots[right] - x)
+    q2 = factor * (x - knots[left])
+    d0 = 3.0 * q0 / (knots[span + 1] - knots[span - 2])
+    d1 = 3.0 * q1 / (knots[span + 2] - knots[span - 1])
+    d2 = 3.0 * q2 / (knots[span + 3] - knots[span])
+    return -d0, d0 - d1, d1 - d2, d2
+
+
+@njit(cache=True)
 def _bicubic_sum(coefficients, span_x, span_y, columns, wx, wy):
     """``sum_i wx_i sum_j wy_j c[(span_x - 3 + i) columns + span_y - 3 + j]``."""
     total = 0.0
@@ -124,17 +154,6 @@ def bicubic(tx, ty, coefficients, x, y):
     return _bicubic_sum(coefficients, span_x, span_y, ty.size - 4, wx, wy)
 
 
-@njit(cache=True)
-def bicubic_pair(tx, ty, first, second, x, y):
-    """Two bicubic B-splines on the same knots at one point (:func:`bicubic` of each)."""
-    span_x, span_y, wx, wy = _spans(tx, ty, x, y)
-    columns = ty.size - 4
-    return (
-        _bicubic_sum(first, span_x, span_y, columns, wx, wy),
-        _bicubic_sum(second, span_x, span_y, columns, wx, wy),
-    )
-
-
 #: ``G(eps, beta; L/D)`` of the short bearing in closed form [-]
 short_shape = njit(cache=True)(short_shape_scalar)
 
@@ -142,23 +161,51 @@ short_shape = njit(cache=True)(short_shape_scalar)
 @njit(cache=True)
 def shape(eps, beta, model, ratio, log_gap_max, tx, ty, radial, tangential):
     """``G(eps, beta)`` of the film model (``orbit.OrbitSolver.scalar_shape``) [-]."""
+    return shape_along(film_at(eps, model, ratio, log_gap_max, tx, ty, radial, tangential), beta)
+
+
+@njit(cache=True)
+def film_at(eps, model, ratio, log_gap_max, tx, ty, radial, tangential):
+    """What :func:`shape_along` needs at ``eps``, evaluated once for all directions.
+
+    The tabulated models' log-gap coordinate, their ``(1 - eps^2)^2.5`` and the knot
+    span and B-spline basis along it: the direction of motion is sought at one ``eps``
+    over some ten directions, and only the basis along ``beta`` changes between them
+    (the same operations as :func:`bicubic` for each component, so the same values
+    bit for bit).
+    """
+    if model == SHORT:
+        return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, radial, tangential
+    log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
+    x = min(max(log_gap, tx[3]), tx[tx.size - 4])
+    span_x = _interval(tx, x, 3, tx.size - 5)
+    scale = (1.0 - eps * eps) ** 2.5
+    return model, eps, ratio, scale, span_x, _basis(tx, x, span_x), ty, radial, tangential
+
+
+@njit(cache=True)
+def shape_along(film, beta):
+    """``G(eps, beta)`` at the ``eps`` of ``film`` (:func:`film_at`) [-]."""
+    model, eps, ratio, scale, span_x, wx, ty, radial, tangential = film
     if model == SHORT:
         return short_shape(eps, beta, ratio)
-    log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
-    wrapped = _wrap(beta)
-    scale = (1.0 - eps * eps) ** 2.5
-    g_r, g_t = bicubic_pair(tx, ty, radial, tangential, log_gap, wrapped)
+    y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
+    span_y = _interval(ty, y, 3, ty.size - 5)
+    wy = _basis(ty, y, span_y)
+    columns = ty.size - 4
+    g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+    g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
     return g_r / scale, g_t / scale
 
 
 @njit(cache=True)
-def _mismatch(direction, eps, target, model, ratio, log_gap_max, tx, ty, radial, tangential):
-    g_r, g_t = shape(eps, direction, model, ratio, log_gap_max, tx, ty, radial, tangential)
+def _mismatch(direction, target, film):
+    g_r, g_t = shape_along(film, direction)
     return _wrap(math.atan2(g_t, g_r) - target)
 
 
 @njit(cache=True)
-def _brent(low, high, f_low, f_high, eps, target, model, ratio, log_gap_max, tx, ty, rr, tt):
+def _brent(low, high, f_low, f_high, target, film):
     """The root of the mismatch in ``[low, high]``: scipy's ``brentq`` (xtol 1e-13, rtol 1e-15)."""
     xtol, rtol = 1e-13, 1e-15
     xpre, xcur, fpre, fcur = low, high, f_low, f_high
@@ -196,8 +243,44 @@ def _brent(low, high, f_low, f_high, eps, target, model, ratio, log_gap_max, tx,
             xcur += scur
         else:
             xcur += delta if sbis > 0.0 else -delta
-        fcur = _mismatch(xcur, eps, target, model, ratio, log_gap_max, tx, ty, rr, tt)
+        fcur = _mismatch(xcur, target, film)
     return xcur
+
+
+@njit(cache=True)
+def _newton(start, target, film):
+    """The rising root of the mismatch of a tabulated model by Newton's method [rad].
+
+    From ``start`` (the last root: the state moves little between calls), with the
+    mismatch's slope ``(G_r G_t' - G_t G_r') / |G|^2`` from the splines' derivatives
+    along ``beta``; done when a step is below the tolerance of :func:`_brent`.
+    Returns the root and ``G`` at the iterate before the last step (it moved less
+    than 1e-13 rad); NaN where the slope is not positive, the iterate strays a
+    radian from the start or it does not settle: the bracketing search takes over.
+    """
+    _, _, _, scale, span_x, wx, ty, radial, tangential = film
+    columns = ty.size - 4
+    beta = start
+    for _ in range(_NEWTON_STEPS):
+        y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
+        span_y = _interval(ty, y, 3, ty.size - 5)
+        wy = _basis(ty, y, span_y)
+        dy = _basis_slope(ty, y, span_y)
+        g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+        g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
+        d_r = _bicubic_sum(radial, span_x, span_y, columns, wx, dy)
+        d_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
+        slope = (g_r * d_t - g_t * d_r) / (g_r * g_r + g_t * g_t)
+        if not slope > 0.0:
+            return math.nan, 0.0, 0.0
+        g_r, g_t = g_r / scale, g_t / scale
+        step = _wrap(math.atan2(g_t, g_r) - target) / slope
+        beta -= step
+        if abs(beta - start) > 1.0:
+            return math.nan, 0.0, 0.0
+        if abs(step) <= 0.5 * (1e-13 + 1e-15 * abs(beta)):
+            return beta, g_r, g_t
+    return math.nan, 0.0, 0.0
 
 
 @njit(cache=True)
@@ -206,16 +289,33 @@ def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, 
 
     ``memory[0]`` holds the last root (NaN: none); returns NaN where none is found.
     """
-    args = (eps, target, model, ratio, log_gap_max, tx, ty, rr, tt)
+    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
+    return direction_along(film, target, memory, nodes)[0]
+
+
+@njit(cache=True)
+def direction_along(film, target, memory, nodes):
+    """:func:`direction_of_motion` at the ``eps`` of ``film`` (:func:`film_at`) [rad],
+    and ``G`` there (:func:`shape_along`; NaN where no root is found) [-]."""
     for search in range(2):
         found = False
         if search == 0:
             centre = memory[0]
             if math.isnan(centre):
                 continue
+            if film[0] == TABULATED:
+                # the root turns with the load: start from the last root turned as far
+                # as the target has turned since (memory[1], NaN: not at all)
+                turn = _wrap(target - memory[1]) if memory.size > 1 else math.nan
+                root, g_r, g_t = _newton(centre + (0.0 if math.isnan(turn) else turn), target, film)
+                if not math.isnan(root):
+                    memory[0] = root
+                    if memory.size > 1:
+                        memory[1] = target
+                    return root, g_r, g_t
             width = 0.05
             low, high = centre - width, centre + width
-            below, above = _mismatch(low, *args), _mismatch(high, *args)
+            below, above = _mismatch(low, target, film), _mismatch(high, target, film)
             while width < 1.0:
                 if below <= 0.0 < above and above - below < math.pi:
                     found = True
@@ -223,18 +323,18 @@ def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, 
                 width *= 3.0
                 if below > 0.0:
                     low = centre - width
-                    below = _mismatch(low, *args)
+                    below = _mismatch(low, target, film)
                 else:
                     high = centre + width
-                    above = _mismatch(high, *args)
+                    above = _mismatch(high, target, film)
             if not found:
                 continue
         else:
             step = _TWO_PI / nodes
-            previous = _wrap(_mismatch(-math.pi, *args))
+            previous = _wrap(_mismatch(-math.pi, target, film))
             cell = 0
             for k in range(1, nodes + 1):
-                current = _mismatch(-math.pi + step * k, *args)
+                current = _mismatch(-math.pi + step * k, target, film)
                 if previous <= 0.0 < current and current - previous < math.pi:
                     cell = k - 1
                     break
@@ -243,16 +343,19 @@ def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, 
             high = low + step
             if cell + 1 == nodes:
                 high = math.pi
-            below, above = _mismatch(low, *args), _mismatch(high, *args)
+            below, above = _mismatch(low, target, film), _mismatch(high, target, film)
         if min(abs(below), abs(above)) <= _ROUND_OFF:
             root = low if abs(below) <= abs(above) else high
         elif below < 0.0 < above and above - below < math.pi:
-            root = _brent(low, high, below, above, *args)
+            root = _brent(low, high, below, above, target, film)
         else:
             continue
         memory[0] = root
-        return root
-    return math.nan
+        if memory.size > 1:
+            memory[1] = target
+        g_r, g_t = shape_along(film, root)
+        return root, g_r, g_t
+    return math.nan, math.nan, math.nan
 
 
 @njit(cache=True)
@@ -288,12 +391,10 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
     radial = tangential = 0.0
     if carried > 0.0:
         target = math.atan2(film_y, film_x) - phi + math.pi
-        beta = direction_of_motion(
-            eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, nodes
-        )
+        film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
+        beta, g_r, g_t = direction_along(film, target, memory, nodes)
         if math.isnan(beta):
             return math.nan, math.nan
-        g_r, g_t = shape(eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt)
         size = ratio / (3.0 * math.hypot(g_r, g_t))
         rate = carried * scale * size
         radial, tangential = rate * math.sin(beta), -rate * math.cos(beta)
@@ -304,10 +405,13 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
 @njit(cache=True)
 def right_hand_side(t, qx, qy, inputs, joint, asperity, memory, tables, nodes):
     """``dq/dt`` in the stretched coordinate (``CycleMap.right_hand_side``) [1/s]."""
-    breaks, coefficients = inputs
-    load_x = _spline(breaks, coefficients, t, 0)
-    load_y = _spline(breaks, coefficients, t, 1)
-    speed = _spline(breaks, coefficients, t, 2)
+    breaks, c = inputs
+    # the three inputs share their breaks: one interval for all (as _spline finds it)
+    k = _interval(breaks, t, 0, breaks.size - 2)
+    dx = t - breaks[k]
+    load_x = ((c[0, k, 0] * dx + c[1, k, 0]) * dx + c[2, k, 0]) * dx + c[3, k, 0]
+    load_y = ((c[0, k, 1] * dx + c[1, k, 1]) * dx + c[2, k, 1]) * dx + c[3, k, 1]
+    speed = ((c[0, k, 2] * dx + c[1, k, 2]) * dx + c[2, k, 2]) * dx + c[3, k, 2]
     norm = 1.0 + math.hypot(qx, qy)
     x, y = qx / norm, qy / norm
     vx, vy = velocity(x, y, load_x, load_y, speed, joint, asperity, memory, tables, nodes)
@@ -317,28 +421,32 @@ def right_hand_side(t, qx, qy, inputs, joint, asperity, memory, tables, nodes):
 
 
 @njit(cache=True)
+def _rms(a, b):
+    """``sqrt(mean([a, b]^2))``, as ``np.mean`` sums."""
+    return math.sqrt((0.0 + a**2 + b**2) / 2.0)
+
+
+@njit(cache=True)
 def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, path):
     """``q`` over one cycle from ``q0`` at ``ends[0]``, written to ``path[:, k]`` at ``ends``.
 
     Dormand--Prince 5(4) with its continuous extension and the step control of
-    :class:`scipy.integrate.RK45`. Returns ``(status, evaluations)``.
+    :class:`scipy.integrate.RK45`. Returns ``(status, evaluations)``. The two
+    components are carried as scalars: no array is allocated per step.
     """
     k = np.empty((7, 2))
-    y = np.array([q0[0], q0[1]])
-    new = np.empty(2)
-    stage = np.empty(2)
+    y0, y1 = q0[0], q0[1]
     t, t_end = ends[0], ends[-1]
     args = (inputs, joint, asperity, memory, tables, nodes)
-    fx, fy = right_hand_side(t, y[0], y[1], *args)
+    k[0, 0], k[0, 1] = right_hand_side(t, y0, y1, *args)
     evaluations = 1
-    k[0, 0], k[0, 1] = fx, fy
-    path[0, 0], path[1, 0] = y[0], y[1]
+    path[0, 0], path[1, 0] = y0, y1
     sample = 1
     # the first step as scipy's select_initial_step, order 4, simplified: 1e-2 of the
     # scaled ratio of state and rate, at most the whole cycle
-    scale0 = atol + np.abs(y) * rtol
-    d0 = math.sqrt(np.mean((y / scale0) ** 2))
-    d1 = math.sqrt(np.mean((k[0] / scale0) ** 2))
+    scale0, scale1 = atol + abs(y0) * rtol, atol + abs(y1) * rtol
+    d0 = _rms(y0 / scale0, y1 / scale1)
+    d1 = _rms(k[0, 0] / scale0, k[0, 1] / scale1)
     h = 1e-6 if d0 < 1e-5 or d1 < 1e-5 else 0.01 * d0 / d1
     h = min(h, t_end - t)
     for _ in range(_STEPS):
@@ -350,22 +458,27 @@ def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, 
         if last:
             h = t_end - t
         for s in range(1, 6):
-            stage[:] = y
+            stage0, stage1 = y0, y1
             for j in range(s):
-                stage += h * _A[s, j] * k[j]
-            fx, fy = right_hand_side(t + _C[s] * h, stage[0], stage[1], *args)
-            k[s, 0], k[s, 1] = fx, fy
-        new[:] = y
+                weight = h * _A[s, j]
+                stage0 += weight * k[j, 0]
+                stage1 += weight * k[j, 1]
+            k[s, 0], k[s, 1] = right_hand_side(t + _C[s] * h, stage0, stage1, *args)
+        new0, new1 = y0, y1
         for j in range(6):
-            new += h * _B[j] * k[j]
-        fx, fy = right_hand_side(t + h, new[0], new[1], *args)
-        k[6, 0], k[6, 1] = fx, fy
+            weight = h * _B[j]
+            new0 += weight * k[j, 0]
+            new1 += weight * k[j, 1]
+        k[6, 0], k[6, 1] = right_hand_side(t + h, new0, new1, *args)
         evaluations += 6
-        error = np.zeros(2)
+        error0 = error1 = 0.0
         for j in range(7):
-            error += h * _E[j] * k[j]
-        scale = atol + np.maximum(np.abs(y), np.abs(new)) * rtol
-        norm = math.sqrt(np.mean((error / scale) ** 2))
+            weight = h * _E[j]
+            error0 += weight * k[j, 0]
+            error1 += weight * k[j, 1]
+        scale0 = atol + max(abs(y0), abs(new0)) * rtol
+        scale1 = atol + max(abs(y1), abs(new1)) * rtol
+        norm = _rms(error0 / scale0, error1 / scale1)
         if not np.isfinite(norm):
             h *= 0.2
             continue
@@ -374,7 +487,7 @@ def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, 
             # the samples within the step from the continuous extension
             while sample < ends.size and ends[sample] <= t_new:
                 theta = (ends[sample] - t) / h
-                powers = np.array([theta, theta**2, theta**3, theta**4])
+                powers = (theta, theta**2, theta**3, theta**4)
                 for c in range(2):
                     increment = 0.0
                     for j in range(7):
@@ -384,12 +497,12 @@ def cycle(q0, ends, rtol, atol, inputs, joint, asperity, memory, tables, nodes, 
                             + _P[j, 2] * powers[2]
                             + _P[j, 3] * powers[3]
                         )
-                    path[c, sample] = y[c] + h * increment
+                    path[c, sample] = (y0 if c == 0 else y1) + h * increment
                 sample += 1
             factor = 10.0 if norm == 0.0 else min(10.0, 0.9 * norm**-0.2)
             t = t_new
-            y[:] = new
-            k[0] = k[6]
+            y0, y1 = new0, new1
+            k[0, 0], k[0, 1] = k[6, 0], k[6, 1]
             h *= factor
         else:
             h *= max(0.2, 0.9 * norm**-0.2)
