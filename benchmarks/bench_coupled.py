@@ -20,7 +20,7 @@ row runs ``jointwear life`` on the same case (the wear coefficient lognormal, th
 clearance uniform, life to 0.15 mm of wear) with ``--workers 2`` and extrapolates the
 200-case time linearly in the cases. The machine is shared: read the CPU times, and
 the load average printed with the table. The results and where the time goes:
-``docs/performance.md``, *The whole run* (the run ~9.7 s of CPU, ~6.8 s a life case).
+``docs/performance.md``, *The whole run* (the run ~9.7 s of CPU, ~6.2 s a life case).
 """
 
 from __future__ import annotations
