@@ -73,6 +73,14 @@ def test_short_contact_impact_run_does_not_load_numba(paper_config_path, tmp_pat
     assert "numba" not in modules
 
 
+def test_compiled_contact_impact_run_does_not_import_scipy_integrate(paper_config_path, tmp_path):
+    # the compiled integrator carries RK45's tables itself: scipy.integrate costs ~0.5 s
+    args = ["--set", "dynamics.model=contact-impact", "--set", "dynamics.integrator=RK45-compiled"]
+    modules = loaded_after(cli(["run", str(paper_config_path), *args, *ONE_REVOLUTION]), tmp_path)
+    assert "numba" in modules
+    assert "scipy.integrate" not in modules
+
+
 def test_writing_a_result_imports_xarray_but_no_plotting_or_compiler_library(
     paper_config_path, tmp_path
 ):

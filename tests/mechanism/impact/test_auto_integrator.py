@@ -12,6 +12,7 @@ import pytest
 
 from jointwear import Simulation
 from jointwear.config import Config, config_from_dict, load_config
+from jointwear.mechanism.impact.settings import ContactImpactSettings
 from jointwear.mechanism.slider_crank import contact_impact as ci
 from jointwear.mechanism.stage import load_cycles, mechanism_inputs
 
@@ -73,6 +74,26 @@ def test_auto_is_lsoda_for_the_oscillating_bearing() -> None:
     lsoda = load_cycles(config_from_dict(data))["bearing"]
     np.testing.assert_array_equal(auto.load, lsoda.load)
     assert auto.extras["integrator"] == lsoda.extras["integrator"] == "LSODA"
+
+
+def test_rk45_compiled_without_the_compiled_right_hand_side_is_reported_as_rk45(
+    impact: Config,
+) -> None:
+    # asked for explicitly where it cannot run compiled, scipy's RK45 integrates (the same
+    # pair and step control): the summary names what ran
+    asked = solve(impact.replace({"dynamics.integrator": "RK45-compiled"}), compiled=False)
+    rk45 = solve(impact.replace({"dynamics.integrator": "RK45"}), compiled=False)
+    assert_same_bits(asked, rk45)
+    assert asked.summary()["integrator"] == "RK45"
+
+
+def test_rk45_compiled_on_the_oscillating_bearing_is_reported_as_rk45() -> None:
+    data = {**OSCILLATING, "dynamics": {**OSCILLATING["dynamics"], "integrator": "RK45-compiled"}}
+    assert load_cycles(config_from_dict(data))["bearing"].extras["integrator"] == "RK45"
+
+
+def test_the_settings_object_defaults_to_the_configs_integrator(paper_config: Config) -> None:
+    assert ContactImpactSettings().integrator == paper_config.dynamics.integrator == "auto"
 
 
 def test_the_default_is_converged_on_the_papers_joint(paper_config: Config) -> None:

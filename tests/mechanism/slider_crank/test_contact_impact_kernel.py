@@ -111,6 +111,28 @@ def test_compiled_rhs_on_a_worn_bushing(paper_config: Config) -> None:
         assert_relative(fast.gap(t, y), reference.gap(t, y))
 
 
+def test_compiled_clearance_is_pythons(paper_config: Config) -> None:
+    """The worn clearance in every direction, the axes and the branch cut included, gives
+    the reference's bits (the kernel adds 2 pi to a negative angle instead of ``%``)."""
+    config = paper_config.replace({"dynamics.model": "contact-impact"})
+    nodes = config.contact.nodes
+    wear = 1e-5 * (1.0 + np.sin(3.0 * 2 * np.pi * np.arange(nodes) / nodes))
+    contour = BushingContour.from_wear_profile(
+        config.joint.bushing_radius, wear, config.joint.axial_length
+    )
+    fast, reference = systems(config, contour)
+    kernel, clearance = impact_kernel(), reference.contact.clearance
+    profile = reference.contact.wear_profile
+    rng = np.random.default_rng(11)
+    angles = [*rng.uniform(-np.pi, np.pi, 4000), *np.arange(-4, 5) * np.pi / 2]
+    offsets = [(math.cos(a), math.sin(a)) for a in angles]
+    offsets += [(1.0, 0.0), (1.0, -0.0), (-1.0, 0.0), (-1.0, -0.0), (1.0, -1e-300), (-1.0, -1e-300)]
+    for ex, ey in offsets:
+        expected = reference.contact.clearance_at(ex, ey)
+        assert kernel.clearance_at(ex, ey, clearance, profile) == expected, (ex, ey)
+    assert fast.compiled
+
+
 def test_compiled_hypot_is_pythons() -> None:
     """The kernel's hypot gives CPython's ``math.hypot`` bits, over 40 decades."""
     kernel = impact_kernel()

@@ -123,6 +123,19 @@ def test_other_systems_run_scipys_rk45(paper_config: Config) -> None:
     assert named[1].evaluations == plain[1].evaluations
 
 
+def test_tables_are_scipys_rk45() -> None:
+    # written out (no scipy.integrate import in a run), to the bit scipy's
+    from scipy.integrate import RK45
+
+    from jointwear.mechanism.slider_crank import _contact_impact_rk as rk
+
+    for name in "CABEP":
+        ours, scipys = getattr(rk, f"_{name}"), getattr(RK45, name)
+        assert ours.dtype == scipys.dtype, name
+        assert ours.shape == scipys.shape, name
+        assert ours.tobytes() == scipys.tobytes(), name
+
+
 def test_compiled_steps_are_scipys_rk45(paper_config: Config) -> None:
     # without contact events the compiled loop takes RK45's steps: the same number of
     # right-hand sides, the same states but for the rounding of the sums

@@ -189,7 +189,7 @@ def _integrate(
     """The integration at ``tolerances``: history, states at ``times`` and their segments
     (``None``: the pin left the wall and ``stop_on_separation`` was asked)."""
     method = settings.integrator_for(system)
-    if method == COMPILED_INTEGRATOR and getattr(system, "compiled", False):
+    if method == COMPILED_INTEGRATOR:
         # the whole integration in one compiled function (the slider-crank's)
         return system.integrate_compiled(
             span, y0, in_contact, settings, max_step, times, tolerances, stop_on_separation

@@ -18,6 +18,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "AUTO_INTEGRATOR",
+    "COMPILED_FALLBACK",
     "COMPILED_INTEGRATOR",
     "FALLBACK_INTEGRATOR",
     "INTEGRATORS",
@@ -26,8 +27,10 @@ __all__ = [
 
 #: the Dormand-Prince 5(4) pair of ``RK45`` with the contact events, the whole
 #: integration compiled (the slider-crank's compiled right-hand side; ``RK45`` of
-#: ``solve_ivp`` for the other systems)
+#: ``solve_ivp`` for the other systems, :data:`COMPILED_FALLBACK`)
 COMPILED_INTEGRATOR = "RK45-compiled"
+#: what :data:`COMPILED_INTEGRATOR` runs as where the system has no compiled integration
+COMPILED_FALLBACK = "RK45"
 #: the compiled integrator where the system has it, LSODA elsewhere: on the slider-crank
 #: as accurate as LSODA against a converged solution or more, 10-57 times less CPU
 #: (``docs/dynamics.md``), LSODA being the stiff-safe choice for every other system
@@ -67,8 +70,9 @@ class ContactImpactSettings:
         (a contact that starts with a vanishing approach velocity would have
         unbounded damping) [m/s].
     integrator : str
-        ``solve_ivp`` method, one of :data:`INTEGRATORS`; ``"auto"``: the system's
-        compiled integration where it has one, else LSODA (:meth:`integrator_for`).
+        ``solve_ivp`` method, one of :data:`INTEGRATORS`; ``"auto"`` (the default, as
+        ``dynamics.integrator``'s): the system's compiled integration where it has one,
+        else LSODA (:meth:`integrator_for`).
     rtol : float
         Relative tolerance of the integrator [-].
     atol : float
@@ -89,7 +93,7 @@ class ContactImpactSettings:
     friction_velocity_tolerance: float = 1e-4
     friction_velocity_full: float | None = None
     impact_velocity_floor: float = 1e-3
-    integrator: str = "LSODA"
+    integrator: str = AUTO_INTEGRATOR
     rtol: float = 1e-8
     atol: float = 1e-10
     separation_rtol: float = 1e-10
@@ -133,16 +137,21 @@ class ContactImpactSettings:
             raise ConfigError("dynamics.max_step: must be > 0")
 
     def integrator_for(self, system: object) -> str:
-        """The integrator that runs for ``system``: ``auto`` resolved [-].
+        """The integrator that runs for ``system``: ``auto`` and ``RK45-compiled`` resolved [-].
 
-        ``auto`` is :data:`COMPILED_INTEGRATOR` where the system integrates compiled
-        (the slider-crank's point force laws with numba: ``integrate_compiled`` and a
-        compiled right-hand side), LSODA for every other system, law or without numba.
+        The system integrates compiled where it has ``integrate_compiled`` and a compiled
+        right-hand side (the slider-crank's point force laws with numba). There ``auto``
+        and :data:`COMPILED_INTEGRATOR` are :data:`COMPILED_INTEGRATOR`; for every other
+        system, law or without numba ``auto`` is LSODA and :data:`COMPILED_INTEGRATOR`
+        is ``RK45`` of ``solve_ivp`` (:data:`COMPILED_FALLBACK`): the same pair and step
+        control, the right-hand side in Python.
         """
-        if self.integrator != AUTO_INTEGRATOR:
+        if self.integrator not in (AUTO_INTEGRATOR, COMPILED_INTEGRATOR):
             return self.integrator
         if getattr(system, "compiled", False) and hasattr(system, "integrate_compiled"):
             return COMPILED_INTEGRATOR
+        if self.integrator == COMPILED_INTEGRATOR:
+            return COMPILED_FALLBACK
         return FALLBACK_INTEGRATOR
 
     @property

@@ -124,7 +124,12 @@ def clearance_at(ex, ey, clearance, wear):
     if wear.size == 0:
         return clearance
     nodes = wear.size - 1
-    position = (math.atan2(ey, ex) % (2.0 * math.pi)) * nodes / (2.0 * math.pi)
+    angle = math.atan2(ey, ex)
+    if angle < 0.0:
+        # ``angle % (2 pi)`` for an angle in [-pi, pi]: the same one rounding of angle + 2 pi
+        # (Python's float modulo), without the call of a modulo
+        angle += 2.0 * math.pi
+    position = angle * nodes / (2.0 * math.pi)
     index = min(int(position), nodes - 1)
     fraction = position - index
     return clearance + (1.0 - fraction) * wear[index] + fraction * wear[index + 1]
