@@ -9,8 +9,9 @@ Run from the repository root::
 Each command runs as a fresh process, the commands taking turns after one warm-up run
 each; the table gives the median wall time. With ``--baseline`` every command also runs
 on the ``src`` of revision REV (unpacked from git) in the same turns, and the ratio is the
-median of the run-by-run ratios. The last column lists the heavy libraries the command
-loaded (one extra, untimed run).
+median of the run-by-run ratios. The last columns list the heavy libraries the command
+loaded, and with ``--baseline`` those the baseline loaded (one extra, untimed run each).
+Every process starts from bytecode, as an installed package does (``benchlib.environment``).
 """
 
 from __future__ import annotations
@@ -116,7 +117,10 @@ def main() -> None:
     header = ["command (paper case, one revolution)", "median wall [s]"]
     if baseline is not None:
         header += [f"baseline {args.baseline} [s]", "ratio new/baseline"]
-    table = Table(*header, "target", "heavy libraries loaded")
+    heavy_header = ["heavy libraries loaded"]
+    if baseline is not None:
+        heavy_header.append("by the baseline")
+    table = Table(*header, "target", *heavy_header)
     for name, (command, env) in commands.items():
         if name.endswith("[baseline]"):
             continue
@@ -129,7 +133,11 @@ def main() -> None:
             )
         plain = name.startswith("run, ") and "every 1" not in name and "first" not in name
         target = f"<= {TARGET} s" if plain else ""
-        table.add(*cells, target, heavy_modules(command, env))
+        loaded = [heavy_modules(command, env)]
+        if baseline is not None:
+            old_env = commands.get(f"{name} [baseline]")
+            loaded.append(heavy_modules(command, old_env[1]) if old_env else "")
+        table.add(*cells, target, *loaded)
     table.print(
         f"Whole processes, median of {repeat} interleaved runs after a warm-up. "
         f"Machine: {machine}"

@@ -6,14 +6,16 @@ modules call :func:`watch_compiles` when they are imported, before any of their
 functions is compiled, so :func:`compile_seconds` counts every compilation of the
 process (``jointwear warm-up`` compiles them all once per machine and source
 version). numba is imported only by that call: a process that never loads a
-compiled module never imports it.
+compiled module never imports it. A :class:`Clock` keeps a piece of work's wall time
+and the compiling inside it apart.
 """
 
 from __future__ import annotations
 
+import time
 from typing import Any
 
-__all__ = ["compile_seconds", "watch_compiles"]
+__all__ = ["Clock", "compile_seconds", "watch_compiles"]
 
 _listener: Any = None
 
@@ -33,3 +35,40 @@ def compile_seconds() -> float:
     if _listener is None or not _listener.done:
         return 0.0
     return float(_listener.duration)
+
+
+class Clock:
+    """Wall-clock seconds and numba's compile seconds since the clock was made [s]."""
+
+    def __init__(self) -> None:
+        self.started = time.perf_counter()
+        self.compiled_before = compile_seconds()
+
+    def elapsed(self) -> float:
+        """Wall-clock seconds since the start [s]."""
+        return time.perf_counter() - self.started
+
+    def compiling(self) -> float:
+        """Seconds numba spent compiling since the start [s]."""
+        return compile_seconds() - self.compiled_before
+
+    def times(self, compiled_earlier: float = 0.0) -> dict[str, float]:
+        """A run's times for its record (:class:`~jointwear.record.RunRecord`) [s].
+
+        Parameters
+        ----------
+        compiled_earlier : float
+            Compile seconds of the run's work before the clock started (its setup) [s].
+
+        Returns
+        -------
+        dict
+            ``runtime`` (since the start), ``compile_time`` (``compiled_earlier`` and
+            the compiling since the start) and ``compile_in_runtime`` (the latter) [s].
+        """
+        compiling = self.compiling()
+        return {
+            "runtime": self.elapsed(),
+            "compile_time": compiling + compiled_earlier,
+            "compile_in_runtime": compiling,
+        }

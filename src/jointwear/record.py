@@ -19,6 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear.state import Deferred, SimulationState
+from jointwear.tribology.checks import warn_model_validity
 from jointwear.tribology.metrics import (
     PIN_METRICS,
     WEAR_METRICS,
@@ -44,6 +45,7 @@ __all__ = [
     "RunRecord",
     "UpdateRecorder",
     "read_only_depth",
+    "run_warnings",
 ]
 
 #: the summary's wall-clock times [s]: ``runtime_s`` (the run), ``compile_time_s`` (of the
@@ -253,6 +255,37 @@ class ContactSnapshot(NamedTuple):
         return cls(solution.model, solution.pressure, half_angle)
 
 
+def run_warnings(
+    config: Config,
+    law: Any,
+    wear_depth: FloatArray,
+    solutions: tuple[ContactSolution | None, ...],
+    joint: str | None,
+    feedback: tuple[str, ...],
+) -> tuple[str, ...]:
+    """The warnings a run's record keeps: the wear's ``feedback``, then the contact
+    model's range (:func:`~jointwear.tribology.checks.warn_model_validity`, which warns).
+
+    Parameters
+    ----------
+    config : Config
+        The run's configuration.
+    law : str or law
+        The run's contact model.
+    wear_depth : ndarray
+        The final wear profile [m].
+    solutions : tuple of ContactSolution or None
+        The contact on the unworn and the final contour (``None``: not solved).
+    joint : str or None
+        The clearance joint, named in the model's messages where there are several.
+    feedback : tuple of str
+        The messages of the wear's feedback on the load (already warned).
+    """
+    where = f"joint {joint!r}: " if len(config.joints) > 1 else ""
+    said = warn_model_validity(config, law, wear_depth, solutions, where)
+    return (*feedback, *(where + message for message in said.values()))
+
+
 @dataclass(frozen=True, eq=False)
 class RunRecord:
     """The plain record of one clearance joint's run (SI units).
@@ -299,3 +332,51 @@ class RunRecord:
     compile_in_runtime: float = 0.0
     warnings: tuple[str, ...] = ()
     film: FilmRecord | None = None
+
+    @classmethod
+    def finished(
+        cls,
+        config: Config,
+        state: SimulationState,
+        cycle: LoadCycle,
+        sliding_distance: FloatArray,
+        law: Any,
+        solutions: tuple[ContactSolution | None, ContactSolution | None],
+        *,
+        joint: str | None,
+        feedback: tuple[str, ...],
+        film: FilmRecord | None,
+        times: dict[str, float],
+    ) -> RunRecord:
+        """The record of a finished run: the snapshots of its contact on the unworn and the
+        final contour (``solutions``, ``None``: not solved), the contact model's name and
+        the warnings (:func:`run_warnings`, which warns of the model's range).
+
+        Parameters
+        ----------
+        config, state, cycle, sliding_distance, film
+            As the attributes [SI units].
+        law : str or law
+            The run's contact model (its ``name`` is kept where nothing was solved).
+        solutions : (ContactSolution or None, ContactSolution or None)
+            The contact on the unworn and on the final contour.
+        joint, feedback
+            As :func:`run_warnings`.
+        times : dict
+            ``runtime``, ``compile_time`` and ``compile_in_runtime`` [s]
+            (:meth:`jointwear.compile_time.Clock.times`).
+        """
+        initial, final = solutions
+        said = run_warnings(config, law, state.wear_depth, solutions, joint, feedback)
+        return cls(
+            config,
+            state,
+            cycle,
+            sliding_distance,
+            contact_model=law.name if final is None else final.model,
+            initial=None if initial is None else ContactSnapshot.of(initial),
+            final=None if final is None else ContactSnapshot.of(final),
+            warnings=said,
+            film=film,
+            **times,
+        )

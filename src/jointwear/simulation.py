@@ -8,7 +8,6 @@ and the run ends in a plain :class:`~jointwear.record.RunRecord`, which
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
@@ -16,15 +15,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear import coupling
-from jointwear.compile_time import compile_seconds
+from jointwear.compile_time import Clock
 from jointwear.config import Config
 from jointwear.contact import ContactSolution
 from jointwear.contact.solver import ContactSolver, WarmStart
 from jointwear.errors import ConfigError
 from jointwear.geometry.contour import BushingContour
-from jointwear.record import ContactSnapshot, RunRecord, UpdateRecorder
+from jointwear.record import RunRecord, UpdateRecorder
 from jointwear.state import SimulationState
-from jointwear.tribology.checks import warn_model_validity
 from jointwear.tribology.pin_wear import pin_wear_depth
 from jointwear.tribology.wear_laws import WearLaw
 from jointwear.tribology.wear_laws import wear_law as wear_law_of
@@ -76,7 +74,7 @@ class Simulation:
         joint: str | None = None,
         wear_law: str | WearLaw | None = None,
     ) -> None:
-        compiled_before = compile_seconds()
+        setup = Clock()
         self.config = config
         self.wear_law = wear_law_of(config.wear, config.wearing_bushing, wear_law)
         self.contact_model = config.contact.model if contact_model is None else contact_model
@@ -89,10 +87,6 @@ class Simulation:
             self.solver = SlicedSolver.from_config(config, self.solver)
         self.law, self.pin = self.solver.law, self.solver.pin
         self.parameters = self.solver.parameters
-        if joint is not None and joint not in config.joints:
-            from jointwear.registry import suggest
-
-            raise ConfigError(f"joint: no clearance joint {joint!r}{suggest(joint, config.joints)}")
         self.load = coupling.JointLoad(config, joint, load_cycle)
         self.joint = self.load.joint
         self.pin_wear_coefficient = config.materials.pin.wear_coefficient
@@ -101,7 +95,7 @@ class Simulation:
         self.recorder = UpdateRecorder(config, self.life.joint)
         self.feedback = coupling.FeedbackWarnings(config.joint.clearance)
         #: numba's compile seconds while setting up (the load cycle's dynamics) [s]
-        self.setup_compile_time = compile_seconds() - compiled_before
+        self.setup_compile_time = setup.compiling()
 
     @property
     def load_cycle(self) -> LoadCycle:
@@ -191,14 +185,12 @@ class Simulation:
                 "simulation.checkpoint_every: checkpoints hold one clearance joint; give "
                 "mechanism.clearance_joint a single joint to checkpoint"
             )
-        start, compiled_before = time.perf_counter(), compile_seconds()
+        clock = Clock()
         records = [
             self._joint_run(joint, cycle).record(progress, pressures=pressures)
             for joint, cycle in self.load.cycles.items()
         ]
-        compiling = compile_seconds() - compiled_before
-        timing = (compiling + self.setup_compile_time, compiling)
-        return WearResult.of_joints(self.config, records, time.perf_counter() - start, timing)
+        return WearResult.of_joints(self.config, records, **clock.times(self.setup_compile_time))
 
     def _joint_run(self, joint: str, cycle: LoadCycle) -> Simulation:
         """One of several joints' runs from its unworn ``cycle`` (coupled: solved again)."""
@@ -219,7 +211,7 @@ class Simulation:
     ) -> RunRecord:
         """The loop over the revolutions of one clearance joint, as a plain record
         (the parameters of :meth:`run`)."""
-        start = (time.perf_counter(), compile_seconds())
+        clock = Clock()
         state = self.initial_state() if state is None else state
         self.config = self.load.resume(state)
         total = self.config.simulation.revolutions
@@ -238,7 +230,7 @@ class Simulation:
         if progress is not None:
             end = total if state.stopped_by is None else state.revolution
             progress(end, end)
-        return self._finish(state, first, pressures, start)
+        return self._finish(state, first, pressures, clock)
 
     def step(self, state: SimulationState) -> SimulationState:
         """One contour update (:func:`~jointwear.coupling.next_step`), and the dynamics
@@ -276,38 +268,23 @@ class Simulation:
         return state, solved.solution
 
     def _finish(
-        self,
-        state: SimulationState,
-        first: ContactSolution | None,
-        pressures: bool,
-        start: tuple[float, float],
+        self, state: SimulationState, first: ContactSolution | None, pressures: bool, clock: Clock
     ) -> RunRecord:
         """The record of the run: the contact on the unworn and the final contour (unless
-        ``pressures`` is false), said to stay in the model's range; ``start`` is the loop's
-        wall clock and compile seconds when it began [s]."""
+        ``pressures`` is false), said to stay in the model's range; ``clock`` started with
+        the loop."""
         initial = final = None
         if pressures:
             initial = final = first
             if first is None:
                 final = self.contact(self.solver.contour(state.wear_depth))
                 initial = self.solver.solve(self.initial_contour(), self.load.unworn(state))
-        compiling = compile_seconds() - start[1]
-        where = f"joint {self.joint!r}: " if len(self.config.joints) > 1 else ""
-        said = warn_model_validity(self.config, self.law, state.wear_depth, (initial, final), where)
-        return RunRecord(
-            self.config,
-            state,
-            self.load_cycle,
-            self.sliding_distance,
-            contact_model=self.law.name if final is None else final.model,
-            initial=None if initial is None else ContactSnapshot.of(initial),
-            final=None if final is None else ContactSnapshot.of(final),
-            runtime=time.perf_counter() - start[0],
-            compile_time=compiling + self.setup_compile_time,
-            compile_in_runtime=compiling,
-            warnings=(*self.feedback.messages, *(where + m for m in said.values())),
+        return RunRecord.finished(
+            self.config, state, self.load_cycle, self.sliding_distance, self.law, (initial, final),
+            joint=self.joint, feedback=self.feedback.messages,
             film=self.solver.film_record(self.load_cycle),
-        )
+            times=clock.times(self.setup_compile_time),
+        )  # fmt: skip
 
     def _rate_at(
         self, state: SimulationState | None, wear_depth: FloatArray, ahead: int

@@ -62,6 +62,11 @@ def test_plain_run_imports_no_dataset_plotting_or_compiler_library(
     assert not heavy(modules)
     # one revolution plans two contact solves: the NumPy kernel, numba never loaded
     assert "numba" not in modules
+    # a JSON summary prints through no rich console (a warning does: Hertz's range here);
+    # a slider-crank loads no other mechanism
+    assert ("rich" in modules) == (model == "hertz")
+    others = ("jointwear.mechanism.four_bar", "jointwear.mechanism.oscillating")
+    assert not [m for m in modules if m.startswith(others)]
 
 
 def test_short_contact_impact_run_does_not_load_numba(paper_config_path, tmp_path):

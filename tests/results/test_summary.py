@@ -57,11 +57,11 @@ def test_compile_time_is_reported_apart_from_the_run_time(paper_config, monkeypa
     the loop's in ``compile_time_s``, the loop's taken off ``runtime_s``; kept by the file."""
     from itertools import count
 
-    from jointwear import simulation
+    from jointwear import compile_time
     from jointwear.results.wear_result import read_wear_result
 
     readings = count()
-    monkeypatch.setattr(simulation, "compile_seconds", lambda: float(next(readings)))
+    monkeypatch.setattr(compile_time, "compile_seconds", lambda: float(next(readings)))
     config = paper_config.replace({"simulation.steps_per_revolution": 60})
     result = Simulation(config).run(pressures=False)
     summary = result.summary()

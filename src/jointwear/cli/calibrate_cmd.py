@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
-from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
@@ -17,6 +16,9 @@ from jointwear.cli.common import (
     console,
     emit_json,
 )
+
+if TYPE_CHECKING:
+    from rich.table import Table
 
 CalConfigArg = Annotated[
     Path | None,
@@ -177,6 +179,8 @@ def calibrate(
 
 def print_measured(summary: dict[str, Any], title: str) -> None:
     """The fitted parameters, their intervals, the residual and each case at the fit."""
+    from rich.table import Table
+
     from jointwear.measurement.parameter_fit import PARAMETER_ALIASES
 
     console.print(_parameter_table(summary["parameters"], title))
@@ -223,6 +227,8 @@ def print_measured(summary: dict[str, Any], title: str) -> None:
 
 def print_paper_row(summary: dict[str, Any], json_: bool) -> None:
     """The fitted parameters and the paper's metrics beside the calibrated model's."""
+    from rich.table import Table
+
     from jointwear.paper.cases import PAPER_ROWS
 
     if json_:
@@ -271,6 +277,8 @@ def print_contact_laws(laws: Any, loads: str, json_: bool) -> None:
 
 
 def _parameter_table(parameters: dict[str, dict[str, Any]], title: str) -> Table:
+    from rich.table import Table
+
     from jointwear.measurement.parameter_fit import PARAMETER_ALIASES
 
     short = {key: name for name, key in PARAMETER_ALIASES.items()}

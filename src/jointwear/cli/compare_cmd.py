@@ -4,10 +4,9 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
-from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
@@ -18,6 +17,9 @@ from jointwear.cli.common import (
     console,
     emit_json,
 )
+
+if TYPE_CHECKING:
+    from rich.table import Table
 
 ResultArg = Annotated[
     Path,
@@ -132,6 +134,8 @@ def compare(
 
 
 def _table(summary: dict[str, Any], measured: Path, result: Path) -> Table:
+    from rich.table import Table
+
     table = Table(
         title=f"compare: {measured.name} ({summary['fit']} fit, {summary['points']} points) "
         f"vs {result.name} (revolution {summary['revolution']})"

@@ -7,8 +7,6 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
-from rich.markup import escape
-from rich.table import Table
 
 from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json
 
@@ -80,6 +78,9 @@ def compare_models_command(
 
 def print_tables(comparison: Any, reference: str) -> None:
     """One table per metric: each model's value at each load, and its deviation."""
+    from rich.markup import escape
+    from rich.table import Table
+
     from jointwear.references.compare import METRICS
 
     deviation = comparison.deviation(reference)

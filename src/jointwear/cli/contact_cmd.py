@@ -5,8 +5,6 @@ from __future__ import annotations
 from typing import Annotated
 
 import typer
-from rich.markup import escape
-from rich.table import Table
 
 from jointwear.cli.common import ConfigArg, JsonOpt, SetOpt, app, console, emit_json
 from jointwear.contact import CONTACT_MODELS, MODEL_DESCRIPTIONS
@@ -26,6 +24,9 @@ def contact(
     json_: JsonOpt = False,
 ) -> None:
     """Pressure distribution for one load on the unworn bushing."""
+    from rich.markup import escape
+    from rich.table import Table
+
     from jointwear.workflows.contact_models import contact_on_unworn_bushing
 
     done = contact_on_unworn_bushing(config, load_, azimuth, model=model, overrides=set_ or [])
@@ -57,6 +58,9 @@ def contact(
 @app.command()
 def models(json_: JsonOpt = False) -> None:
     """List the contact models."""
+    from rich.markup import escape
+    from rich.table import Table
+
     names = CONTACT_MODELS.names()
     if json_:
         emit_json({"contact_models": {n: MODEL_DESCRIPTIONS.get(n, "") for n in names}})

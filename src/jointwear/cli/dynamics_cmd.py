@@ -6,7 +6,6 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
-from rich.table import Table
 
 from jointwear.cli.common import (
     ConfigArg,
@@ -97,6 +96,8 @@ def dynamics(
     strict: StrictOpt = False,
 ) -> None:
     """Load cycle of each clearance joint: load, its azimuth on the bushing, relative rotation."""
+    from rich.table import Table
+
     from jointwear.workflows.dynamics import joint_load_cycles
 
     def show(messages: list[str]) -> None:
@@ -136,6 +137,7 @@ def mechanisms(json_: JsonOpt = False) -> None:
     and the keys of the joint itself ([joint], with the slices along the pin; [pin];
     [lubrication])."""
     from rich.markup import escape
+    from rich.table import Table
 
     from jointwear.config import MECHANISM_TYPES
     from jointwear.config.schema import ConfigSchema

@@ -6,7 +6,6 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
@@ -113,6 +112,8 @@ def life(
 
 def print_summary(summary: dict, name: str, out: Path) -> None:
     """The life quantiles, the censored cases, the material limits and the sensitivity."""
+    from rich.table import Table
+
     from jointwear.workflows.life import shown
 
     table = Table(
@@ -154,6 +155,8 @@ def print_summary(summary: dict, name: str, out: Path) -> None:
 
 def print_reliability(reliability: dict) -> None:
     """B10 and B50 with their bounds, the Weibull fit and the probability of each limit."""
+    from rich.table import Table
+
     from jointwear.workflows.life import shown
 
     level = f"{reliability['confidence']:.0%}"

@@ -5,10 +5,6 @@ from __future__ import annotations
 from typing import Annotated
 
 import typer
-from rich import box
-from rich.console import Console
-from rich.markup import escape
-from rich.table import Table
 
 from jointwear.cli.common import JsonOpt, app, console, emit_json
 
@@ -22,6 +18,11 @@ def materials(
     json_: JsonOpt = False,
 ) -> None:
     """List the materials library ([materials] bushing = "NAME"): values, limits, sources."""
+    from rich import box
+    from rich.console import Console
+    from rich.markup import escape
+    from rich.table import Table
+
     from jointwear.materials import (
         OVERVIEW,
         TABLE_KEY,

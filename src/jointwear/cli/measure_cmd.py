@@ -5,7 +5,6 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Annotated
 
 import typer
-from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
@@ -18,6 +17,9 @@ from jointwear.cli.common import (
     emit_json,
 )
 from jointwear.measurement.profile import PROFILE_METHODS
+
+if TYPE_CHECKING:
+    from rich.table import Table
 
 if TYPE_CHECKING:
     from jointwear.workflows.measured import MeasuredBushing
@@ -104,6 +106,8 @@ def measure(
 
 
 def _table(done: MeasuredBushing, name: str) -> Table:
+    from rich.table import Table
+
     results = done.fits
     title = f"measure: {name}, {done.points} points, R0 = {done.radius * 1e3:g} mm"
     table = Table(title=title)

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
-from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
@@ -20,6 +19,9 @@ from jointwear.cli.common import (
     emit_json,
 )
 from jointwear.cli.progress import ProgressBar, run_ends
+
+if TYPE_CHECKING:
+    from rich.table import Table
 
 OutOpt = Annotated[
     Path | None,
@@ -40,6 +42,8 @@ def end_lines(summary: dict) -> list[str]:
 
 
 def summary_table(summary: dict, title: str) -> Table:
+    from rich.table import Table
+
     from jointwear.display import revolutions_text
 
     table = Table(title=title)

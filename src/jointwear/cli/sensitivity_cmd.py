@@ -6,7 +6,6 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.table import Table
 
 from jointwear.cli.common import (
     ConfigArg,
@@ -105,6 +104,8 @@ def sensitivity(
 
 def print_indices(summary: dict, out: Path | None) -> None:
     """The indices of each input as a table, and where the files are."""
+    from rich.table import Table
+
     columns = ("S1", "S1_conf", "ST", "ST_conf")
     if summary["method"] == "morris":
         columns = ("mu_star", "mu_star_conf", "sigma")

@@ -6,7 +6,6 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.table import Table
 
 from jointwear.cli.common import (
     JsonOpt,
@@ -98,6 +97,8 @@ def sweep(
 
 def print_summary(summary: dict, records: list[dict], out: Path) -> None:
     """The sweep's counts, the cases beyond a material limit and the failed cases."""
+    from rich.table import Table
+
     counts = f"{summary['ok']} ok, {summary['failed']} failed"
     if summary["errors"]:
         counts += f", {summary['errors']} internal errors"

@@ -27,6 +27,7 @@ from numpy.typing import NDArray
 
 from jointwear.errors import ConfigError
 from jointwear.mechanism.stage import load_cycles
+from jointwear.registry import suggest
 from jointwear.tribology.pin_wear import pin_on_bushing
 from jointwear.tribology.sliding import SLIDING_MODELS
 
@@ -353,9 +354,16 @@ class JointLoad:
         The clearance joint (``None``: every joint of the mechanism).
     given : LoadCycle, optional
         A precomputed load cycle, never solved again.
+
+    Raises
+    ------
+    ConfigError
+        If ``joint`` names no clearance joint of the mechanism.
     """
 
     def __init__(self, config: Config, joint: str | None, given: LoadCycle | None = None) -> None:
+        if joint is not None and joint not in config.joints:
+            raise ConfigError(f"joint: no clearance joint {joint!r}{suggest(joint, config.joints)}")
         self.config = config
         self.joint = joint or (None if given is None else given.joint)
         self.given = given is not None

@@ -34,11 +34,8 @@ from numpy.typing import NDArray
 from jointwear.config import MECHANISM_TYPES
 from jointwear.errors import ConfigError
 from jointwear.mechanism.cycle import LoadCycle
-from jointwear.mechanism.four_bar import FOUR_BAR
-from jointwear.mechanism.history import LOAD_HISTORY
 from jointwear.mechanism.impact.revolution import ContactImpactSolution
 from jointwear.mechanism.inputs import MechanismInputs
-from jointwear.mechanism.oscillating import OSCILLATING
 from jointwear.mechanism.slider_crank import SLIDER_CRANK
 from jointwear.registry import Registry
 
@@ -116,10 +113,11 @@ class ContactImpactMechanism(Mechanism, Protocol):
 #: ``mechanism.type`` -> :class:`Mechanism`; its names are those of the config schema
 MECHANISMS: Registry[Mechanism] = Registry("mechanism type", "mechanism.type")
 MECHANISMS.add("slider-crank", SLIDER_CRANK)
-MECHANISMS.add("four-bar", FOUR_BAR)
-MECHANISMS.add("oscillating", OSCILLATING)
-MECHANISMS.add("load-history", LOAD_HISTORY)
-# (its modes are solved through cycles_of below: a lazy entry, not an import cycle)
+# (imported when a run names them: a slider-crank run loads no other mechanism's modules;
+# the duty cycle's modes are solved through cycles_of below, a lazy entry, not a cycle)
+MECHANISMS.add_lazy("four-bar", "jointwear.mechanism.four_bar:FOUR_BAR")
+MECHANISMS.add_lazy("oscillating", "jointwear.mechanism.oscillating:OSCILLATING")
+MECHANISMS.add_lazy("load-history", "jointwear.mechanism.history:LOAD_HISTORY")
 MECHANISMS.add_lazy("duty-cycle", "jointwear.mechanism.duty_cycle:DUTY_CYCLE")
 if set(MECHANISMS) != set(MECHANISM_TYPES):  # pragma: no cover - a programming error
     raise RuntimeError("mechanism registry and config schema disagree on the type names")

@@ -245,9 +245,9 @@ def _pressure_variables(record: RunRecord) -> tuple[dict[str, ResultVariable], R
     """Pressure snapshots of the unworn and the final contour (:data:`PRESSURE_SNAPSHOTS`
     steps), the mean contact half-angle on the unworn bushing, and the snapshots' phase."""
     initial, final, steps = record.initial, record.final, record.cycle.steps
-    snapshot = np.unique(
-        np.linspace(0, steps, min(PRESSURE_SNAPSHOTS, steps), endpoint=False).astype(int)
-    )
+    # at most one point per step: distinct and increasing as they are (np.unique would
+    # only add the import of numpy.ma to a run's start)
+    snapshot = np.linspace(0, steps, min(PRESSURE_SNAPSHOTS, steps), endpoint=False).astype(int)
     variables = {
         "pressure_initial": _var(
             ("snapshot", "theta"),

@@ -92,7 +92,8 @@ class WearResult:
         config: Config,
         records: Sequence[RunRecord],
         runtime: float,
-        compiling: tuple[float, float] = (0.0, 0.0),
+        compile_time: float = 0.0,
+        compile_in_runtime: float = 0.0,
     ) -> WearResult:
         """The result of several clearance joints, each its own run, along ``joint``.
 
@@ -104,13 +105,14 @@ class WearResult:
             Each joint's record.
         runtime : float
             Wall-clock time of all the runs [s].
-        compiling : (float, float)
-            numba's compile seconds of the whole mechanism's work (set-up included) and
-            of them those inside ``runtime`` [s].
+        compile_time : float
+            numba's compile seconds of the whole mechanism's work, set-up included [s].
+        compile_in_runtime : float
+            Of ``compile_time``, the seconds inside ``runtime`` [s].
         """
         dataset = combine_joints([build_contents(r).to_dataset() for r in records])
-        dataset.attrs["compile_time_s"] = compiling[0]
-        dataset.attrs["runtime_without_compile_s"] = runtime - compiling[1]
+        dataset.attrs["compile_time_s"] = compile_time
+        dataset.attrs["runtime_without_compile_s"] = runtime - compile_in_runtime
         said = tuple(message for record in records for message in record.warnings)
         return cls(config, dataset, runtime, warnings=said)
 

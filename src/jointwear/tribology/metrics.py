@@ -255,7 +255,8 @@ def _widths(depth: np.ndarray, peak: np.ndarray, threshold: float) -> np.ndarray
     # in another order)
     total = np.zeros(rows.shape[0])
     start = np.concatenate(([0], np.cumsum(count)[:-1]))
-    for size in np.unique(count[count > 0]).tolist():
+    # (sorted(set()) of a few counts: np.unique would import numpy.ma at a run's start)
+    for size in sorted(set(count[count > 0].tolist())):
         members = np.flatnonzero(count == size)
         total[members] = fraction[start[members, None] + np.arange(size)].sum(axis=1)
     width = (both + total) * 2 * np.pi / nodes
