@@ -234,8 +234,9 @@ class DynamicsConfig(Section):
     integrator: Literal["auto", "LSODA", "Radau", "BDF", "RK45", "DOP853", "RK45-compiled"] = "auto"
     rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
     atol: Annotated[float, Field(gt=0)] = 1e-10
-    # a flying, impacting pin is tolerance-sensitive: rtol 1e-8 is off by percents there
-    separation_rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-10
+    # a flying, impacting pin is tolerance-sensitive: rtol 1e-8 is off by percents there;
+    # None: 1e-10 for one solve, the run's rtol for the solves of a coupled run
+    separation_rtol: Annotated[float, Field(gt=0, lt=1)] | None = None
     revolutions_settle: Annotated[int, Field(ge=0, le=10_000)] = 2
     max_step: Annotated[Annotated[float, Field(gt=0)] | None, si("time")] = None
 

@@ -41,6 +41,7 @@ __all__ = [
     "DYNAMICS_COLUMNS",
     "DynamicsSchedule",
     "JointLoad",
+    "coupled_dynamics",
     "dynamics_row",
     "load_change",
     "wear_signature",
@@ -253,6 +254,33 @@ class DynamicsSchedule:
         )
 
 
+def coupled_dynamics(config: Config) -> Config:
+    """The configuration a coupled run solves its dynamics with.
+
+    A solve in which the pin leaves the wall is integrated again at the tighter
+    ``dynamics.separation_rtol`` (1e-10 unless given,
+    :data:`~jointwear.mechanism.impact.settings.SEPARATION_RTOL`): a single solve's
+    wear per revolution needs it. A coupled run's accumulated wear does not: its
+    separating trajectory is not periodic, and what moves it by a rounding error (the
+    tolerance 1.1e-12 instead of 1e-12, a third settling revolution) moves the peak wear
+    of the separation-prone slider-crank's 10^5 revolutions by up to 2.6e-3 at any
+    tolerance. At the run's ``rtol`` (1e-8, one pass per solve) the peak wear lies 9.4e-4
+    from that of rtol 1e-12, inside that scatter, at half the CPU
+    (``docs/wear-feedback.md``, *How well a separating run is defined*). So, unless
+    ``dynamics.separation_rtol`` is given, a coupled run's solves keep its ``rtol``; a run
+    whose pin stays on the wall integrates the same either way.
+
+    Parameters
+    ----------
+    config : Config
+        The run's configuration.
+    """
+    dynamics = config.dynamics
+    if dynamics.separation_rtol is not None or config.simulation.dynamics_update == "once":
+        return config
+    return config.replace({"dynamics.separation_rtol": dynamics.rtol})
+
+
 def worn_cycle(config: Config, joint: str | None, wear_depth: FloatArray) -> LoadCycle:
     """The load cycle of the joint worn by ``wear_depth`` (the dynamics on the worn joint).
 
@@ -370,12 +398,20 @@ class JointLoad:
         self.schedule = DynamicsSchedule.from_config(config)
         self._cycles = None if given is None else {self.joint: given}
         self._sliding: tuple[LoadCycle, FloatArray] | None = None
+        self._solving: tuple[Config, Config] | None = None
+
+    @property
+    def solving(self) -> Config:
+        """The configuration the dynamics are solved with (:func:`coupled_dynamics`)."""
+        if self._solving is None or self._solving[0] is not self.config:
+            self._solving = (self.config, coupled_dynamics(self.config))
+        return self._solving[1]
 
     @property
     def cycles(self) -> dict[str, LoadCycle]:
         """The load cycle of every clearance joint (of the unworn joints until replaced)."""
         if self._cycles is None:
-            cycles = load_cycles(self.config)
+            cycles = load_cycles(self.solving)
             self._cycles = cycles if self.joint is None else {self.joint: cycles[self.joint]}
         return self._cycles
 
@@ -438,7 +474,7 @@ class JointLoad:
         """Wear under the load ``state`` was running with (a resumed run); the run's
         configuration with the steps the cycle really has."""
         if state.load_depth is not None and not self.given:
-            self.use(worn_cycle(self.config, self.joint, state.load_depth))
+            self.use(worn_cycle(self.solving, self.joint, state.load_depth))
         steps = self.cycle.steps
         if steps != self.config.simulation.steps_per_revolution and not self.cycle.duty:
             # a load history brings its own steps: the config says what really ran
@@ -449,7 +485,7 @@ class JointLoad:
         """The load cycle of the unworn joint (``state``'s own if never solved again)."""
         if state.load_depth is None or self.given:
             return self.cycle
-        return worn_cycle(self.config, self.joint, np.zeros_like(state.wear_depth))
+        return worn_cycle(self.solving, self.joint, np.zeros_like(state.wear_depth))
 
     def due_in(self, state: SimulationState) -> int | None:
         """Revolutions until the dynamics are due again at the state's wear rate [-]
@@ -475,7 +511,7 @@ class JointLoad:
         if self.given:
             return replace(state, updates_since_dynamics=0)
         old = self.cycle
-        self.use(worn_cycle(self.config, self.joint, state.wear_depth))
+        self.use(worn_cycle(self.solving, self.joint, state.wear_depth))
         change = load_change(old, self.cycle)
         return self.record(schedule.solved(state, change, clearance), change, feedback)
 

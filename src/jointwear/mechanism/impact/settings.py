@@ -22,6 +22,7 @@ __all__ = [
     "COMPILED_INTEGRATOR",
     "FALLBACK_INTEGRATOR",
     "INTEGRATORS",
+    "SEPARATION_RTOL",
     "ContactImpactSettings",
 ]
 
@@ -47,6 +48,13 @@ INTEGRATORS: tuple[str, ...] = (
     COMPILED_INTEGRATOR,
     AUTO_INTEGRATOR,
 )
+
+
+#: ``dynamics.separation_rtol`` of a solve of its own (``jointwear dynamics``, the load of
+#: an uncoupled run) unless given: a separating solve's wear per revolution within
+#: 1.5e-4-4e-4 of a converged one (:attr:`ContactImpactSettings.separated_tolerances`);
+#: the solves of a coupled run keep the run's ``rtol`` (``docs/wear-feedback.md``)
+SEPARATION_RTOL = 1e-10
 
 
 @dataclass(frozen=True)
@@ -96,7 +104,7 @@ class ContactImpactSettings:
     integrator: str = AUTO_INTEGRATOR
     rtol: float = 1e-8
     atol: float = 1e-10
-    separation_rtol: float = 1e-10
+    separation_rtol: float = SEPARATION_RTOL
     revolutions_settle: int = 2
     max_step: float | None = None
 
@@ -193,7 +201,9 @@ class ContactImpactSettings:
             integrator=dynamics.integrator,
             rtol=dynamics.rtol,
             atol=dynamics.atol,
-            separation_rtol=dynamics.separation_rtol,
+            separation_rtol=(
+                SEPARATION_RTOL if dynamics.separation_rtol is None else dynamics.separation_rtol
+            ),
             revolutions_settle=dynamics.revolutions_settle,
             max_step=dynamics.max_step,
         )
