@@ -264,11 +264,12 @@ def coupled_dynamics(config: Config) -> Config:
     separating trajectory is not periodic, and what moves it by a rounding error (the
     tolerance 1.1e-12 instead of 1e-12, a third settling revolution) moves the peak wear
     of the separation-prone slider-crank's 10^5 revolutions by up to 2.6e-3 at any
-    tolerance. At the run's ``rtol`` (1e-8, one pass per solve) the peak wear lies 9.4e-4
-    from that of rtol 1e-12, inside that scatter, at half the CPU
+    tolerance. At the run's ``rtol`` (1e-8, one pass per solve) the peak wear lies 9.5e-4
+    from that of rtol 1e-12, inside that scatter, at 0.6 of the run's CPU
     (``docs/wear-feedback.md``, *How well a separating run is defined*). So, unless
     ``dynamics.separation_rtol`` is given, a coupled run's solves keep its ``rtol``; a run
-    whose pin stays on the wall integrates the same either way.
+    whose pin stays on the wall integrates the same either way. (Each solve's recorded
+    peak contact force is then that of its ``rtol``: give 1e-10 where those matter.)
 
     Parameters
     ----------
