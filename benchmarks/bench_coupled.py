@@ -18,9 +18,14 @@ cache loads and outputs included), the variants taking turns; the table gives me
 of wall and CPU time (the process's user + system time, ``RUSAGE_CHILDREN``). The life
 row runs ``jointwear life`` on the same case (the wear coefficient lognormal, the
 clearance uniform, life to 0.15 mm of wear) with ``--workers 2`` and extrapolates the
-200-case time linearly in the cases. The machine is shared: read the CPU times, and
-the load average printed with the table. The results and where the time goes:
-``docs/performance.md``, *The whole run* (the run ~9.7 s of CPU, ~6.2 s a life case).
+200-case time linearly in the cases; with ``--baseline`` the revisions take turns with
+this tree in the life rows too. The machine is shared: read the CPU times, and the load
+average printed with the table. The results and where the time goes:
+``docs/performance.md``, *The whole run*. Measured (``--repeat 7 --life-repeat 3
+--baseline 502034c``, one run, load average 2-7): the run 5.07 s of CPU against 8.64 s
+(0.59x; the separating solves of a coupled run integrated once at its rtol,
+``docs/wear-feedback.md``), a life case 2.56 s against 5.38 s (0.48x), 200 cases ~256 s
+on two free cores against ~538 s.
 """
 
 from __future__ import annotations
@@ -114,30 +119,36 @@ def bench_run(variants: dict[str, Path], repeat: int, table: Table) -> None:
         )
 
 
-def bench_life(cases: int, repeat: int, table: Table) -> None:
-    """``jointwear life`` on the case with two workers, extrapolated to 200 cases."""
-    env = environment(SRC)
-    walls, cpus, lives = [], [], None
+def bench_life(variants: dict[str, Path], cases: int, repeat: int, table: Table) -> None:
+    """``jointwear life`` on the case with two workers per variant, taking turns,
+    extrapolated to 200 cases."""
+    envs = {name: environment(src) for name, src in variants.items()}
+    walls: dict[str, list[float]] = {name: [] for name in variants}
+    cpus: dict[str, list[float]] = {name: [] for name in variants}
+    lives: dict[str, dict] = {}
     for _ in range(repeat):
-        with tempfile.TemporaryDirectory(prefix="jointwear-life-") as folder:
-            wall, cpu, out = timed(life_command(cases, Path(folder) / "life"), env)
-        walls.append(wall)
-        cpus.append(cpu)
-        lives = json.loads(out)
-    wall, cpu = median(walls), median(cpus)
-    b50 = (lives or {}).get("b50_revolutions")
-    median_life = "?" if b50 is None else f"{b50:.0f} revolutions"
-    table.add(
-        f"life distribution, {cases} cases on 2 workers (`jointwear life`)",
-        f"{wall:.1f} s wall, {cpu:.1f} s CPU, {cpu / cases:.2f} s CPU a case (B50 {median_life})",
-        "",
-    )
-    table.add(
-        f"life distribution, {LIFE_CASES} cases on 2 workers, extrapolated",
-        f"{wall * LIFE_CASES / cases:.0f} s wall as measured; "
-        f"{cpu * LIFE_CASES / cases / 2:.0f} s on two free cores (CPU / 2)",
-        f"<= {LIFE_TARGET:g} s",
-    )
+        for name, env in envs.items():
+            with tempfile.TemporaryDirectory(prefix="jointwear-life-") as folder:
+                wall, cpu, out = timed(life_command(cases, Path(folder) / "life"), env)
+            walls[name].append(wall)
+            cpus[name].append(cpu)
+            lives[name] = json.loads(out)
+    for name in variants:
+        wall, cpu = median(walls[name]), median(cpus[name])
+        b50 = lives[name].get("b50_revolutions")
+        median_life = "?" if b50 is None else f"{b50:.0f} revolutions"
+        table.add(
+            f"life distribution, {cases} cases on 2 workers (`jointwear life`, {name})",
+            f"{wall:.1f} s wall, {cpu:.1f} s CPU, {cpu / cases:.2f} s CPU a case "
+            f"(B50 {median_life})",
+            "",
+        )
+        table.add(
+            f"life distribution, {LIFE_CASES} cases on 2 workers, extrapolated ({name})",
+            f"{wall * LIFE_CASES / cases:.0f} s wall as measured; "
+            f"{cpu * LIFE_CASES / cases / 2:.0f} s on two free cores (CPU / 2)",
+            f"<= {LIFE_TARGET:g} s",
+        )
 
 
 def main() -> None:
@@ -158,7 +169,8 @@ def main() -> None:
     if "run" in args.only:
         bench_run(variants, repeat, table)
     if "life" in args.only:
-        bench_life(args.cases or (6 if args.quick else 20), args.life_repeat or repeat, table)
+        cases = args.cases or (6 if args.quick else 20)
+        bench_life(variants, cases, args.life_repeat or repeat, table)
     print(f"Machine at start: {start}\nMachine at end: {describe_machine()}\n")
     table.print("Coupled contact-impact runs (medians; CPU = user + system of the process)")
 
