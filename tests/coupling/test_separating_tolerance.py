@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from jointwear import Simulation
+from jointwear.checkpoint import load_checkpoint
 from jointwear.config import Config
 from jointwear.coupling.dynamics import JointLoad, coupled_dynamics
 from jointwear.errors import WearFeedbackWarning
@@ -24,6 +25,7 @@ from jointwear.mechanism.slider_crank.contact_impact import impact_kernel
 from jointwear.results.summary import WALL_CLOCK_KEYS
 
 from ..mechanism.slider_crank.test_contact_impact_rk import SEPARATION_PRONE
+from ..test_checkpoint import assert_same_dataset, interrupted_run
 
 #: the benchmark's run: contact-impact, compiled, 10^5 revolutions, adaptive coupling
 COUPLED = {
@@ -89,6 +91,31 @@ def test_a_coupled_joint_on_the_wall_keeps_its_numbers(paper_config: Config) -> 
     tight = Simulation(given).run().summary()
     assert default["dynamics_updates"] >= 2
     assert tight == {**default, **{key: tight[key] for key in WALL_CLOCK_KEYS}}
+
+
+@pytest.mark.skipif(impact_kernel() is None, reason="needs numba")
+@pytest.mark.filterwarnings("ignore::jointwear.errors.WearFeedbackWarning")
+def test_a_separating_coupled_run_resumes_bitwise(paper_config: Config, tmp_path) -> None:
+    # the default travels through the checkpoint: the resumed solves integrate as before
+    config = paper_config.replace(
+        {
+            **COUPLED,
+            "simulation.steps_per_revolution": 90,
+            "contact.nodes": 120,
+            "materials.bushing.wear_coefficient": 5e-11,
+            "simulation.revolutions": 200,
+            "simulation.update_every": 25,
+            "simulation.dynamics_update": 2,
+            "simulation.checkpoint_every": 25,
+        }
+    )
+    reference = Simulation(config).run()
+    assert reference.dataset["dynamics_impacts"].values.max() > 0
+    interrupted_run(config, tmp_path, 110)
+    resumed_config, state, saver = load_checkpoint(tmp_path)
+    assert resumed_config.dynamics.separation_rtol is None
+    resumed = Simulation(resumed_config).run(state=state, on_step=saver)
+    assert_same_dataset(reference.dataset, resumed.dataset)
 
 
 @pytest.mark.skipif(impact_kernel() is None, reason="needs numba")
