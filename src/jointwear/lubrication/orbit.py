@@ -110,6 +110,13 @@ ROUND_OFF = 1e-12
 #: the periodicity tolerance scales with the smallest gap, but not below this many
 #: roughnesses (the asperity pressure varies on the scale of sigma)
 GAP_FLOOR = 1.0
+#: a search that carries the pin closer to the wall than this many roughnesses has put
+#: it on the wall (:func:`wall_orbit`): the film's share of the load is nil there
+WALL_FILM_PARAMETER = 0.05
+#: the gap of a pin on the wall, over the clearance [-]
+WALL_GAP = 1e-9
+#: the first steps along the wall that bracket the pin's resting angle [rad]
+WALL_STEP = 0.05
 #: the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`), imported on first use
 _KERNEL: Any = None
 
@@ -524,6 +531,20 @@ def unstretched(stretched_state: ArrayLike) -> FloatArray:
     return q / (1.0 + np.hypot(q[0], q[1]))
 
 
+class PinOnWall(Exception):
+    """A cycle of the orbit's search came closer to the wall than ``CycleMap.wall_gap``.
+
+    Parameters
+    ----------
+    path : ndarray, shape (2, M + 1)
+        That cycle's path in the stretched coordinate [-].
+    """
+
+    def __init__(self, path: FloatArray) -> None:
+        super().__init__("the pin reached the wall")
+        self.path = path
+
+
 class CycleMap:
     """One cycle of the orbit, integrated in the stretched coordinate (:func:`stretched`).
 
@@ -582,6 +603,8 @@ class CycleMap:
         #: the relative tolerance of the integration, and that of the last cycle
         self.rtol = INTEGRATION_RTOL
         self.path_rtol = math.nan
+        #: a cycle whose least gap ``1 - eps`` falls below this raises :class:`PinOnWall`
+        self.wall_gap = 0.0
 
     def right_hand_side(self, t: float, stretched_state: FloatArray) -> FloatArray:
         """``dq/dt = v / (1 - eps) + eps (e_r . v) e_r / (1 - eps)^2`` [1/s]."""
@@ -597,8 +620,14 @@ class CycleMap:
             return self.path
         self.integrations += 1
         self.path_rtol = self.rtol
-        if self.kernel is not None:
-            return self.compiled_cycle(initial)
+        path = self.compiled_cycle(initial) if self.kernel is not None else self.lsoda(initial)
+        # the least gap 1 - eps = 1 / (1 + |q|) at the largest |q|
+        if 1.0 / (1.0 + float(np.hypot(path[0], path[1]).max())) < self.wall_gap:
+            raise PinOnWall(path)
+        return path
+
+    def lsoda(self, initial: FloatArray) -> FloatArray:
+        """The cycle integrated by :func:`scipy.integrate.solve_ivp` (LSODA)."""
         solution = solve_ivp(
             self.right_hand_side,
             (self.ends[0], self.ends[-1]),
@@ -675,6 +704,99 @@ def fixed_point(
         # (the cycle map integrates a start it integrated last only once)
         path = cycle(found.x)
     return path
+
+
+def wall_orbit(
+    cycle: CycleMap, entry: FloatArray, probe_gap: float, angle_tolerance: float
+) -> FloatArray | None:
+    """The path of a pin resting on the wall, from the path of a cycle that reached it [-].
+
+    Where the film alone holds the pin (the asperities carry too little), the pin
+    creeps towards the wall over the cycles, its gap shrinking ever more slowly, and
+    its film's resistance to motion grows without bound in every direction as the gap
+    closes: the pin then rolls with the mean surface speed and returns where the cycle
+    began, *at any gap and any angle*. The cycle map is the identity there, so a fixed
+    point of it is wherever a root finder stops. What is determined is the angle at
+    which the creeping pin comes to rest: where the film no longer turns it along the
+    wall as it sinks,
+
+    .. math:: \\phi(T) = \\phi(0) \\quad\\text{for a pin started at } (1 - \\varepsilon) = g_p,
+        \\qquad \\frac{\\partial(\\phi(T) - \\phi(0))}{\\partial\\phi(0)} < 0,
+
+    the angle that attracts the creep from either side, found with
+    :func:`scipy.optimize.brentq` by following the drift from where the pin reached the
+    wall. The pin must sink there (else it is not on the wall, and None is returned);
+    the orbit is the cycle from that angle at the gap ``WALL_GAP`` (the film's share of
+    the load is nil: the solids carry it).
+
+    Parameters
+    ----------
+    cycle : CycleMap
+        The cycle map.
+    entry : ndarray, shape (2, M + 1)
+        The path of the cycle that reached the wall, stretched coordinate [-].
+    probe_gap : float
+        ``g_p``: the gap, over the clearance, at which the drift along the wall is
+        measured [-].
+    angle_tolerance : float
+        The resting angle's tolerance [rad].
+
+    Returns
+    -------
+    ndarray or None
+        The orbit's path in the stretched coordinate, or None where the drift has no
+        attracting angle or the pin does not sink there.
+    """
+
+    def start_at(angle: float, gap: float) -> FloatArray:
+        return stretched((1.0 - gap) * np.array([math.cos(angle), math.sin(angle)]))
+
+    def drift(angle: float) -> float:
+        """The turn of a pin started ``probe_gap`` off the wall at ``angle``, one cycle [rad]."""
+        path = cycle(start_at(angle, probe_gap))
+        return math.remainder(math.atan2(path[1, -1], path[0, -1]) - angle, 2.0 * math.pi)
+
+    cycle.rtol = SEARCH_RTOL
+    # follow the drift until it turns back: the attracting angle lies between
+    near = float(math.atan2(entry[1, -1], entry[0, -1]))
+    near_drift, step = drift(near), WALL_STEP
+    if near_drift == 0.0:
+        return None
+    heading = math.copysign(1.0, near_drift)
+    far = near + heading * step
+    far_drift = drift(far)
+    while math.copysign(1.0, far_drift) == heading:
+        if abs(far - near) >= math.pi:
+            return None
+        near, near_drift, step = far, far_drift, 2.0 * step
+        far = near + heading * step
+        far_drift = drift(far)
+    low, high = sorted((near, far))
+    resting = brentq(drift, low, high, xtol=angle_tolerance)
+    probe = unstretched(cycle(start_at(resting, probe_gap))[:, -1])
+    if 1.0 - float(np.hypot(*probe)) >= probe_gap:
+        return None
+    cycle.rtol = INTEGRATION_RTOL
+    return cycle(start_at(resting, WALL_GAP))
+
+
+def searched(
+    cycle: CycleMap,
+    start: FloatArray,
+    mismatch: Callable[[FloatArray], tuple[float, float]],
+    tolerance: float,
+) -> FloatArray:
+    """The periodic path from ``start`` (``e / c``) by :func:`fixed_point` [-].
+
+    Found with cycles of a coarser tolerance, proved (or else found again) with cycles
+    of the full one: the fixed points of the two maps differ by their integration
+    errors, well inside the tolerance.
+    """
+    cycle.rtol = SEARCH_RTOL
+    path = cycle(stretched(start))
+    path = fixed_point(cycle, path, mismatch, tolerance)
+    cycle.rtol = INTEGRATION_RTOL
+    return fixed_point(cycle, cycle(path[:, 0]), mismatch, tolerance)
 
 
 #: least film parameter below which the film alone must hold the pin off its asperities
@@ -766,14 +888,16 @@ def periodic_orbit(
         ends = unstretched(path[:, [0, -1]])
         return float(np.hypot(*(ends[:, 1] - ends[:, 0]))), tolerance * gap
 
-    # found with cycles of a coarser tolerance, proved (or else found again) with
-    # cycles of the full one: the fixed points of the two maps differ by their
-    # integration errors, well inside the tolerance
-    cycle.rtol = SEARCH_RTOL
-    path = cycle(stretched(np.asarray(start, float)))
-    path = fixed_point(cycle, path, mismatch, tolerance)
-    cycle.rtol = INTEGRATION_RTOL
-    path = fixed_point(cycle, cycle(path[:, 0]), mismatch, tolerance)
+    start = np.asarray(start, float)
+    # a search that carries the pin onto the wall is posed again there (wall_orbit)
+    wall = WALL_FILM_PARAMETER * solver.roughness / solver.clearance
+    cycle.wall_gap = wall
+    try:
+        path = searched(cycle, start, mismatch, tolerance)
+    except PinOnWall as reached:
+        cycle.wall_gap = 0.0
+        found = wall_orbit(cycle, reached.path, wall, tolerance * floor)
+        path = searched(cycle, start, mismatch, tolerance) if found is None else found
     cycles = cycle.integrations
     error, allowed = mismatch(path)
     if error > allowed:
