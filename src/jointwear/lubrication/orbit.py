@@ -889,15 +889,18 @@ def periodic_orbit(
         return float(np.hypot(*(ends[:, 1] - ends[:, 0]))), tolerance * gap
 
     start = np.asarray(start, float)
-    # a search that carries the pin onto the wall is posed again there (wall_orbit)
+    # where the asperities cannot hold the pin at any step, a search that carries it
+    # onto the wall is posed again there (wall_orbit); kept if its cycle closes
     wall = WALL_FILM_PARAMETER * solver.roughness / solver.clearance
-    cycle.wall_gap = wall
+    capacity = -float(solver.asperity_force(1.0))
+    cycle.wall_gap = wall if capacity < float(np.min(np.hypot(load_x, load_y))) else 0.0
     try:
         path = searched(cycle, start, mismatch, tolerance)
     except PinOnWall as reached:
         cycle.wall_gap = 0.0
-        found = wall_orbit(cycle, reached.path, wall, tolerance * floor)
-        path = searched(cycle, start, mismatch, tolerance) if found is None else found
+        path = wall_orbit(cycle, reached.path, wall, tolerance * floor)
+        if path is None or mismatch(path)[0] > mismatch(path)[1]:
+            path = searched(cycle, start, mismatch, tolerance)
     cycles = cycle.integrations
     error, allowed = mismatch(path)
     if error > allowed:
