@@ -751,10 +751,16 @@ def wall_orbit(
     def start_at(angle: float, gap: float) -> FloatArray:
         return stretched((1.0 - gap) * np.array([math.cos(angle), math.sin(angle)]))
 
+    #: the turn and the end gap of each angle probed (brentq asks for its bracket again)
+    probed: dict[float, tuple[float, float]] = {}
+
     def drift(angle: float) -> float:
         """The turn of a pin started ``probe_gap`` off the wall at ``angle``, one cycle [rad]."""
-        path = cycle(start_at(angle, probe_gap))
-        return math.remainder(math.atan2(path[1, -1], path[0, -1]) - angle, 2.0 * math.pi)
+        if angle not in probed:
+            end = cycle(start_at(angle, probe_gap))[:, -1]
+            turn = math.remainder(math.atan2(end[1], end[0]) - angle, 2.0 * math.pi)
+            probed[angle] = turn, 1.0 / (1.0 + float(np.hypot(*end)))
+        return probed[angle][0]
 
     cycle.rtol = SEARCH_RTOL
     # follow the drift until it turns back: the attracting angle lies between
@@ -773,8 +779,8 @@ def wall_orbit(
         far_drift = drift(far)
     low, high = sorted((near, far))
     resting = brentq(drift, low, high, xtol=angle_tolerance)
-    probe = unstretched(cycle(start_at(resting, probe_gap))[:, -1])
-    if 1.0 - float(np.hypot(*probe)) >= probe_gap:
+    drift(resting)
+    if probed[resting][1] >= probe_gap:  # the pin does not sink there
         return None
     cycle.rtol = INTEGRATION_RTOL
     return cycle(start_at(resting, WALL_GAP))
