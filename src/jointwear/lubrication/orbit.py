@@ -398,6 +398,24 @@ class OrbitSolver:
         tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
         return joint, asperity, self.memory, tables, DIRECTION_NODES
 
+    def steady_shape(self) -> Callable[[float, float], tuple[float, float]]:
+        """:attr:`scalar_shape`, by the compiled kernel where it runs [-].
+
+        The same force factor to round-off (``tests/lubrication/test_orbit_kernel.py``),
+        some ten times faster for the tabulated models: for the few dozen states of a
+        steady solution such as the orbit's first guess.
+        """
+        kernel = compiled_kernel()
+        if kernel is None or self.model == "short":
+            return self.scalar_shape
+        joint, _, _, tables, _ = self.kernel_arguments()
+        model, ratio, log_gap_max = joint[-2], joint[-3], joint[-1]
+
+        def shape(eps: float, beta: float) -> tuple[float, float]:
+            return kernel.shape(eps, beta, model, ratio, log_gap_max, *tables)
+
+        return shape
+
     def asperity_force(self, eccentricity_ratio: ArrayLike) -> FloatArray:
         """Radial asperity force at ``eps`` (tabulated, linear between nodes) [N]."""
         gap = (1.0 - np.asarray(eccentricity_ratio, float)) * self.clearance / self.roughness
