@@ -36,6 +36,12 @@ Through a reversal of the sliding speed the wedge vanishes, but the squeeze film
 still holds the pin off the wall for a time of order ``mu L D (R/c)^2 / W``: the
 quasi-static solution (no squeeze) would put it on the wall.
 
+A pin that the film alone must hold, its asperities too weak, may creep onto the wall
+instead; there the film resists motion in every direction without bound, the pin
+rolls with the mean surface speed, and every start closes the cycle. Such an orbit is
+posed on the pin's resting angle along the wall, not on a fixed point of the cycle map
+(:func:`wall_orbit`).
+
 Sources: [1]_, [2]_, [3]_.
 
 References
