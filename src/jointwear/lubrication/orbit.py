@@ -123,6 +123,9 @@ WALL_FILM_PARAMETER = 0.05
 WALL_GAP = 1e-9
 #: the first steps along the wall that bracket the pin's resting angle [rad]
 WALL_STEP = 0.05
+#: on the wall a cycle keeps most of a displacement along it: it shrinks by less than
+#: this share (a film that holds the pin steers it back much more)
+WALL_CONTRACTION = 0.5
 #: the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`), imported on first use
 _KERNEL: Any = None
 
@@ -556,17 +559,17 @@ def unstretched(stretched_state: ArrayLike) -> FloatArray:
 
 
 class PinOnWall(Exception):
-    """A cycle of the orbit's search came closer to the wall than ``CycleMap.wall_gap``.
+    """The orbit's root finder put the pin closer to the wall than ``CycleMap.wall_gap``.
 
     Parameters
     ----------
-    path : ndarray, shape (2, M + 1)
-        That cycle's path in the stretched coordinate [-].
+    start : ndarray, shape (2,)
+        That start in the stretched coordinate [-].
     """
 
-    def __init__(self, path: FloatArray) -> None:
+    def __init__(self, start: FloatArray) -> None:
         super().__init__("the pin reached the wall")
-        self.path = path
+        self.start = start
 
 
 class CycleMap:
@@ -627,7 +630,8 @@ class CycleMap:
         #: the relative tolerance of the integration, and that of the last cycle
         self.rtol = INTEGRATION_RTOL
         self.path_rtol = math.nan
-        #: a cycle whose least gap ``1 - eps`` falls below this raises :class:`PinOnWall`
+        #: a root finder's start closer to the wall than this (``1 - eps``) raises
+        #: :class:`PinOnWall` (:func:`fixed_point`)
         self.wall_gap = 0.0
 
     def right_hand_side(self, t: float, stretched_state: FloatArray) -> FloatArray:
@@ -644,14 +648,8 @@ class CycleMap:
             return self.path
         self.integrations += 1
         self.path_rtol = self.rtol
-        path = self.compiled_cycle(initial) if self.kernel is not None else self.lsoda(initial)
-        # the least gap 1 - eps = 1 / (1 + |q|) at the largest |q|
-        if 1.0 / (1.0 + float(np.hypot(path[0], path[1]).max())) < self.wall_gap:
-            raise PinOnWall(path)
-        return path
-
-    def lsoda(self, initial: FloatArray) -> FloatArray:
-        """The cycle integrated by :func:`scipy.integrate.solve_ivp` (LSODA)."""
+        if self.kernel is not None:
+            return self.compiled_cycle(initial)
         solution = solve_ivp(
             self.right_hand_side,
             (self.ends[0], self.ends[-1]),
@@ -680,6 +678,19 @@ class CycleMap:
             )
         self.start, self.path = start, path
         return path
+
+
+def residual(cycle: CycleMap, initial: FloatArray) -> FloatArray:
+    """``q(T) - q(0)`` of the cycle from ``initial``, stretched coordinate [-].
+
+    Raises
+    ------
+    PinOnWall
+        Where the start's gap ``1 - eps = 1 / (1 + |q|)`` is below ``cycle.wall_gap``.
+    """
+    if 1.0 / (1.0 + float(np.hypot(initial[0], initial[1]))) < cycle.wall_gap:
+        raise PinOnWall(np.array(initial, float))
+    return cycle(initial)[:, -1] - initial
 
 
 def fixed_point(
@@ -720,7 +731,7 @@ def fixed_point(
         # the cycle map's fixed point; the orbit can creep towards the wall over many
         # cycles (a squeeze film thins slowly), which plain repetition follows slowly
         found = root(
-            lambda initial: cycle(initial)[:, -1] - initial,
+            lambda initial: residual(cycle, initial),
             path[:, -1],
             method="hybr",
             options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS, "eps": JACOBIAN_STEP},
@@ -733,7 +744,7 @@ def fixed_point(
 def wall_orbit(
     cycle: CycleMap, entry: FloatArray, probe_gap: float, angle_tolerance: float
 ) -> FloatArray | None:
-    """The path of a pin resting on the wall, from the path of a cycle that reached it [-].
+    """The path of a pin resting on the wall, from where the search put it there [-].
 
     Where the film alone holds the pin (the asperities carry too little), the pin
     creeps towards the wall over the cycles, its gap shrinking ever more slowly, and
@@ -749,16 +760,18 @@ def wall_orbit(
 
     the angle that attracts the creep from either side, found with
     :func:`scipy.optimize.brentq` by following the drift from where the pin reached the
-    wall. The pin must sink there (else it is not on the wall, and None is returned);
-    the orbit is the cycle from that angle at the gap ``WALL_GAP`` (the film's share of
-    the load is nil: the solids carry it).
+    wall. On the wall the pin must sink there, and the cycle must keep most of a
+    displacement along the wall (``|d(phi(T) - phi(0)) / d phi(0)| < WALL_CONTRACTION``:
+    nearly the identity); else the pin is held off the wall, by a film that steers it
+    back, and None is returned. The orbit is the cycle from that angle at the gap
+    ``WALL_GAP`` (the film's share of the load is nil: the solids carry it).
 
     Parameters
     ----------
     cycle : CycleMap
         The cycle map.
-    entry : ndarray, shape (2, M + 1)
-        The path of the cycle that reached the wall, stretched coordinate [-].
+    entry : ndarray, shape (2,)
+        Where the search put the pin on the wall, stretched coordinate [-].
     probe_gap : float
         ``g_p``: the gap, over the clearance, at which the drift along the wall is
         measured [-].
@@ -769,13 +782,13 @@ def wall_orbit(
     -------
     ndarray or None
         The orbit's path in the stretched coordinate, or None where the drift has no
-        attracting angle or the pin does not sink there.
+        attracting angle, the pin does not sink there or the film steers it back.
     """
 
     def start_at(angle: float, gap: float) -> FloatArray:
         return stretched((1.0 - gap) * np.array([math.cos(angle), math.sin(angle)]))
 
-    #: the turn and the end gap of each angle probed (brentq asks for its bracket again)
+    # the turn and the end gap of each angle probed (brentq asks for its bracket again)
     probed: dict[float, tuple[float, float]] = {}
 
     def drift(angle: float) -> float:
@@ -787,21 +800,22 @@ def wall_orbit(
         return probed[angle][0]
 
     cycle.rtol = SEARCH_RTOL
-    # follow the drift until it turns back: the attracting angle lies between
-    near = float(math.atan2(entry[1, -1], entry[0, -1]))
+    # follow the drift, in growing steps, until it turns back within half a turn: the
+    # attracting angle lies between
+    origin = near = float(math.atan2(entry[1], entry[0]))
     near_drift, step = drift(near), WALL_STEP
     if near_drift == 0.0:
         return None
     heading = math.copysign(1.0, near_drift)
     far = near + heading * step
-    far_drift = drift(far)
-    while math.copysign(1.0, far_drift) == heading:
-        if abs(far - near) >= math.pi:
+    while math.copysign(1.0, drift(far)) == heading:
+        if abs(far - origin) >= math.pi:
             return None
-        near, near_drift, step = far, far_drift, 2.0 * step
+        near, step = far, 2.0 * step
         far = near + heading * step
-        far_drift = drift(far)
     low, high = sorted((near, far))
+    if abs(drift(high) - drift(low)) >= WALL_CONTRACTION * (high - low):
+        return None  # the cycle map contracts along the wall: a film holds the pin
     resting = brentq(drift, low, high, xtol=angle_tolerance)
     drift(resting)
     if probed[resting][1] >= probe_gap:  # the pin does not sink there
@@ -823,8 +837,10 @@ def searched(
     errors, well inside the tolerance.
     """
     cycle.rtol = SEARCH_RTOL
-    path = cycle(stretched(start))
-    path = fixed_point(cycle, path, mismatch, tolerance)
+    initial = stretched(start)
+    if 0.0 < 1.0 - float(np.hypot(start[0], start[1])) < cycle.wall_gap:  # on the wall
+        raise PinOnWall(initial)
+    path = fixed_point(cycle, cycle(initial), mismatch, tolerance)
     cycle.rtol = INTEGRATION_RTOL
     return fixed_point(cycle, cycle(path[:, 0]), mismatch, tolerance)
 
@@ -919,8 +935,9 @@ def periodic_orbit(
         return float(np.hypot(*(ends[:, 1] - ends[:, 0]))), tolerance * gap
 
     start = np.asarray(start, float)
-    # where the asperities cannot hold the pin at any step, a search that carries it
-    # onto the wall is posed again there (wall_orbit); kept if its cycle closes
+    # where the asperities cannot hold the pin at any step, a pin started on the wall or
+    # carried onto it by the root finder is posed again there (wall_orbit); kept if its
+    # cycle closes
     wall = WALL_FILM_PARAMETER * solver.roughness / solver.clearance
     capacity = -float(solver.asperity_force(1.0))
     cycle.wall_gap = wall if capacity < float(np.min(np.hypot(load_x, load_y))) else 0.0
@@ -928,8 +945,10 @@ def periodic_orbit(
         path = searched(cycle, start, mismatch, tolerance)
     except PinOnWall as reached:
         cycle.wall_gap = 0.0
-        path = wall_orbit(cycle, reached.path, wall, tolerance * floor)
-        if path is None or mismatch(path)[0] > mismatch(path)[1]:
+        resting = wall_orbit(cycle, reached.start, wall, tolerance * floor)
+        if resting is not None and mismatch(resting)[0] <= mismatch(resting)[1]:
+            path = resting
+        else:
             path = searched(cycle, start, mismatch, tolerance)
     cycles = cycle.integrations
     error, allowed = mismatch(path)
