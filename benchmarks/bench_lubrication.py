@@ -15,10 +15,10 @@ of as many revolutions, and the ratio is that of the two CPU medians (a changing
 changes both alike); the last column is the number of cycles the orbit search integrated.
 The load average is printed at the start and the end.
 Target: a lubricated revolution within 2x of a dry one; the last measurement and where the
-time goes are in docs/lubrication.md (*Speed*). One revolution: short bearing 1.6-1.8x (14
-and 10 cycles), long bearing on the wall 1.9x (14 cycles since its orbit is posed on the
-pin's resting angle along the wall; 45 and 2.5-2.9x before), finite length 2.1x (11 cycles,
-the fewest its search needs: not met).
+time goes are in docs/lubrication.md (*Speed*). One revolution: short bearing 1.5-1.8x (14
+and 10 cycles), long bearing on the wall 1.8-1.9x (13 cycles since its orbit is posed on the
+pin's resting angle along the wall; 45 and 2.5-2.9x before), finite length 2.0-2.2x (11
+cycles, the fewest its search needs: not met).
 
 Run: ``python benchmarks/bench_lubrication.py [--repeats N] [--python-repeats N]``
 """
