@@ -12,12 +12,15 @@ tables (long and finite bearing, built once per L/D and process) are warmed up f
 CPU time of this process (the machine is shared) and wall time, medians of ``--repeats``
 runs (the Python path: ``--python-repeats``); each run of a case is followed by a dry run
 of as many revolutions, and the ratio is that of the two CPU medians (a changing load
-changes both alike). The load average is printed at the start and the end.
+changes both alike); the last column is the number of cycles the orbit search integrated.
+The load average is printed at the start and the end.
 Target: a lubricated revolution within 2x of a dry one; the last measurement and where the
-time goes are in docs/lubrication.md (*Speed*): 1.6x (short), 2.1x (finite length) and 2.7x
-(long bearing on the wall, whose orbit search takes 41-45 cycles) for one revolution.
+time goes are in docs/lubrication.md (*Speed*). One revolution: short bearing 1.5-1.8x (14
+and 10 cycles), long bearing on the wall 1.8-1.9x (13 cycles since its orbit is posed on the
+pin's resting angle along the wall; 45 and 2.5-2.9x before), finite length 2.0-2.2x (11
+cycles, the fewest its search needs: not met).
 
-Run: ``python benchmarks/bench_lubrication.py [--repeats N]``
+Run: ``python benchmarks/bench_lubrication.py [--repeats N] [--python-repeats N]``
 """
 
 from __future__ import annotations
@@ -60,8 +63,9 @@ CASES = {
 
 def one_run(
     overrides: list[str], revolutions: int = 1, update: bool = False
-) -> tuple[float, float]:
-    """CPU and wall seconds of ``Simulation.run()`` (the simulation built outside the timer)."""
+) -> tuple[float, float, int]:
+    """CPU and wall seconds of ``Simulation.run()`` (the simulation built outside the timer)
+    and the cycles its orbit search integrated (0 for a dry run)."""
     config = load_config(
         CONFIG,
         overrides=[
@@ -73,13 +77,16 @@ def one_run(
     simulation = Simulation(config)
     began, began_wall = time.process_time(), time.perf_counter()
     simulation.run(pressures=False)
-    return time.process_time() - began, time.perf_counter() - began_wall
+    cpu, wall = time.process_time() - began, time.perf_counter() - began_wall
+    lubrication = simulation.solver.lubrication
+    cycles = lubrication.orbit(simulation.load_cycle)[0].cycles if lubrication else 0
+    return cpu, wall, cycles
 
 
-def paired(overrides: list[str], repeats: int, **run: object) -> tuple[float, float, float]:
-    """Median CPU and wall seconds of ``repeats`` runs of a case, and the median CPU
-    seconds of as many dry runs, each right after one of the case (the machine's load
-    changes the two alike); a warm-up of each first."""
+def paired(overrides: list[str], repeats: int, **run: object) -> tuple[float, float, float, int]:
+    """Median CPU and wall seconds of ``repeats`` runs of a case, the median CPU seconds
+    of as many dry runs, each right after one of the case (the machine's load changes
+    the two alike), and the orbit's cycles; a warm-up of each first."""
     one_run(overrides, **run)  # warm-up: numba kernels, film tables
     one_run([], **run)
     case, dry = [], []
@@ -87,25 +94,35 @@ def paired(overrides: list[str], repeats: int, **run: object) -> tuple[float, fl
         case.append(one_run(overrides, **run))
         dry.append(one_run([], **run)[0])
     cpu = statistics.median(t[0] for t in case)
-    return cpu, statistics.median(t[1] for t in case), statistics.median(dry)
+    return cpu, statistics.median(t[1] for t in case), statistics.median(dry), case[-1][2]
 
 
-def row(table: Table, name: str, orbit_path: str, timed: tuple[float, float, float]) -> None:
-    """A row: the case's CPU and wall medians [ms] and its CPU ratio to the dry runs."""
-    cpu, wall, dry = timed
-    table.add(name, orbit_path, f"{1e3 * cpu:.1f}", f"{1e3 * wall:.1f}", f"{cpu / dry:.2f}")
+def row(table: Table, name: str, orbit_path: str, timed: tuple[float, float, float, int]) -> None:
+    """A row: the case's CPU and wall medians [ms], its CPU ratio to the dry runs and
+    the orbit's cycles."""
+    cpu, wall, dry, cycles = timed
+    table.add(
+        name,
+        orbit_path,
+        f"{1e3 * cpu:.1f}",
+        f"{1e3 * wall:.1f}",
+        f"{cpu / dry:.2f}",
+        str(cycles or "-"),
+    )
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=7)
-    parser.add_argument("--python-repeats", type=int, default=3)
+    parser.add_argument("--python-repeats", type=int, default=3, help="0: no Python orbit")
     arguments = parser.parse_args()
     print(f"Machine: {describe_machine()}\n")
-    table = Table("case", "orbit", "CPU [ms]", "wall [ms]", "CPU ratio to dry")
+    table = Table("case", "orbit", "CPU [ms]", "wall [ms]", "CPU ratio to dry", "cycles")
     row(table, "dry", "-", paired([], arguments.repeats))
     for name, overrides in list(CASES.items())[1:]:
         row(table, name, "compiled", paired(overrides, arguments.repeats))
+        if arguments.python_repeats < 1:
+            continue
         # the Python right-hand side under LSODA, as without numba (the contact
         # kernel stays compiled, so only the orbit differs)
         kernel, orbit._KERNEL = orbit._KERNEL, False

@@ -4,7 +4,8 @@ Checked against closed forms: a steady load on a turning journal settles where
 Ocvirk's (short) and Sommerfeld's (long, half-Sommerfeld) equilibria put it; a pin
 pushed straight at the wall moves at the speed of the short bearing's closed-form
 squeeze film; through a reversal of the sliding speed the squeeze film holds the pin
-off the wall where the steady (no-squeeze) solution puts it on the wall.
+off the wall where the steady (no-squeeze) solution puts it on the wall. A pin that the
+film alone cannot hold off the wall rests there at one angle, wherever it starts.
 """
 
 from __future__ import annotations
@@ -16,7 +17,16 @@ import pytest
 
 from jointwear.lubrication.mixed import steady_load_sharing
 from jointwear.lubrication.mobility import dimensionless_force
-from jointwear.lubrication.orbit import OrbitSolver, film_shape, periodic_orbit, short_shape
+from jointwear.lubrication.orbit import (
+    WALL_GAP,
+    CycleMap,
+    OrbitSolver,
+    film_shape,
+    periodic_orbit,
+    short_shape,
+    stretched,
+    unstretched,
+)
 
 RADIUS, CLEARANCE, VISCOSITY, SPEED = 0.01, 20e-6, 0.05, 100.0
 #: a smooth surface: no asperity force at the eccentricities checked
@@ -166,3 +176,45 @@ def test_an_orbit_that_does_not_repeat_says_when_the_pin_sinks_below_its_film():
     assert "least film parameter of 0.25" in creeping_pin(joint, sinking)
     # least gap 1 um = 2.5 roughness: a non-repeating orbit there is not this
     assert creeping_pin(joint, 0.98 * np.vstack([np.cos(angle), np.sin(angle)])) == ""
+
+
+def rocking_pin_on_its_wall():
+    """A long-bearing pin rocking under a load that swells and swings +-0.36 rad about
+    -x, its asperities (1.7 N at contact, a soft bushing) far below the load: the
+    rod-slider pin of a slider-crank, which the film alone cannot hold off the wall."""
+    solver = OrbitSolver(7.45e-3, 18.7e-3, 50e-6, 0.3, 0.4e-6, 0.58e9, "long")
+    steps, period = 120, 0.5
+    time = np.arange(steps) * period / steps
+    phase = 2.0 * np.pi * time / period
+    load, azimuth = 270.0 - 70.0 * np.cos(phase), np.pi + 0.36 * np.sin(phase)
+    cycle = (solver, time, period, load * np.cos(azimuth), load * np.sin(azimuth))
+    return cycle, 2.2 * np.cos(phase)
+
+
+def test_on_the_wall_every_start_is_a_periodic_orbit():
+    """The non-uniqueness the orbit is posed against: a pin on the wall, at any gap
+    from 1e-8 to 1e-5 of the clearance and any angle, ends the cycle where it began."""
+    cycle, speed = rocking_pin_on_its_wall()
+    cycle_map = CycleMap(*cycle, speed)
+    for gap in (1e-8, 1e-5):
+        for angle in (np.pi - 0.1, np.pi + 0.1):
+            start = (1.0 - gap) * np.array([math.cos(angle), math.sin(angle)])
+            end = unstretched(cycle_map(stretched(start))[:, -1])
+            # the orbit's tolerance is 1e-3 sigma / c = 8e-6 here
+            assert np.hypot(*(end - start)) < 1e-7
+            assert 1.0 - np.hypot(*end) == pytest.approx(gap, rel=1e-3)
+
+
+def test_a_pin_on_the_wall_rests_at_one_angle_wherever_it_starts():
+    cycle, speed = rocking_pin_on_its_wall()
+    on_the_wall = (1.0 - 1e-6) * np.array([math.cos(np.pi - 0.2), math.sin(np.pi - 0.2)])
+    starts = ([-0.5, 0.0], [0.0, 0.5], [0.3, -0.3], on_the_wall)
+    orbits = [periodic_orbit(*cycle, speed, start) for start in starts]
+    angles = [math.atan2(orbit.eccentricity_y[0], orbit.eccentricity_x[0]) for orbit in orbits]
+    for orbit, angle in zip(orbits, angles, strict=True):
+        assert 1.0 - orbit.eccentricity_ratio.max() == pytest.approx(WALL_GAP, rel=1e-3)
+        # the load swings symmetrically about -x: the pin rests there
+        assert abs(math.remainder(angle - np.pi, 2.0 * np.pi)) < 2e-3
+    # (a fixed point of the cycle map alone: anywhere within 0.2 rad, at gaps of 1e-6
+    # to 4e-5, from these starts)
+    assert max(angles) - min(angles) < 1e-4

@@ -130,3 +130,15 @@ def test_the_periodic_orbit_is_the_same_on_both_paths(kernel):
     gap = 1.0 - python.eccentricity_ratio.max()
     np.testing.assert_allclose(compiled.eccentricity_x, python.eccentricity_x, atol=1e-3 * gap)
     np.testing.assert_allclose(compiled.eccentricity_y, python.eccentricity_y, atol=1e-3 * gap)
+
+
+@pytest.mark.parametrize("model", ["long", "finite"])
+def test_the_steady_shape_is_the_scalar_shape(kernel, model):
+    """The force factor of a steady solution (the orbit's first guess), compiled."""
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, model)
+    steady = solver.steady_shape()
+    assert steady is not solver.scalar_shape
+    for eps in (0.1, 0.6, 0.99, 0.9999):
+        for beta in (0.0, math.pi, 1.0):
+            expected = solver.scalar_shape(eps, beta)
+            np.testing.assert_allclose(steady(eps, beta), expected, rtol=1e-12)

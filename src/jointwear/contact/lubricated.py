@@ -223,16 +223,17 @@ class LubricatedContact:
         if load <= 0.0 or relative == 0.0:
             return np.zeros(2)
         beta = 0.0 if relative > 0.0 else math.pi
+        scalar_shape = solver.steady_shape()
 
         def excess_speed(eps: float) -> float:
-            shape = solver.scalar_shape(eps, beta)
+            shape = scalar_shape(eps, beta)
             rate = load * solver.mobility_scale * solver.ratio / (3.0 * math.hypot(*shape))
             return eps * abs(relative) - rate
 
         eps = STEADY_LIMIT
         if excess_speed(STEADY_LIMIT) > 0.0:
             eps = brentq(excess_speed, 1e-6, STEADY_LIMIT, xtol=1e-12)
-        shape = solver.scalar_shape(eps, beta)
+        shape = scalar_shape(eps, beta)
         angle = float(cycle.azimuth[0]) + math.pi - math.atan2(shape[1], shape[0])
         eps = min(eps, FIRST_GUESS_LIMIT)
         return np.array([eps * math.cos(angle), eps * math.sin(angle)])

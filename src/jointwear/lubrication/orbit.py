@@ -36,6 +36,12 @@ Through a reversal of the sliding speed the wedge vanishes, but the squeeze film
 still holds the pin off the wall for a time of order ``mu L D (R/c)^2 / W``: the
 quasi-static solution (no squeeze) would put it on the wall.
 
+A pin that the film alone must hold, its asperities too weak, may creep onto the wall
+instead; there the film resists motion in every direction without bound, the pin
+rolls with the mean surface speed, and every start closes the cycle. Such an orbit is
+posed on the pin's resting angle along the wall, not on a fixed point of the cycle map
+(:func:`wall_orbit`).
+
 Sources: [1]_, [2]_, [3]_.
 
 References
@@ -110,6 +116,16 @@ ROUND_OFF = 1e-12
 #: the periodicity tolerance scales with the smallest gap, but not below this many
 #: roughnesses (the asperity pressure varies on the scale of sigma)
 GAP_FLOOR = 1.0
+#: a search that carries the pin closer to the wall than this many roughnesses has put
+#: it on the wall (:func:`wall_orbit`): the film's share of the load is nil there
+WALL_FILM_PARAMETER = 0.05
+#: the gap of a pin on the wall, over the clearance [-]
+WALL_GAP = 1e-9
+#: the first steps along the wall that bracket the pin's resting angle [rad]
+WALL_STEP = 0.05
+#: on the wall a cycle keeps most of a displacement along it: it shrinks by less than
+#: this share (a film that holds the pin steers it back much more)
+WALL_CONTRACTION = 0.5
 #: the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`), imported on first use
 _KERNEL: Any = None
 
@@ -391,6 +407,24 @@ class OrbitSolver:
         tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
         return joint, asperity, self.memory, tables, DIRECTION_NODES
 
+    def steady_shape(self) -> Callable[[float, float], tuple[float, float]]:
+        """:attr:`scalar_shape`, by the compiled kernel where it runs [-].
+
+        The same force factor to round-off (``tests/lubrication/test_orbit_kernel.py``),
+        some ten times faster for the tabulated models: for the few dozen states of a
+        steady solution such as the orbit's first guess.
+        """
+        kernel = compiled_kernel()
+        if kernel is None or self.model == "short":
+            return self.scalar_shape
+        joint, _, _, tables, _ = self.kernel_arguments()
+        model, ratio, log_gap_max = joint[-2], joint[-3], joint[-1]
+
+        def shape(eps: float, beta: float) -> tuple[float, float]:
+            return kernel.shape(eps, beta, model, ratio, log_gap_max, *tables)
+
+        return shape
+
     def asperity_force(self, eccentricity_ratio: ArrayLike) -> FloatArray:
         """Radial asperity force at ``eps`` (tabulated, linear between nodes) [N]."""
         gap = (1.0 - np.asarray(eccentricity_ratio, float)) * self.clearance / self.roughness
@@ -524,6 +558,20 @@ def unstretched(stretched_state: ArrayLike) -> FloatArray:
     return q / (1.0 + np.hypot(q[0], q[1]))
 
 
+class PinOnWall(Exception):
+    """The orbit's root finder put the pin closer to the wall than ``CycleMap.wall_gap``.
+
+    Parameters
+    ----------
+    start : ndarray, shape (2,)
+        That start in the stretched coordinate [-].
+    """
+
+    def __init__(self, start: FloatArray) -> None:
+        super().__init__("the pin reached the wall")
+        self.start = start
+
+
 class CycleMap:
     """One cycle of the orbit, integrated in the stretched coordinate (:func:`stretched`).
 
@@ -582,6 +630,9 @@ class CycleMap:
         #: the relative tolerance of the integration, and that of the last cycle
         self.rtol = INTEGRATION_RTOL
         self.path_rtol = math.nan
+        #: a root finder's start closer to the wall than this (``1 - eps``) raises
+        #: :class:`PinOnWall` (:func:`fixed_point`)
+        self.wall_gap = 0.0
 
     def right_hand_side(self, t: float, stretched_state: FloatArray) -> FloatArray:
         """``dq/dt = v / (1 - eps) + eps (e_r . v) e_r / (1 - eps)^2`` [1/s]."""
@@ -629,6 +680,19 @@ class CycleMap:
         return path
 
 
+def residual(cycle: CycleMap, initial: FloatArray) -> FloatArray:
+    """``q(T) - q(0)`` of the cycle from ``initial``, stretched coordinate [-].
+
+    Raises
+    ------
+    PinOnWall
+        Where the start's gap ``1 - eps = 1 / (1 + |q|)`` is below ``cycle.wall_gap``.
+    """
+    if 1.0 / (1.0 + float(np.hypot(initial[0], initial[1]))) < cycle.wall_gap:
+        raise PinOnWall(np.array(initial, float))
+    return cycle(initial)[:, -1] - initial
+
+
 def fixed_point(
     cycle: CycleMap,
     path: FloatArray,
@@ -667,7 +731,7 @@ def fixed_point(
         # the cycle map's fixed point; the orbit can creep towards the wall over many
         # cycles (a squeeze film thins slowly), which plain repetition follows slowly
         found = root(
-            lambda initial: cycle(initial)[:, -1] - initial,
+            lambda initial: residual(cycle, initial),
             path[:, -1],
             method="hybr",
             options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS, "eps": JACOBIAN_STEP},
@@ -675,6 +739,110 @@ def fixed_point(
         # (the cycle map integrates a start it integrated last only once)
         path = cycle(found.x)
     return path
+
+
+def wall_orbit(
+    cycle: CycleMap, entry: FloatArray, probe_gap: float, angle_tolerance: float
+) -> FloatArray | None:
+    """The path of a pin resting on the wall, from where the search put it there [-].
+
+    Where the film alone holds the pin (the asperities carry too little), the pin
+    creeps towards the wall over the cycles, its gap shrinking ever more slowly, and
+    its film's resistance to motion grows without bound in every direction as the gap
+    closes: the pin then rolls with the mean surface speed and returns where the cycle
+    began, *at any gap and any angle*. The cycle map is the identity there, so a fixed
+    point of it is wherever a root finder stops. What is determined is the angle at
+    which the creeping pin comes to rest: where the film no longer turns it along the
+    wall as it sinks,
+
+    .. math:: \\phi(T) = \\phi(0) \\quad\\text{for a pin started at } (1 - \\varepsilon) = g_p,
+        \\qquad \\frac{\\partial(\\phi(T) - \\phi(0))}{\\partial\\phi(0)} < 0,
+
+    the angle that attracts the creep from either side, found with
+    :func:`scipy.optimize.brentq` by following the drift from where the pin reached the
+    wall. On the wall the pin must sink there, and the cycle must keep most of a
+    displacement along the wall (``|d(phi(T) - phi(0)) / d phi(0)| < WALL_CONTRACTION``:
+    nearly the identity); else the pin is held off the wall, by a film that steers it
+    back, and None is returned. The orbit is the cycle from that angle at the gap
+    ``WALL_GAP`` (the film's share of the load is nil: the solids carry it).
+
+    Parameters
+    ----------
+    cycle : CycleMap
+        The cycle map.
+    entry : ndarray, shape (2,)
+        Where the search put the pin on the wall, stretched coordinate [-].
+    probe_gap : float
+        ``g_p``: the gap, over the clearance, at which the drift along the wall is
+        measured [-].
+    angle_tolerance : float
+        The resting angle's tolerance [rad].
+
+    Returns
+    -------
+    ndarray or None
+        The orbit's path in the stretched coordinate, or None where the drift has no
+        attracting angle, the pin does not sink there or the film steers it back.
+    """
+
+    def start_at(angle: float, gap: float) -> FloatArray:
+        return stretched((1.0 - gap) * np.array([math.cos(angle), math.sin(angle)]))
+
+    # the turn and the end gap of each angle probed (brentq asks for its bracket again)
+    probed: dict[float, tuple[float, float]] = {}
+
+    def drift(angle: float) -> float:
+        """The turn of a pin started ``probe_gap`` off the wall at ``angle``, one cycle [rad]."""
+        if angle not in probed:
+            end = cycle(start_at(angle, probe_gap))[:, -1]
+            turn = math.remainder(math.atan2(end[1], end[0]) - angle, 2.0 * math.pi)
+            probed[angle] = turn, 1.0 / (1.0 + float(np.hypot(*end)))
+        return probed[angle][0]
+
+    cycle.rtol = SEARCH_RTOL
+    # follow the drift, in growing steps, until it turns back within half a turn: the
+    # attracting angle lies between
+    origin = near = float(math.atan2(entry[1], entry[0]))
+    near_drift, step = drift(near), WALL_STEP
+    if near_drift == 0.0:
+        return None
+    heading = math.copysign(1.0, near_drift)
+    far = near + heading * step
+    while math.copysign(1.0, drift(far)) == heading:
+        if abs(far - origin) >= math.pi:
+            return None
+        near, step = far, 2.0 * step
+        far = near + heading * step
+    low, high = sorted((near, far))
+    if abs(drift(high) - drift(low)) >= WALL_CONTRACTION * (high - low):
+        return None  # the cycle map contracts along the wall: a film holds the pin
+    resting = brentq(drift, low, high, xtol=angle_tolerance)
+    drift(resting)
+    if probed[resting][1] >= probe_gap:  # the pin does not sink there
+        return None
+    cycle.rtol = INTEGRATION_RTOL
+    return cycle(start_at(resting, WALL_GAP))
+
+
+def searched(
+    cycle: CycleMap,
+    start: FloatArray,
+    mismatch: Callable[[FloatArray], tuple[float, float]],
+    tolerance: float,
+) -> FloatArray:
+    """The periodic path from ``start`` (``e / c``) by :func:`fixed_point` [-].
+
+    Found with cycles of a coarser tolerance, proved (or else found again) with cycles
+    of the full one: the fixed points of the two maps differ by their integration
+    errors, well inside the tolerance.
+    """
+    cycle.rtol = SEARCH_RTOL
+    initial = stretched(start)
+    if 0.0 < 1.0 - float(np.hypot(start[0], start[1])) < cycle.wall_gap:  # on the wall
+        raise PinOnWall(initial)
+    path = fixed_point(cycle, cycle(initial), mismatch, tolerance)
+    cycle.rtol = INTEGRATION_RTOL
+    return fixed_point(cycle, cycle(path[:, 0]), mismatch, tolerance)
 
 
 #: least film parameter below which the film alone must hold the pin off its asperities
@@ -766,14 +934,22 @@ def periodic_orbit(
         ends = unstretched(path[:, [0, -1]])
         return float(np.hypot(*(ends[:, 1] - ends[:, 0]))), tolerance * gap
 
-    # found with cycles of a coarser tolerance, proved (or else found again) with
-    # cycles of the full one: the fixed points of the two maps differ by their
-    # integration errors, well inside the tolerance
-    cycle.rtol = SEARCH_RTOL
-    path = cycle(stretched(np.asarray(start, float)))
-    path = fixed_point(cycle, path, mismatch, tolerance)
-    cycle.rtol = INTEGRATION_RTOL
-    path = fixed_point(cycle, cycle(path[:, 0]), mismatch, tolerance)
+    start = np.asarray(start, float)
+    # where the asperities cannot hold the pin at any step, a pin started on the wall or
+    # carried onto it by the root finder is posed again there (wall_orbit); kept if its
+    # cycle closes
+    wall = WALL_FILM_PARAMETER * solver.roughness / solver.clearance
+    capacity = -float(solver.asperity_force(1.0))
+    cycle.wall_gap = wall if capacity < float(np.min(np.hypot(load_x, load_y))) else 0.0
+    try:
+        path = searched(cycle, start, mismatch, tolerance)
+    except PinOnWall as reached:
+        cycle.wall_gap = 0.0
+        resting = wall_orbit(cycle, reached.start, wall, tolerance * floor)
+        if resting is not None and mismatch(resting)[0] <= mismatch(resting)[1]:
+            path = resting
+        else:
+            path = searched(cycle, start, mismatch, tolerance)
     cycles = cycle.integrations
     error, allowed = mismatch(path)
     if error > allowed:
