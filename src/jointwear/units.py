@@ -34,6 +34,7 @@ import tokenize
 from functools import cache
 from typing import TYPE_CHECKING, Any
 
+from jointwear import quantity_memo
 from jointwear.errors import ConfigError
 
 if TYPE_CHECKING:
@@ -207,6 +208,8 @@ def bare_number(value: Any) -> float | None:
     if isinstance(value, int | float):
         number = float(value) if abs(value) <= MAX_MAGNITUDE else math.inf
     elif isinstance(value, str):
+        if quantity_memo.has_unit(value):  # pint read it with a unit before
+            return None
         try:
             quantity = parse_quantity(value)
         except ConfigError:
@@ -488,8 +491,8 @@ def _radian_power(unit: Any) -> float:
 def _magnitude(value: Any, target: str, expected: str, key: str, angle_power: int | None) -> float:
     """SI magnitude of a number or quantity text (may overflow to inf or raise).
 
-    ``target`` is the SI unit's text, read by pint for a text (a plain number needs no
-    pint).
+    ``target`` is the SI unit's text. A text goes to pint unless pint read it for the
+    same target before (:mod:`jointwear.quantity_memo`); a plain number needs no pint.
     ``angle_power`` (for a rate: 1 in rad/s, 0 in Hz) makes a rate of the other kind
     convert with the factor 2π of a turn, which pint's dimensionless radian drops.
     """
@@ -497,13 +500,20 @@ def _magnitude(value: Any, target: str, expected: str, key: str, angle_power: in
         return float(value)
     if not isinstance(value, str):
         raise ConfigError(f"{key}: expected a number or a quantity string, got {shown(value)}")
+    conversion = f"{target}|{'' if angle_power is None else angle_power}"
+    known = quantity_memo.recall(value, conversion)
+    if known is not None:
+        return known
     quantity = parse_quantity(value, key)
     if isinstance(quantity, int | float):
         return float(quantity)
     if quantity.unitless:
         # a bare number written as text ("7.5e-3") is SI, as a number would be
         return float(quantity.magnitude)
-    return _pint_magnitude(value, quantity, _unit(target), expected, key, angle_power)
+    magnitude = _pint_magnitude(value, quantity, _unit(target), expected, key, angle_power)
+    if math.isfinite(magnitude) and abs(magnitude) <= MAX_MAGNITUDE:
+        quantity_memo.remember(value, conversion, magnitude)
+    return magnitude
 
 
 def _pint_magnitude(
