@@ -69,8 +69,18 @@ def test_a_memo_of_other_code_or_another_pint_is_not_read(tmp_path):
     assert json.loads((tmp_path / quantity_memo.FILE_NAME).read_text())["stamp"] != "another"
 
 
-@pytest.mark.parametrize("content", ["", "{", "[1, 2]", '{"stamp": 3}', "\x00\xff"])
+def stamped(texts: object) -> str:
+    return json.dumps({"stamp": quantity_memo.stamp(), "texts": texts})
+
+
+@pytest.mark.parametrize(
+    "content",
+    ["", "{", "[1, 2]", '{"stamp": 3}', "\x00\xff", "STAMPED-TEXT", "STAMPED-TARGET"],
+)
 def test_a_broken_memo_is_no_error(tmp_path, content):
+    # (an entry of the right stamp but the wrong shape is read as absent)
+    content = content.replace("STAMPED-TEXT", stamped({"120 rpm": 5}))
+    content = content.replace("STAMPED-TARGET", stamped({"120 rpm": {"rad/s|1": True}}))
     (tmp_path / quantity_memo.FILE_NAME).write_text(content, encoding="latin-1")
     code = (
         "import json\nfrom jointwear.units import to_si\n"

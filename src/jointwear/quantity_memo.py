@@ -103,7 +103,9 @@ def recall(text: str, target: str) -> float | None:
     """
     known = _texts().get(text)
     value = known.get(target) if isinstance(known, dict) else None
-    return float(value) if isinstance(value, int | float) and math.isfinite(value) else None
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        return None
+    return float(value) if math.isfinite(value) else None
 
 
 def has_unit(text: str) -> bool:
@@ -114,7 +116,8 @@ def has_unit(text: str) -> bool:
     text : str
         The quantity text as given.
     """
-    return text in _texts()
+    known = _texts().get(text)
+    return isinstance(known, dict) and bool(known)
 
 
 def remember(text: str, target: str, magnitude: float) -> None:
@@ -134,7 +137,9 @@ def remember(text: str, target: str, magnitude: float) -> None:
         return
     with _lock:
         texts = _texts()
-        texts.setdefault(text, {})[target] = magnitude
+        if not isinstance(texts.get(text), dict):
+            texts[text] = {}
+        texts[text][target] = magnitude
         while len(texts) > MAX_TEXTS:
             del texts[next(iter(texts))]
         try:
