@@ -30,7 +30,9 @@ PAPER_CONFIG = REPO / "tests" / "data" / "paper_joint.toml"
 #: the suite's own memo of quantity texts (jointwear.quantity_memo), inherited by the
 #: processes it starts: the user's cache folder is left alone
 OWN_MEMO = "JOINTWEAR_CACHE_DIR" not in os.environ
-MEMO = os.environ.setdefault("JOINTWEAR_CACHE_DIR", tempfile.mkdtemp(prefix="jointwear-memo-"))
+if OWN_MEMO:
+    os.environ["JOINTWEAR_CACHE_DIR"] = tempfile.mkdtemp(prefix="jointwear-memo-")
+MEMO = os.environ["JOINTWEAR_CACHE_DIR"]
 
 
 def pytest_unconfigure(config) -> None:
