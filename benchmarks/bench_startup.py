@@ -12,6 +12,31 @@ on the ``src`` of revision REV (unpacked from git) in the same turns, and the ra
 median of the run-by-run ratios. The last columns list the heavy libraries the command
 loaded, and with ``--baseline`` those the baseline loaded (one extra, untimed run each).
 Every process starts from bytecode, as an installed package does (``benchlib.environment``).
+
+The processes share a memo of quantity texts of their own (``jointwear.quantity_memo``, in
+the run's temporary folder), filled by the warm-up runs: a run of the paper's config then
+imports no pint, and no dask where dask is installed. The row ``no memo`` runs with the
+memo turned off (``JOINTWEAR_CACHE_DIR=''``), as a config's first run reads its texts.
+
+Measured in one run per install and baseline, ``--repeat 7``, on the shared 2-core
+machine (load average 2-6), ratio = median of the run-by-run ratios; "before" is the
+``no memo`` row (every text read by pint, as before the memo):
+
+==========================================  ===============  ===============
+one revolution, paper case                  no dask          dask installed
+==========================================  ===============  ===============
+plain runs against fd952ba, before          1.00             1.18
+plain runs against fd952ba, now             0.69-0.76        0.76-0.79
+``--out DIR --no-plots`` against fd952ba    0.96             1.41
+plain runs against 502034c                  0.72-0.76        0.65-0.68
+nlcp run, median wall now / fd952ba         0.692 / 0.902 s  1.185 / 1.404 s
+==========================================  ===============  ===============
+
+(fd952ba hid dask from pint and xarray by editing ``sys.modules``; 502034c is the code
+just before the memo.) A ``--out`` run where dask is installed stays at 1.41: xarray
+itself imports ``dask.array`` when it builds a Dataset, ``distributed`` when it writes
+netCDF and pint (with ``dask.base``) when it builds an index. docs/performance.md,
+*Start-up*, has every row.
 """
 
 from __future__ import annotations
@@ -38,9 +63,10 @@ from benchlib import (
 
 sys.path.insert(0, str(SRC))
 from jointwear.contact.solver import COMPILED_KERNEL_SOLVES
+from jointwear.quantity_memo import ENVIRONMENT as MEMO
 
 MODELS = ("nlcp", "winkler", "asymmetric-winkler", "hertz")
-HEAVY = ("numba", "xarray", "pandas", "dask", "dask.array", "distributed", "matplotlib")
+HEAVY = ("pint", "numba", "xarray", "pandas", "dask", "dask.array", "distributed", "matplotlib")
 #: target of a one-revolution run, whole process [s]
 TARGET = 0.8
 
@@ -109,14 +135,21 @@ def main() -> None:
     cases[f"run, nlcp, {first.replace(', ', ' + ')} imported first"] = [
         sys.executable, "-c", eager,
     ]  # fmt: skip
+    # the memo of quantity texts in a folder of its own, filled by the warm-up runs; the
+    # same run with no memo reads every text with pint (the code before had no memo)
+    memo = {MEMO: str(out / "memo")}
+    no_memo = f"run, nlcp, no memo ({MEMO}='')"
+    cases[no_memo] = run_command()
     baseline = checkout(args.baseline) if args.baseline else None
     commands = {}
     for name, command in cases.items():
-        commands[name] = (command, environment())
+        memo_env = {MEMO: ""} if name == no_memo else memo
+        commands[name] = (command, environment(**memo_env))
         if baseline is not None:
-            commands[f"{name} [baseline]"] = (command, environment(baseline))
+            commands[f"{name} [baseline]"] = (command, environment(baseline, **memo_env))
     commands[f"run, nlcp, {above} revolutions every 1, JOINTWEAR_NO_NUMBA=1"] = (
-        at_threshold, environment(JOINTWEAR_NO_NUMBA="1")
+        at_threshold,
+        environment(JOINTWEAR_NO_NUMBA="1", **memo),
     )
     times = interleaved(commands, repeat)
     header = ["command (paper case, one revolution)", "median wall [s]"]

@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import json
+import os
+import shutil
 import signal
+import tempfile
 import warnings
 from pathlib import Path
 from typing import Any
@@ -24,6 +27,17 @@ settings.load_profile("default")
 
 REPO = Path(__file__).resolve().parents[1]
 PAPER_CONFIG = REPO / "tests" / "data" / "paper_joint.toml"
+#: the suite's own memo of quantity texts (jointwear.quantity_memo), inherited by the
+#: processes it starts: the user's cache folder is left alone
+OWN_MEMO = "JOINTWEAR_CACHE_DIR" not in os.environ
+if OWN_MEMO:
+    os.environ["JOINTWEAR_CACHE_DIR"] = tempfile.mkdtemp(prefix="jointwear-memo-")
+MEMO = os.environ["JOINTWEAR_CACHE_DIR"]
+
+
+def pytest_unconfigure(config) -> None:
+    if OWN_MEMO:
+        shutil.rmtree(MEMO, ignore_errors=True)
 
 
 def strict_json(text: str) -> Any:

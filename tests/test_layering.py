@@ -35,6 +35,8 @@ LAYERS: tuple[tuple[str, tuple[str, ...]], ...] = (
         (
             "jointwear.errors",
             "jointwear.version",
+            # pint's conversions of quantity texts remembered between processes
+            "jointwear.quantity_memo",
             "jointwear.units",
             "jointwear.registry",
             "jointwear.tables",

@@ -37,7 +37,7 @@ from typing import Any
 
 from jointwear.errors import ConfigError
 from jointwear.registry import suggest
-from jointwear.units import DIMENSIONS, format_quantity, to_si, ureg
+from jointwear.units import DIMENSIONS, format_quantity, registry, to_si
 
 __all__ = [
     "BOUNDARY_KEY",
@@ -368,7 +368,7 @@ def _point(value: Any, kind: str, key: str) -> float:
         return float(value)
     number, _, unit = value.strip().partition(" ")
     try:
-        return float(ureg.Quantity(float(number), unit.strip() or "K").to("K").magnitude)
+        return float(registry().Quantity(float(number), unit.strip() or "K").to("K").magnitude)
     except Exception as exc:  # pint's and float's errors alike: one message
         raise ConfigError(f"{key}: cannot read {value!r} as a temperature ({exc})") from None
 

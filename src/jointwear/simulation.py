@@ -19,7 +19,7 @@ from jointwear.compile_time import Clock
 from jointwear.config import Config
 from jointwear.contact import ContactSolution
 from jointwear.contact.solver import ContactSolver, WarmStart
-from jointwear.errors import ConfigError
+from jointwear.coupling.joints import joint_records
 from jointwear.geometry.contour import BushingContour
 from jointwear.record import RunRecord, UpdateRecorder
 from jointwear.state import SimulationState
@@ -180,27 +180,10 @@ class Simulation:
 
         if self.joint is not None or len(self.config.joints) == 1:
             return WearResult.of_record(self.record(progress, state, on_step, pressures))
-        if state is not None or on_step is not None:
-            raise ConfigError(
-                "simulation.checkpoint_every: checkpoints hold one clearance joint; give "
-                "mechanism.clearance_joint a single joint to checkpoint"
-            )
+        resumed = state is not None or on_step is not None
         clock = Clock()
-        records = [
-            self._joint_run(joint, cycle).record(progress, pressures=pressures)
-            for joint, cycle in self.load.cycles.items()
-        ]
+        records = joint_records(self, progress, resumed, pressures)
         return WearResult.of_joints(self.config, records, **clock.times(self.setup_compile_time))
-
-    def _joint_run(self, joint: str, cycle: LoadCycle) -> Simulation:
-        """One of several joints' runs from its unworn ``cycle`` (coupled: solved again)."""
-        coupled = self.load.schedule.coupled
-        run = Simulation(
-            self.config, self.contact_model, None if coupled else cycle, joint, self.wear_law
-        )
-        if coupled:
-            run.load.use(cycle)
-        return run
 
     def record(
         self,

@@ -18,7 +18,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from jointwear.errors import ConfigError, DataError
-from jointwear.units import parse_unit, ureg
+from jointwear.units import parse_unit, registry
 
 __all__ = [
     "delimiter_of",
@@ -162,6 +162,6 @@ def unit_factor(unit: str, target: str = "m") -> float | None:
         parsed = parse_unit(unit)  # bounded: a header cannot make pint compute 9**9**9
     except ConfigError:
         return None
-    if parsed.dimensionality != ureg.Unit(target).dimensionality:
+    if parsed.dimensionality != registry().Unit(target).dimensionality:
         return None
-    return float(ureg.Quantity(1.0, parsed).to(target).magnitude)
+    return float(registry().Quantity(1.0, parsed).to(target).magnitude)

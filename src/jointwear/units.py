@@ -32,11 +32,13 @@ import io
 import math
 import tokenize
 from functools import cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import pint
-
+from jointwear import quantity_memo
 from jointwear.errors import ConfigError
+
+if TYPE_CHECKING:
+    import pint
 
 __all__ = [
     "BARE_LIMITS",
@@ -50,6 +52,7 @@ __all__ = [
     "format_quantity",
     "parse_quantity",
     "parse_unit",
+    "registry",
     "shown",
     "to_angle",
     "to_si",
@@ -69,18 +72,38 @@ MAX_MAGNITUDE = 1e100
 MAX_TURN_ANGLE = 4 * math.pi
 
 
-def _registry() -> pint.UnitRegistry:
+@cache
+def registry() -> pint.UnitRegistry:
+    """The package's unit registry (:data:`ureg`), built when a text is first read.
+
+    pint is imported here, not with this module: a value given as a plain SI number
+    needs no unit, and pint's import costs ~0.15 s of a run's start (~0.3 s where
+    dask is installed, whose ``dask.base`` pint imports with itself).
+    """
+    import pint
+
     # parsing pint's definition files costs ~0.2 s at every start; its on-disk
     # cache brings that to ~0.03 s. A cache that cannot be written is no error.
     try:
-        return pint.UnitRegistry(cache_folder=":auto:")
+        units = pint.UnitRegistry(cache_folder=":auto:")
     except Exception:
-        return pint.UnitRegistry()
+        units = pint.UnitRegistry()
+    units.define("rpm = revolution / minute")
+    units.define("@alias revolution = rev")
+    return units
 
 
-ureg = _registry()
-ureg.define("rpm = revolution / minute")
-ureg.define("@alias revolution = rev")
+if TYPE_CHECKING:
+    #: the package's unit registry (:func:`registry`)
+    ureg: pint.UnitRegistry
+
+
+def __getattr__(name: str) -> Any:
+    # ``ureg``: the registry, built on first use (PEP 562 module attribute)
+    if name == "ureg":
+        return registry()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 #: SI unit used for each physical kind of parameter.
 DIMENSIONS: dict[str, str] = {
@@ -128,8 +151,8 @@ BARE_LIMITS: dict[str, tuple[float, str]] = {
 
 
 @cache
-def _unit(kind: str) -> pint.Unit:
-    return ureg.Unit(DIMENSIONS[kind])
+def _unit(text: str) -> pint.Unit:
+    return registry().Unit(text)
 
 
 def to_si(value: Any, kind: str, key: str = "value", *, bare_limit: float | None = None) -> float:
@@ -166,7 +189,7 @@ def to_si(value: Any, kind: str, key: str = "value", *, bare_limit: float | None
     what = kind.replace("_", " ")
     article = "an" if what[0] in "aeiou" else "a"
     expected = f"{article} {what} (e.g. in {DIMENSIONS[kind] or 'dimensionless'})"
-    magnitude = _convert(value, _unit(kind), expected, key, _PER_TIME_ANGLE_POWER.get(kind))
+    magnitude = _convert(value, DIMENSIONS[kind], expected, key, _PER_TIME_ANGLE_POWER.get(kind))
     if bare_limit is not None:
         check_bare(value, kind, key, bare_limit)
     return magnitude
@@ -185,6 +208,8 @@ def bare_number(value: Any) -> float | None:
     if isinstance(value, int | float):
         number = float(value) if abs(value) <= MAX_MAGNITUDE else math.inf
     elif isinstance(value, str):
+        if quantity_memo.has_unit(value):  # pint read it with a unit before
+            return None
         try:
             quantity = parse_quantity(value)
         except ConfigError:
@@ -254,7 +279,7 @@ def to_si_unit(value: Any, unit: str, key: str = "value") -> float:
     key : str
         Name used in error messages (dotted config key).
     """
-    return _convert(value, ureg.Unit(unit), f"a quantity in {unit}", key)
+    return _convert(value, unit, f"a quantity in {unit}", key)
 
 
 def to_angle(value: Any, key: str = "value", limit: float = MAX_TURN_ANGLE) -> float:
@@ -311,8 +336,10 @@ def _check_expression(text: str, key: str) -> None:
         raise ConfigError(
             f"{key}: {shown(text)} is too long for a quantity ({MAX_EXPRESSION} characters at most)"
         )
+    from pint.util import string_preprocessor
+
     try:
-        canonical = pint.util.string_preprocessor(text)
+        canonical = string_preprocessor(text)
         tokens = [
             t
             for t in tokenize.generate_tokens(io.StringIO(canonical).readline)
@@ -402,7 +429,7 @@ def parse_quantity(text: str, key: str = "value") -> Any:
     text = text.strip()
     _check_expression(text, key)
     try:
-        return ureg.Quantity(text)
+        return registry().Quantity(text)
     except OverflowError:
         raise ConfigError(
             f"{key}: {shown(text)} is beyond any physical value "
@@ -431,14 +458,14 @@ def parse_unit(text: str, key: str = "unit") -> pint.Unit:
     text = text.strip()
     _check_expression(text, key)
     try:
-        return ureg.Unit(text)
+        return registry().Unit(text)
     except Exception as exc:
         why = " ".join(str(exc).split()) or type(exc).__name__
         raise ConfigError(f"{key}: cannot read {shown(text)} as a unit ({why})") from None
 
 
 def _convert(
-    value: Any, target: pint.Unit, expected: str, key: str, angle_power: int | None = None
+    value: Any, target: str, expected: str, key: str, angle_power: int | None = None
 ) -> float:
     if isinstance(value, bool):
         raise ConfigError(f"{key}: expected a number or a quantity string, got a boolean")
@@ -458,33 +485,46 @@ def _convert(
 
 def _radian_power(unit: Any) -> float:
     """Power of the radian in a unit: 1 for rpm, deg/s or rad/s, 0 for Hz, 1/min, m."""
-    return dict(ureg.Quantity(1.0, unit).to_root_units().unit_items()).get("radian", 0)
+    return dict(registry().Quantity(1.0, unit).to_root_units().unit_items()).get("radian", 0)
 
 
-def _magnitude(
-    value: Any, target: pint.Unit, expected: str, key: str, angle_power: int | None
-) -> float:
+def _magnitude(value: Any, target: str, expected: str, key: str, angle_power: int | None) -> float:
     """SI magnitude of a number or quantity text (may overflow to inf or raise).
 
-    ``angle_power`` (for a rate: 1 in rad/s, 0 in Hz) makes a rate of the other
-    kind convert with the factor 2π of a turn, which pint's dimensionless radian
-    drops.
+    ``target`` is the SI unit's text. A text goes to pint unless pint read it for the
+    same target before (:mod:`jointwear.quantity_memo`); a plain number needs no pint.
+    ``angle_power`` (for a rate: 1 in rad/s, 0 in Hz) makes a rate of the other kind
+    convert with the factor 2π of a turn, which pint's dimensionless radian drops.
     """
     if isinstance(value, int | float):
         return float(value)
     if not isinstance(value, str):
         raise ConfigError(f"{key}: expected a number or a quantity string, got {shown(value)}")
+    conversion = f"{target}|{'' if angle_power is None else angle_power}"
+    known = quantity_memo.recall(value, conversion)
+    if known is not None:
+        return known
     quantity = parse_quantity(value, key)
     if isinstance(quantity, int | float):
         return float(quantity)
     if quantity.unitless:
         # a bare number written as text ("7.5e-3") is SI, as a number would be
         return float(quantity.magnitude)
-    if not quantity.check(target.dimensionality):
+    magnitude = _pint_magnitude(value, quantity, _unit(target), expected, key, angle_power)
+    if math.isfinite(magnitude) and abs(magnitude) <= MAX_MAGNITUDE:
+        quantity_memo.remember(value, conversion, magnitude)
+    return magnitude
+
+
+def _pint_magnitude(
+    value: str, quantity: Any, unit: pint.Unit, expected: str, key: str, angle_power: int | None
+) -> float:
+    """pint's SI magnitude of a quantity with a unit (see :func:`_magnitude`)."""
+    if not quantity.check(unit.dimensionality):
         raise ConfigError(
             f"{key}: {shown(value)} has dimension {quantity.dimensionality}, expected {expected}"
         )
-    magnitude = float(quantity.to(target).magnitude)
+    magnitude = float(quantity.to(unit).magnitude)
     if angle_power is None:
         return magnitude
     given = _radian_power(quantity.units)
@@ -508,7 +548,8 @@ def format_quantity(value: float, unit: str, digits: int = 6) -> str:
     digits : int
         Significant digits.
     """
-    quantity = ureg.Quantity(value, ureg.Unit(_si_unit_for(unit))).to(unit)
+    units = registry()
+    quantity = units.Quantity(value, units.Unit(_si_unit_for(unit))).to(unit)
     return f"{quantity.magnitude:.{digits}g} {unit}"
 
 
@@ -518,12 +559,13 @@ def _si_unit_for(unit: str) -> str:
     The power of the radian must match too: an angular velocity is shown in rpm or
     deg/s, a frequency in Hz or 1/min (pint's dimensionless radian would mix them).
     """
-    parsed = ureg.Unit(unit)
+    units = registry()
+    parsed = units.Unit(unit)
     for si in DIMENSIONS.values():
         if (
             si
-            and ureg.Unit(si).dimensionality == parsed.dimensionality
+            and units.Unit(si).dimensionality == parsed.dimensionality
             and _radian_power(si) == _radian_power(parsed)
         ):
             return si
-    return str(ureg.Quantity(1, unit).to_base_units().units)
+    return str(units.Quantity(1, unit).to_base_units().units)

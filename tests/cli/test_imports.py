@@ -69,6 +69,16 @@ def test_plain_run_imports_no_dataset_plotting_or_compiler_library(
     assert not [m for m in modules if m.startswith(others)]
 
 
+def test_a_config_of_si_numbers_runs_without_pint(paper_config_path, tmp_path):
+    # a plain number is SI: no text to read, so no pint (nor the dask.base pint imports
+    # where dask is installed); the resolved config of the paper's joint is all numbers
+    config = tmp_path / "si.toml"
+    config.write_text(load_config(paper_config_path).to_toml())
+    modules = loaded_after(cli(["run", str(config), *ONE_REVOLUTION]), tmp_path)
+    assert "pint" not in modules
+    assert "dask" not in modules
+
+
 def test_short_contact_impact_run_does_not_load_numba(paper_config_path, tmp_path):
     # one settled revolution of contact-impact dynamics is faster in Python than numba's load
     # (under LSODA; the default "auto" integrates the slider-crank compiled whatever the run)

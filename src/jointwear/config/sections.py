@@ -36,7 +36,7 @@ from jointwear.config.fields import (
 )
 from jointwear.config.wear_table import TableCoefficients, TablePoints, WearTable, check_table
 from jointwear.errors import ConfigError
-from jointwear.units import to_si_unit, ureg
+from jointwear.units import registry, to_si_unit
 
 __all__ = [
     "NAMED",
@@ -370,7 +370,9 @@ def read_temperature(value: Any) -> float:
     if isinstance(value, str):
         number, _, unit = value.strip().partition(" ")
         try:
-            kelvin = float(ureg.Quantity(float(number), unit.strip() or "K").to("K").magnitude)
+            kelvin = float(
+                registry().Quantity(float(number), unit.strip() or "K").to("K").magnitude
+            )
         except Exception as exc:  # pint's and float's errors alike: one message
             raise ValueError(f"cannot read {value!r} as a temperature ({exc})") from None
     elif isinstance(value, int | float) and not isinstance(value, bool):

@@ -9,7 +9,8 @@ to the next, used by the loop over revolutions (:class:`jointwear.simulation.Sim
   joint, and the record of each solve;
 * :mod:`~jointwear.coupling.limits` — the ``[life]`` limits and the interpolated stop;
 * :mod:`~jointwear.coupling.feedback` — the warnings a run gives once when its wear
-  questions its load.
+  questions its load;
+* :mod:`~jointwear.coupling.joints` — a mechanism's several clearance joints, a run each.
 """
 
 from __future__ import annotations

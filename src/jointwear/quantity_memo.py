@@ -1,0 +1,162 @@
+"""Quantity texts read before: pint's SI magnitudes kept between processes.
+
+A run reads its config's quantity texts (``"70 mm"``, ``"120 rpm"``) with pint
+(:mod:`jointwear.units`). pint's import costs ~0.15 s of a run's start, ~0.3 s where
+dask is installed (pint imports ``dask.base`` with itself). A text pint has converted
+is remembered here with the SI magnitude pint gave, so that a process that reads only
+texts read before imports no pint. The memo holds pint's answers, nothing computed
+otherwise: a text not in it, and every text that is refused, goes to pint.
+
+The memo is one JSON file in the user's cache folder (:func:`folder`; the environment
+variable :data:`ENVIRONMENT` names another folder, an empty value turns the memo off).
+It is stamped with what the answers depend on: the source of :mod:`jointwear.units`
+(the package's definitions and its rules for angles and turns) and pint's installed
+files; a file of another stamp is read as empty and replaced. A folder that cannot be
+read or written is no error: the texts then go to pint, as without a memo.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import os
+import tempfile
+import threading
+from functools import cache
+from importlib.util import find_spec
+from pathlib import Path
+
+__all__ = ["ENVIRONMENT", "MAX_TEXTS", "folder", "has_unit", "recall", "remember", "stamp"]
+
+#: environment variable naming the memo's folder (empty: no memo)
+ENVIRONMENT = "JOINTWEAR_CACHE_DIR"
+#: most texts remembered (the oldest are dropped first)
+MAX_TEXTS = 4096
+#: the memo's file in :func:`folder`
+FILE_NAME = "quantities.json"
+#: the source whose rules the answers follow
+UNITS_SOURCE = Path(__file__).with_name("units.py")
+
+_lock = threading.Lock()
+
+
+def folder() -> Path | None:
+    """The memo's folder: :data:`ENVIRONMENT`, else the user's cache folder of jointwear."""
+    chosen = os.environ.get(ENVIRONMENT)
+    if chosen is not None:
+        return Path(chosen) if chosen.strip() else None
+    try:
+        import platformdirs
+    except ImportError:
+        return None
+    return Path(platformdirs.user_cache_path("jointwear", appauthor=False))
+
+
+@cache
+def stamp() -> str:
+    """What pint's answers depend on: the units module's source and pint's installed files."""
+    digest = hashlib.sha256(UNITS_SOURCE.read_bytes())
+    spec = find_spec("pint")
+    origin = Path(spec.origin) if spec is not None and spec.origin else None
+    if origin is not None:
+        for name in ("__init__.py", "default_en.txt", "constants_en.txt"):
+            try:
+                status = (origin.parent / name).stat()
+            except OSError:
+                continue
+            digest.update(f"{origin.parent / name}:{status.st_size}:{status.st_mtime_ns};".encode())
+    return digest.hexdigest()[:32]
+
+
+@cache
+def _texts() -> dict[str, dict[str, float]]:
+    """The remembered texts of this process: text -> {target: SI magnitude}."""
+    where = folder()
+    if where is None:
+        return {}
+    try:
+        data = json.loads((where / FILE_NAME).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    if not isinstance(data, dict) or data.get("stamp") != stamp():
+        return {}
+    texts = data.get("texts")
+    return texts if isinstance(texts, dict) else {}
+
+
+def recall(text: str, target: str) -> float | None:
+    """The SI magnitude pint gave ``text`` in ``target``, or None if not remembered.
+
+    Parameters
+    ----------
+    text : str
+        The quantity text as given, e.g. ``"70 mm"``.
+    target : str
+        The conversion it was read for: the SI unit and the power of the radian of a
+        rate, as :mod:`jointwear.units` names it (e.g. ``"m|"``, ``"rad/s|1"``).
+
+    Returns
+    -------
+    float or None
+        The magnitude [SI unit of ``target``].
+    """
+    known = _texts().get(text)
+    value = known.get(target) if isinstance(known, dict) else None
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        return None
+    return float(value) if math.isfinite(value) else None
+
+
+def has_unit(text: str) -> bool:
+    """Whether pint read ``text`` before as a quantity with a unit (not a bare number).
+
+    Parameters
+    ----------
+    text : str
+        The quantity text as given.
+    """
+    known = _texts().get(text)
+    return isinstance(known, dict) and bool(known)
+
+
+def remember(text: str, target: str, magnitude: float) -> None:
+    """Keep pint's SI magnitude of ``text`` in ``target`` for later processes.
+
+    Parameters
+    ----------
+    text : str
+        The quantity text as given; it carries a unit.
+    target : str
+        The conversion (see :func:`recall`).
+    magnitude : float
+        pint's answer [SI unit of ``target``].
+    """
+    where = folder()
+    if where is None:
+        return
+    with _lock:
+        texts = _texts()
+        if not isinstance(texts.get(text), dict):
+            texts[text] = {}
+        texts[text][target] = magnitude
+        while len(texts) > MAX_TEXTS:
+            del texts[next(iter(texts))]
+        try:
+            where.mkdir(parents=True, exist_ok=True)
+            _write(where, {"stamp": stamp(), "texts": texts})
+        except (OSError, ValueError):
+            pass
+
+
+def _write(where: Path, data: dict) -> None:
+    # written whole to a file beside it, then moved over it: a reader in another
+    # process sees the old memo or the new one, never half of one
+    handle, name = tempfile.mkstemp(dir=where, prefix=".quantities-", suffix=".json")
+    try:
+        with os.fdopen(handle, "w", encoding="utf-8") as out:
+            json.dump(data, out, allow_nan=False)
+        os.replace(name, where / FILE_NAME)
+    except BaseException:
+        Path(name).unlink(missing_ok=True)
+        raise
