@@ -1,4 +1,5 @@
-"""The Dormand–Prince 5(4) pair with its 4th-order dense output: ``scipy.integrate.RK45``'s tables.
+"""The Dormand–Prince 5(4) pair [1]_ with its 4th-order dense output: ``scipy.integrate.RK45``'s
+tables.
 
 Written as scipy writes them (the same floats: the compiled integrators take scipy's
 steps, tested), so that a run does not import ``scipy.integrate`` (half a second) for

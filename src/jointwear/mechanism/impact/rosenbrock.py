@@ -5,7 +5,7 @@ pin's approach to the wall with a squeeze term that grows like ``(1 - eps_f^2)^{
 with the pin on the wall or in the transition band its damping is 1e8-1e10 N s/m,
 which over the body's mass puts eigenvalues of -1e7 to -1e9 1/s into the equations of
 motion. An explicit method (``RK45-compiled``) is then held by its stability, not its
-accuracy, to steps of ~3/|lambda|: 10^6-10^8 right-hand sides per revolution where a
+accuracy, to steps of ``~3/|lambda|``: 10^6-10^8 right-hand sides per revolution where a
 dry one needs 10^4. A linearly implicit method is not.
 
 RODAS4 (Hairer & Wanner [1]_, Sec. IV.7; the coefficients of their code ``rodas.f``,
@@ -488,6 +488,187 @@ def _spectral_radius(jac, x, z):  # type: ignore[no-untyped-def]
     return math.exp(growth / POWER_STEPS)
 
 
+def _attempt(
+    explicit,
+    t,
+    t_end,
+    y,
+    f,
+    h_abs,
+    min_step,
+    v_imp,
+    p,
+    wear,
+    jac,
+    f_t,
+    lu,
+    pivots,
+    k,
+    kk,
+    point,
+    y_new,
+    rtol,
+    atol,
+    control,
+):  # type: ignore[no-untyped-def]
+    """Steps from ``(t, y)`` until one is accepted, into ``y_new``: ``(accepted, t_new, h,
+    h_abs, stiffness, right-hand sides)``, ``h_abs`` the next step's size, ``stiffness`` the
+    explicit pair's ``|lambda|``. ``control`` holds ``(rejected, accepted before, h_acc,
+    err_acc)`` of the step control, updated."""
+    nfev = 0
+    while True:
+        if h_abs < min_step:
+            return False, t, 0.0, h_abs, 0.0, nfev
+        t_new = min(t + h_abs, t_end)
+        h = t_new - t
+        if explicit:
+            err, stiffness = _explicit_step(t, y, f, h, v_imp, p, wear, kk, point, y_new,
+                                            rtol, atol)  # fmt: skip
+            nfev += 6
+            h_abs = h * _explicit_factor(err, control[0] != 0.0)
+            control[0] = 1.0 if err >= 1.0 else 0.0
+            if err < 1.0:
+                return True, t_new, h, h_abs, stiffness, nfev
+            continue
+        err = _step(t, y, f, jac, f_t, h, v_imp, p, wear, lu, pivots, k, point, y_new,
+                    rtol, atol)  # fmt: skip
+        nfev += _STAGES - 1
+        if err <= 1.0:
+            h_abs = _next_step(h, err, control[1] != 0.0, control[2], control[3])
+            if control[0] != 0.0:
+                h_abs = min(h_abs, h)
+            control[0], control[1], control[2], control[3] = 0.0, 1.0, h, max(0.01, err)
+            return True, t_new, h, h_abs, 0.0, nfev
+        if not math.isfinite(err):
+            h_abs = 0.5 * h
+        elif control[1] == 0.0:
+            h_abs = 0.1 * h
+        else:
+            h_abs = _next_step(h, err, False, control[2], control[3])
+        control[0] = 1.0
+
+
+def _switch(explicit, h, h_abs, stiffness, jac, x, z, votes, calm):  # type: ignore[no-untyped-def]
+    """Whether the next step is explicit, and the switch's counts ``(explicit, votes, calm)``.
+
+    The explicit pair hands over on DOPRI5's test: steps held by stability, ``h |lambda| >
+    3.25``, fifteen times (six steps in a row below it start the count again). RODAS4 hands
+    back once its six right-hand sides fewer a step would buy more than its longer steps:
+    its step below :data:`EXPLICIT_CHEAPER` times the explicit pair's stability limit,
+    fifteen steps in a row.
+    """
+    if not SWITCHING:
+        return False, 0, 0
+    if explicit:
+        if h * stiffness > STIFF_STEP:
+            votes, calm = votes + 1, 0
+        else:
+            calm += 1
+            if calm >= CALM_STEPS:
+                votes = 0
+        if votes >= SWITCH_VOTES:
+            return False, 0, 0
+        return True, votes, calm
+    if h_abs * _spectral_radius(jac, x, z) < EXPLICIT_CHEAPER * STIFF_STEP:
+        votes += 1
+    else:
+        votes = 0
+    if votes >= SWITCH_VOTES:
+        return True, 0, 0
+    return False, votes, calm
+
+
+def _step_events(
+    in_contact,
+    g,
+    rate,
+    g_new,
+    rate_new,
+    t,
+    t_new,
+    h,
+    t_end,
+    y,
+    q,
+    p,
+    wear,
+    samples,
+    next_sample,
+    sample_states,
+    sample_segment,
+    n_seg,
+    peak_t,
+    peak_y,
+    peak_segment,
+    n_peaks,
+):  # type: ignore[no-untyped-def]
+    """The step's contact event, penetration maximum and samples: ``(crossed, t_stop,
+    next_sample, n_peaks)``, ``t_stop`` the event's time (``t_end`` without one)."""
+    peak = in_contact and rate >= 0.0 and rate_new <= 0.0
+    crossed = (g >= 0.0 and g_new <= 0.0) if in_contact else (g <= 0.0 and g_new >= 0.0)
+    t_stop = t_end
+    if crossed:
+        t_stop = _root(0, t, t_new, h, y, q, p, wear)
+    if peak:
+        t_peak = _root(1, t, t_new, h, y, q, p, wear)
+        if (not crossed or t_peak < t_stop) and n_peaks < peak_t.size:
+            peak_t[n_peaks] = t_peak
+            peak_y[n_peaks] = _dense(t_peak, t, h, y, q)
+            peak_segment[n_peaks] = n_seg
+            n_peaks += 1
+    upto = t_stop if crossed else t_new
+    closed = not crossed and t_new >= t_end
+    next_sample = _take_samples(
+        samples, next_sample, upto, closed, t, h, y, q, sample_states, sample_segment, n_seg
+    )
+    return crossed, t_stop, next_sample, n_peaks
+
+
+def _segment_end(
+    t,
+    y,
+    p,
+    wear,
+    in_contact,
+    stop_on_separation,
+    seg_start,
+    seg_rate,
+    segment,
+    stalled,
+    v_imp,
+    floor,
+):  # type: ignore[no-untyped-def]
+    """After a contact event at ``t``: ``(status, stalled, v_imp)``, the segment's event rate
+    recorded, the approach velocity of a contact that starts."""
+    if in_contact and stop_on_separation:
+        return SEPARATED, stalled, v_imp
+    stalled = stalled + 1 if t - seg_start[segment] <= 1e-14 * max(1.0, abs(t)) else 0
+    if stalled > 100:
+        return CHATTER, stalled, v_imp
+    event_rate = gap_and_rate(t, y, p, wear)[1]
+    seg_rate[segment] = event_rate
+    return OK, stalled, (v_imp if in_contact else max(event_rate, floor))
+
+
+def _records(samples, capacity, n):  # type: ignore[no-untyped-def]
+    """The states at the samples, their segments, and the segments' starts, ends, contact
+    flags, approach velocities and event rates."""
+    return (
+        np.full((samples, n), np.nan), np.zeros(samples, dtype=np.int64), np.empty(capacity),
+        np.empty(capacity), np.zeros(capacity, dtype=np.bool_), np.empty(capacity),
+        np.empty(capacity),
+    )  # fmt: skip
+
+
+def _work_arrays(n):  # type: ignore[no-untyped-def]
+    """The Jacobian, ``f_t``, a state, the LU and its pivots, the step control, RODAS4's and
+    the explicit pair's stages, a stage point and the dense output's coefficients."""
+    return (
+        np.zeros((n, n)), np.empty(n), np.empty(n), np.empty((n, n)), np.zeros(n, dtype=np.int64),
+        np.zeros(4), np.empty((_STAGES, n)), np.empty((7, n)), np.empty(n), np.empty((n, 4)),
+    )  # fmt: skip
+
+
 def integrate(
     t0, t_end, y0, in_contact, v_imp, floor, p, wear, rtol, atol, max_step, samples, capacity,
     stop_on_separation,
@@ -500,22 +681,17 @@ def integrate(
     seg_velocity, seg_event_rate, n_segments, peak_t, peak_y, peak_segment, n_peaks)``.
     """
     n = y0.size
-    sample_states = np.full((samples.size, n), np.nan)
-    sample_segment = np.zeros(samples.size, dtype=np.int64)
-    seg_start, seg_end = np.empty(capacity), np.empty(capacity)
-    seg_contact = np.zeros(capacity, dtype=np.bool_)
-    seg_velocity, seg_rate = np.empty(capacity), np.empty(capacity)
+    sample_states, sample_segment, seg_start, seg_end, seg_contact, seg_velocity, seg_rate = (
+        _records(samples.size, capacity, n)
+    )
     peak_t, peak_y = np.empty(capacity), np.empty((capacity, n))
     peak_segment = np.zeros(capacity, dtype=np.int64)
-    n_seg = n_peaks = nfev = next_sample = stalled = 0
+    n_seg = n_peaks = nfev = next_sample = stalled = votes = calm = 0
     status = OK
-    jac, f_t, work = np.zeros((n, n)), np.empty(n), np.empty(n)
-    lu, pivots = np.empty((n, n)), np.zeros(n, dtype=np.int64)
-    k, kk, point, q = np.empty((_STAGES, n)), np.empty((7, n)), np.empty(n), np.empty((n, 4))
+    jac, f_t, work, lu, pivots, control, k, kk, point, q = _work_arrays(n)
     explicit = SWITCHING
-    votes = calm = 0
     t, y = t0, y0.copy()
-    while True:
+    while status == OK:
         if n_seg >= capacity:
             status = TOO_MANY_EVENTS
             break
@@ -525,123 +701,56 @@ def integrate(
         h_abs = _initial_step(t, y, f, t_end, max_step, v_imp, p, wear, rtol, atol)
         nfev += 2
         g, rate = gap_and_rate(t, y, p, wear)
-        if not in_contact:
-            rate = 0.0
-        rejected = accepted = event = False
-        h_acc = err_acc = 0.0
+        rate = rate if in_contact else 0.0
+        control[:] = 0.0
+        event = False
         while t < t_end:
             min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
             h_abs = min(max(h_abs, min_step), max_step)
             if not explicit:
                 nfev += _jacobian(t, y, f, v_imp, p, wear, jac, f_t, work)
             y_new = np.empty(n)
-            stiffness = 0.0
-            while True:
-                if h_abs < min_step:
-                    status = STEP_TOO_SMALL
-                    break
-                t_new = min(t + h_abs, t_end)
-                h = t_new - t
-                if explicit:
-                    err, stiffness = _explicit_step(t, y, f, h, v_imp, p, wear, kk, point, y_new,
-                                                    rtol, atol)  # fmt: skip
-                    nfev += 6
-                    h_abs = h * _explicit_factor(err, rejected)
-                    rejected = err >= 1.0
-                    if not rejected:
-                        break
-                    continue
-                err = _step(t, y, f, jac, f_t, h, v_imp, p, wear, lu, pivots, k, point, y_new,
-                            rtol, atol)  # fmt: skip
-                nfev += _STAGES - 1
-                if err <= 1.0:
-                    h_abs = _next_step(h, err, accepted, h_acc, err_acc)
-                    if rejected:
-                        h_abs = min(h_abs, h)
-                    h_acc, err_acc = h, max(0.01, err)
-                    rejected, accepted = False, True
-                    break
-                if not math.isfinite(err):
-                    h_abs = 0.5 * h
-                elif not accepted:
-                    h_abs = 0.1 * h
-                else:
-                    h_abs = _next_step(h, err, False, h_acc, err_acc)
-                rejected = True
-            if status != OK:
+            ok, t_new, h, h_abs, stiffness, spent = _attempt(
+                explicit, t, t_end, y, f, h_abs, min_step, v_imp, p, wear, jac, f_t, lu, pivots,
+                k, kk, point, y_new, rtol, atol, control,
+            )  # fmt: skip
+            nfev += spent
+            if not ok:
+                status = STEP_TOO_SMALL
                 break
             if explicit:
                 _explicit_interpolant(kk, q)
                 f_new = kk[6].copy()
-                # DOPRI5's test: steps held by stability, h |lambda| > 3.25, fifteen times
-                # (six steps in a row below it start the count again), and the stiff
-                # method takes over
-                if h * stiffness > STIFF_STEP:
-                    votes, calm = votes + 1, 0
-                else:
-                    calm += 1
-                    if calm >= CALM_STEPS:
-                        votes = 0
-                if votes >= SWITCH_VOTES:
-                    explicit, votes, accepted, rejected = False, 0, False, False
             else:
                 _rodas_interpolant(y, y_new, h, k, q)
                 f_new = rhs(t_new, y_new, v_imp, p, wear)
                 nfev += 1
-                # back to the explicit pair once its six right-hand sides a step cost less
-                # than RODAS4's eleven for the steps the two can take
-                radius = _spectral_radius(jac, work, point) if SWITCHING else 0.0
-                if SWITCHING and h_abs * radius < EXPLICIT_CHEAPER * STIFF_STEP:
-                    votes += 1
-                else:
-                    votes = 0
-                if votes >= SWITCH_VOTES:
-                    explicit, votes, rejected = True, 0, False
+            was_explicit = explicit
+            explicit, votes, calm = _switch(explicit, h, h_abs, stiffness, jac, work, point,
+                                            votes, calm)  # fmt: skip
+            if was_explicit and not explicit:
+                control[:] = 0.0  # RODAS4's step control starts afresh
             g_new, rate_new = gap_and_rate(t_new, y_new, p, wear)
-            peak = in_contact and rate >= 0.0 and rate_new <= 0.0
-            crossed = (g >= 0.0 and g_new <= 0.0) if in_contact else (g <= 0.0 and g_new >= 0.0)
-            t_stop = t_end
-            if crossed:
-                t_stop = _root(0, t, t_new, h, y, q, p, wear)
-            if peak:
-                t_peak = _root(1, t, t_new, h, y, q, p, wear)
-                if (not crossed or t_peak < t_stop) and n_peaks < capacity:
-                    peak_t[n_peaks] = t_peak
-                    peak_y[n_peaks] = _dense(t_peak, t, h, y, q)
-                    peak_segment[n_peaks] = n_seg
-                    n_peaks += 1
-            if crossed:
-                y_stop = _dense(t_stop, t, h, y, q)
-                next_sample = _take_samples(
-                    samples, next_sample, t_stop, False, t, h, y, q, sample_states,
-                    sample_segment, n_seg,
-                )  # fmt: skip
-                t, y, event = t_stop, y_stop, True
-                break
-            next_sample = _take_samples(
-                samples, next_sample, t_new, t_new >= t_end, t, h, y, q, sample_states,
-                sample_segment, n_seg,
+            crossed, t_stop, next_sample, n_peaks = _step_events(
+                in_contact, g, rate, g_new, rate_new, t, t_new, h, t_end, y, q, p, wear,
+                samples, next_sample, sample_states, sample_segment, n_seg, peak_t, peak_y,
+                peak_segment, n_peaks,
             )  # fmt: skip
+            if crossed:
+                t, y, event = t_stop, _dense(t_stop, t, h, y, q), True
+                break
             t, y, f, g = t_new, y_new, f_new, g_new
-            if in_contact:
-                rate = rate_new
+            rate = rate_new if in_contact else rate
         if status != OK:
             break
         seg_end[n_seg] = t
         n_seg += 1
         if not event:
             break
-        if in_contact and stop_on_separation:
-            status = SEPARATED
-            break
-        stalled = stalled + 1 if t - seg_start[n_seg - 1] <= 1e-14 * max(1.0, abs(t)) else 0
-        if stalled > 100:
-            status = CHATTER
-            break
-        event_rate = gap_and_rate(t, y, p, wear)[1]
-        seg_rate[n_seg - 1] = event_rate
-        if not in_contact:
-            v_imp = max(event_rate, floor)
+        status, stalled, v_imp = _segment_end(
+            t, y, p, wear, in_contact, stop_on_separation, seg_start, seg_rate, n_seg - 1,
+            stalled, v_imp, floor,
+        )  # fmt: skip
         in_contact = not in_contact
     return (
         status, nfev, sample_states, sample_segment, seg_start, seg_end, seg_contact,
@@ -667,6 +776,12 @@ _ORDER = (
     "_next_step",
     "_explicit_factor",
     "_spectral_radius",
+    "_attempt",
+    "_switch",
+    "_step_events",
+    "_segment_end",
+    "_records",
+    "_work_arrays",
     "integrate",
 )
 
