@@ -17,9 +17,14 @@ light rod, 0.2 mm, 240 rpm: dry, the pin flies and hits the wall; a viscous film
 it off the wall). Without settling revolutions the start transient is part of the
 timed revolution (a squeeze-film spike where the pin starts pressed into the wall).
 The numba kernels are compiled (or loaded from the cache) before anything is timed.
-Last measured (``--quick``, docs/dynamics.md): far above the target, 7.6-19x on the
-separating case and 112-5453x on the paper's joint (10^5 to 10^8 right-hand-side evaluations);
-the finite-length film is not offered in contact-impact.
+The lubricated runs integrate with ``auto``'s choice for a film, ``Rodas4-compiled`` (RODAS4
+switching with the explicit pair), the dry ones with ``RK45-compiled``.
+Last measured (``--quick``, docs/dynamics.md, CPU ratios): above the target, 18-211x on the
+paper's joint (43 / 18 / 211x; with ``RK45-compiled`` before: 587 / 112 / 5453x) and 8-18x on
+the separating case (unchanged: the explicit pair runs throughout, held by the tolerance, not
+by stability). scipy's Radau integrates the paper's oiled revolution with 36.7 k right-hand
+sides (1.3x dry) but 2 s of Python; a compiled Radau IIA is the next step (docs/dynamics.md).
+The finite-length film is not offered in contact-impact.
 """
 
 from __future__ import annotations

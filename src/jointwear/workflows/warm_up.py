@@ -66,6 +66,7 @@ DYNAMICS_GROUPS: dict[tuple[str, bool], str] = {
     ("LSODA", True): "dynamics_film",  # with the film's force (mechanism.impact.compiled_film)
     ("RK45-compiled", False): "dynamics_rk45",  # the whole integration compiled
     ("RK45-compiled", True): "dynamics_rk45_film",
+    ("Rodas4-compiled", True): "dynamics_rodas4_film",  # auto's with a film: RODAS4
 }
 
 
@@ -79,9 +80,10 @@ def warm_up() -> dict[str, Any]:
         ``JOINTWEAR_NO_NUMBA``), ``groups`` (kernel group -> wall seconds of the small
         case that reaches it, compile or cache load included: ``contact``, ``slices``,
         ``orbit``, ``dynamics``, ``dynamics_film``, ``dynamics_rk45``,
-        ``dynamics_rk45_film``), ``contact_kernel_s`` and ``dynamics_kernel_s`` (the
-        contact group's and the dynamics groups' together), ``compile_s`` (of them,
-        numba compiling: 0 when the cache was warm) and ``total_s``. Without numba
+        ``dynamics_rk45_film``, ``dynamics_rodas4_film``), ``contact_kernel_s`` and
+        ``dynamics_kernel_s`` (the contact group's and the dynamics groups' together),
+        ``compile_s`` (of them, numba compiling: 0 when the cache was warm) and
+        ``total_s``. Without numba
         nothing is compiled and the times are those of the NumPy and Python paths.
     """
     from jointwear.compile_time import compile_seconds, watch_compiles

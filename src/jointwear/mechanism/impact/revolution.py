@@ -22,7 +22,11 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.errors import ContactLossWarning, JointwearError
 from jointwear.mechanism.cycle import LoadCycle
 from jointwear.mechanism.impact.integrator import ContactHistory, integrate_contacts
-from jointwear.mechanism.impact.settings import COMPILED_INTEGRATOR, ContactImpactSettings
+from jointwear.mechanism.impact.settings import (
+    COMPILED_INTEGRATOR,
+    STIFF_INTEGRATOR,
+    ContactImpactSettings,
+)
 
 __all__ = [
     "ContactImpactSolution",
@@ -189,11 +193,12 @@ def _integrate(
     """The integration at ``tolerances``: history, states at ``times`` and their segments
     (``None``: the pin left the wall and ``stop_on_separation`` was asked)."""
     method = settings.integrator_for(system)
-    if method == COMPILED_INTEGRATOR:
+    if method in (COMPILED_INTEGRATOR, STIFF_INTEGRATOR):
         # the whole integration in one compiled function (the slider-crank's)
         return system.integrate_compiled(
-            span, y0, in_contact, settings, max_step, times, tolerances, stop_on_separation
-        )
+            span, y0, in_contact, settings, max_step, times, tolerances, stop_on_separation,
+            method=method,
+        )  # fmt: skip
     history = integrate_contacts(
         system,
         span,

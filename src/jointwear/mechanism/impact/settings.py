@@ -23,6 +23,8 @@ __all__ = [
     "FALLBACK_INTEGRATOR",
     "INTEGRATORS",
     "SEPARATION_RTOL",
+    "STIFF_FALLBACK",
+    "STIFF_INTEGRATOR",
     "ContactImpactSettings",
 ]
 
@@ -32,7 +34,14 @@ __all__ = [
 COMPILED_INTEGRATOR = "RK45-compiled"
 #: what :data:`COMPILED_INTEGRATOR` runs as where the system has no compiled integration
 COMPILED_FALLBACK = "RK45"
-#: the compiled integrator where the system has it, LSODA elsewhere: on the slider-crank
+#: the L-stable Rosenbrock method RODAS4 with the contact events, the whole integration
+#: compiled (:mod:`jointwear.mechanism.impact.rosenbrock`): the squeeze film of a
+#: lubricated joint makes the equations of motion stiff, and an explicit method crawls
+STIFF_INTEGRATOR = "Rodas4-compiled"
+#: what :data:`STIFF_INTEGRATOR` runs as where the system has no compiled integration
+STIFF_FALLBACK = "Radau"
+#: the compiled integrator where the system has it (the stiff one with an oil film), LSODA
+#: elsewhere: on the slider-crank
 #: as accurate as LSODA against a converged solution or more, 10-57 times less CPU
 #: (``docs/dynamics.md``), LSODA being the stiff-safe choice for every other system
 AUTO_INTEGRATOR = "auto"
@@ -46,6 +55,7 @@ INTEGRATORS: tuple[str, ...] = (
     "RK45",
     "DOP853",
     COMPILED_INTEGRATOR,
+    STIFF_INTEGRATOR,
     AUTO_INTEGRATOR,
 )
 
@@ -145,21 +155,31 @@ class ContactImpactSettings:
             raise ConfigError("dynamics.max_step: must be > 0")
 
     def integrator_for(self, system: object) -> str:
-        """The integrator that runs for ``system``: ``auto`` and ``RK45-compiled`` resolved [-].
+        """The integrator that runs for ``system``: ``auto`` and the compiled ones resolved [-].
 
         The system integrates compiled where it has ``integrate_compiled`` and a compiled
         right-hand side (the slider-crank's point force laws with numba). There ``auto``
-        and :data:`COMPILED_INTEGRATOR` are :data:`COMPILED_INTEGRATOR`; for every other
-        system, law or without numba ``auto`` is LSODA and :data:`COMPILED_INTEGRATOR`
-        is ``RK45`` of ``solve_ivp`` (:data:`COMPILED_FALLBACK`): the same pair and step
-        control, the right-hand side in Python.
+        is :data:`STIFF_INTEGRATOR` for a joint with an oil film of some viscosity (its
+        squeeze term makes the equations stiff) and :data:`COMPILED_INTEGRATOR` for a
+        dry one, and an explicit compiled choice runs as named. For every other system,
+        law or without numba ``auto`` is LSODA, :data:`COMPILED_INTEGRATOR` is ``RK45``
+        of ``solve_ivp`` (:data:`COMPILED_FALLBACK`: the same pair and step control, the
+        right-hand side in Python) and :data:`STIFF_INTEGRATOR` is ``Radau``
+        (:data:`STIFF_FALLBACK`, an L-stable implicit method too).
         """
-        if self.integrator not in (AUTO_INTEGRATOR, COMPILED_INTEGRATOR):
+        if self.integrator not in (AUTO_INTEGRATOR, COMPILED_INTEGRATOR, STIFF_INTEGRATOR):
             return self.integrator
         if getattr(system, "compiled", False) and hasattr(system, "integrate_compiled"):
-            return COMPILED_INTEGRATOR
+            if self.integrator != AUTO_INTEGRATOR:
+                return self.integrator
+            film = getattr(getattr(system, "contact", None), "film", None)
+            # a film of zero viscosity exerts no force: the dry integration, bit for bit
+            oiled = film is not None and film.viscosity > 0.0
+            return STIFF_INTEGRATOR if oiled else COMPILED_INTEGRATOR
         if self.integrator == COMPILED_INTEGRATOR:
             return COMPILED_FALLBACK
+        if self.integrator == STIFF_INTEGRATOR:
+            return STIFF_FALLBACK
         return FALLBACK_INTEGRATOR
 
     @property

@@ -32,6 +32,7 @@ from pathlib import Path
 import numpy as np
 from numba import njit
 
+from jointwear.mechanism.impact import dormand_prince
 from jointwear.mechanism.impact.compiled_film import SOURCE_DIGEST
 from jointwear.mechanism.slider_crank import _contact_impact_kernel as kernel
 from jointwear.mechanism.slider_crank._contact_impact_kernel import gap, gap_and_rate, rhs
@@ -43,33 +44,11 @@ _DIGEST = hashlib.sha1(Path(kernel.__file__).read_bytes()).hexdigest()[:12] + SO
 #: status codes of :func:`integrate_revolution_rk`
 OK, STEP_TOO_SMALL, TOO_MANY_EVENTS, CHATTER, SEPARATED = 0, 1, 2, 3, 4
 
-# Dormand-Prince 5(4) with scipy's dense output: ``scipy.integrate.RK45``'s tables, written
-# as scipy writes them (the same floats: the loop takes scipy's steps, tested), so that a
-# run does not import ``scipy.integrate`` (half a second) for five small arrays
-_C = np.array([0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1])
-_A = np.array(
-    [
-        [0, 0, 0, 0, 0],
-        [1 / 5, 0, 0, 0, 0],
-        [3 / 40, 9 / 40, 0, 0, 0],
-        [44 / 45, -56 / 15, 32 / 9, 0, 0],
-        [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0],
-        [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656],
-    ]
-)
-_B = np.array([35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84])
-_E = np.array([-71 / 57600, 0, 71 / 16695, -71 / 1920, 17253 / 339200, -22 / 525, 1 / 40])
-_P = np.array(
-    [
-        [1, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
-        [0, 0, 0, 0],
-        [0, 131558114200 / 32700410799, -68118460800 / 10900136933, 87487479700 / 32700410799],
-        [0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072],
-        [0, 127303824393 / 49829197408, -318862633887 / 49829197408, 701980252875 / 199316789632],
-        [0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
-        [0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423],
-    ]
-)
+# Dormand-Prince 5(4) with scipy's dense output (the same floats as scipy's: the loop takes
+# scipy's steps, tested)
+_C, _A, _B, _E, _P = (
+    dormand_prince.C, dormand_prince.A, dormand_prince.B, dormand_prince.E, dormand_prince.P
+)  # fmt: skip
 
 
 def _named(function):

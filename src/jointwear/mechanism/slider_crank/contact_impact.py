@@ -90,6 +90,7 @@ from jointwear.mechanism.impact.revolution import (
 from jointwear.mechanism.impact.settings import (
     AUTO_INTEGRATOR,
     COMPILED_INTEGRATOR,
+    STIFF_INTEGRATOR,
     ContactImpactSettings,
 )
 from jointwear.mechanism.inputs import MechanismInputs
@@ -295,8 +296,9 @@ class SliderCrankContactSystem(ContactSystemBase):
         samples: FloatArray,
         tolerances: tuple[float, float] | None = None,
         stop_on_separation: bool = False,
+        method: str = COMPILED_INTEGRATOR,
     ) -> tuple[ContactHistory, FloatArray, NDArray[np.int64]] | None:
-        """Integrate through the contact events in one compiled function (``RK45-compiled``).
+        """Integrate through the contact events in one compiled function.
 
         Parameters
         ----------
@@ -316,6 +318,11 @@ class SliderCrankContactSystem(ContactSystemBase):
             ``(rtol, atol)`` instead of the settings' [-].
         stop_on_separation : bool
             Give up at the first contact end (and return ``None``).
+        method : str
+            ``RK45-compiled`` (Dormand-Prince,
+            :mod:`~jointwear.mechanism.slider_crank._contact_impact_rk`) or
+            ``Rodas4-compiled`` (the stiff RODAS4,
+            :mod:`~jointwear.mechanism.impact.rosenbrock`).
 
         Returns
         -------
@@ -335,11 +342,17 @@ class SliderCrankContactSystem(ContactSystemBase):
         """
         from jointwear.mechanism.slider_crank import _contact_impact_rk as rk
 
+        if method == STIFF_INTEGRATOR:
+            from jointwear.mechanism.slider_crank._contact_impact_rosenbrock import (
+                integrate_revolution_rosenbrock as integrate,
+            )
+        else:
+            integrate = rk.integrate_revolution_rk
         floor = self.contact.impact_velocity_floor
         capacity = 4096
         rtol, atol = (settings.rtol, settings.atol) if tolerances is None else tolerances
         while True:
-            run = rk.integrate_revolution_rk(
+            run = integrate(
                 float(t_span[0]), float(t_span[1]), np.asarray(y0, dtype=float), in_contact,
                 floor, floor, self._parameters, self._wear, rtol, atol, float(max_step),
                 np.asarray(samples, dtype=float), capacity, stop_on_separation,
@@ -356,7 +369,7 @@ class SliderCrankContactSystem(ContactSystemBase):
                 rk.TOO_MANY_EVENTS: "more than 10^6 contact events",
             }[run[0]]
             raise ConvergenceError(
-                f"dynamics.integrator: RK45-compiled failed ({reason}); try "
+                f"dynamics.integrator: {method} failed ({reason}); try "
                 "dynamics.integrator = 'LSODA' or looser dynamics.rtol/atol"
             )
         history, states = kept_history(run, np.asarray(samples, dtype=float), self.gap)
@@ -625,7 +638,8 @@ def solve_contact_impact(
     contact = slider_crank_contact(inputs, settings, contour)
     choice = inputs.compiled if compiled is None else (None if compiled else False)
     if compiled is None and (
-        contact.film is not None or settings.integrator in (COMPILED_INTEGRATOR, AUTO_INTEGRATOR)
+        contact.film is not None
+        or settings.integrator in (COMPILED_INTEGRATOR, STIFF_INTEGRATOR, AUTO_INTEGRATOR)
     ):
         # the film's force in Python costs far more than loading the compiled kernel; the
         # compiled integrator (and ``auto``, which picks it where it runs) asks for it
