@@ -82,7 +82,7 @@ def paired(dry, wet, repeat: int) -> dict[str, list[tuple[float, float]]]:
     return times
 
 
-def bench_case(case: str, quick: bool) -> None:
+def bench_case(case: str, quick: bool, integrator: str) -> None:
     config = load_config(
         PAPER,
         overrides={
@@ -99,7 +99,8 @@ def bench_case(case: str, quick: bool) -> None:
         f"{dry.history.evaluations} RHS evaluations",
     )
     for label, film in FILMS.items():
-        wet_inputs = replace(dry_inputs, film=film)
+        dynamics = dry_inputs.dynamics.model_copy(update={"integrator": integrator})
+        wet_inputs = replace(dry_inputs, film=film, dynamics=dynamics)
         wet = revolution(wet_inputs)
         times = paired(
             lambda: revolution(dry_inputs),
@@ -128,16 +129,21 @@ def bench_case(case: str, quick: bool) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer repeats")
+    parser.add_argument(
+        "--integrator",
+        default="auto",
+        help="dynamics.integrator of the lubricated runs (the dry ones: auto's, RK45-compiled)",
+    )
     args = parser.parse_args()
     if ci.impact_kernel() is None:
         raise SystemExit("bench_lubricated_impact: needs numba (and JOINTWEAR_NO_NUMBA unset)")
     load = os.getloadavg()
     for case in CASES:
         print(f"[{case}]", file=sys.stderr, flush=True)
-        bench_case(case, args.quick)
+        bench_case(case, args.quick, args.integrator)
     lines = [
         f"Machine: {machine()}; load average at start {load[0]:.2f}, "
-        f"at end {os.getloadavg()[0]:.2f}\n",
+        f"at end {os.getloadavg()[0]:.2f}; lubricated runs: integrator {args.integrator}\n",
         "| benchmark | result | target |",
         "|---|---|---|",
         *(f"| {name} | {value} | {target} |" for name, value, target in ROWS),
