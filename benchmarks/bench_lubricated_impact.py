@@ -22,8 +22,9 @@ switching with the explicit pair), the dry ones with ``RK45-compiled``.
 Last measured (``--quick``, docs/dynamics.md, CPU ratios): above the target, 18-211x on the
 paper's joint (43 / 18 / 211x; with ``RK45-compiled`` before: 587 / 112 / 5453x) and 8-18x on
 the separating case (unchanged: the explicit pair runs throughout, held by the tolerance, not
-by stability). scipy's Radau integrates the paper's oiled revolution with 36.7 k right-hand
-sides (1.3x dry) but 2 s of Python; a compiled Radau IIA is the next step (docs/dynamics.md).
+by stability). ``--integrator Radau-compiled`` (the compiled RADAU5 for the lubricated runs):
+3.0 / 2.5 / 6.5x on the paper's joint (43 / 18 / 95 k right-hand sides), 1.2 / 2.0 / 0.96x on
+the separating case (docs/dynamics.md).
 The finite-length film is not offered in contact-impact.
 """
 
