@@ -83,11 +83,13 @@ _SHARED = (
     "_initial_step",
     "_step_events",
     "_segment_end",
+    "_open_segment",
+    "_close_segment",
     "_records",
 )
 (
     _rms, _lu_factor, _lu_solve, _dense, _event_value, _root, _take_samples, _initial_step,
-    _step_events, _segment_end, _records,
+    _step_events, _segment_end, _open_segment, _close_segment, _records,
 ) = (getattr(rosenbrock, name) for name in _SHARED)  # fmt: skip
 
 _S6 = 6**0.5
@@ -414,18 +416,16 @@ def integrate(
     t, y = t0, y0.copy()
     t_old, h_old, y_old = t0, 1.0, y0.copy()
     while status == OK:
-        if n_seg >= capacity:
+        full, f, h_abs, g, rate = _open_segment(
+            t, y, t_end, in_contact, v_imp, p, wear, rtol, atol, max_step, n_seg, capacity,
+            seg_start, seg_contact, seg_velocity, seg_rate,
+        )  # fmt: skip
+        if full:
             status = TOO_MANY_EVENTS
             break
-        seg_start[n_seg], seg_contact[n_seg], seg_velocity[n_seg] = t, in_contact, v_imp
-        seg_rate[n_seg] = np.nan
-        f = rhs(t, y, v_imp, p, wear)
-        h_abs = _initial_step(t, y, f, t_end, max_step, v_imp, p, wear, rtol, atol)
         nfev += 2 + _radau_jacobian(t, y, f, v_imp, p, wear, jac, work)
         control[:] = 0.0
         control[CURRENT_JAC] = 1.0
-        g, rate = gap_and_rate(t, y, p, wear)
-        rate = rate if in_contact else 0.0
         event = False
         while t < t_end:
             min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
@@ -462,15 +462,12 @@ def integrate(
             rate = rate_new if in_contact else rate
         if status != OK:
             break
-        seg_end[n_seg] = t
-        n_seg += 1
-        if not event:
-            break
-        status, stalled, v_imp = _segment_end(
-            t, y, p, wear, in_contact, stop_on_separation, seg_start, seg_rate, n_seg - 1,
-            stalled, v_imp, floor,
+        status, done, n_seg, stalled, v_imp, in_contact = _close_segment(
+            t, y, p, wear, in_contact, event, stop_on_separation, seg_start, seg_end, seg_rate,
+            n_seg, stalled, v_imp, floor,
         )  # fmt: skip
-        in_contact = not in_contact
+        if done:
+            break
     return (
         status, nfev, sample_states, sample_segment, seg_start, seg_end, seg_contact,
         seg_velocity, seg_rate, n_seg, peak_t, peak_y, peak_segment, n_peaks,
