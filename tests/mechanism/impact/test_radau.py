@@ -27,6 +27,7 @@ from tests.mechanism.impact.test_rosenbrock import (
     _never,
     _never_and_rate,
     _problems,
+    linear_closed_form,
 )
 
 
@@ -87,13 +88,7 @@ def test_stiff_linear_system_closed_form(integrate) -> None:
     samples = np.linspace(0.0, t_end, 41)
     y0 = np.array([1.0, 0.5])
     states, evaluations = run(integrate, t_end, y0, [fast, LINEAR], 1e-9, samples, 0.05)
-    a, b = 0.5 * (y0[0] + y0[1]), 0.5 * (y0[0] - y0[1])
-    exact = np.column_stack(
-        [
-            a * np.exp(-samples) + b * np.exp(-fast * samples),
-            a * np.exp(-samples) - b * np.exp(-fast * samples),
-        ]
-    )
+    exact = linear_closed_form(samples, y0, fast)
     np.testing.assert_allclose(states[1:], exact[1:], rtol=1e-7, atol=1e-12)
     assert evaluations < 20_000  # RK45: ~lambda T / 3.3 = 6e7 steps
 

@@ -17,6 +17,7 @@ from pathlib import Path
 from jointwear.mechanism.impact import radau, rosenbrock
 from jointwear.mechanism.impact.compiled_film import SOURCE_DIGEST
 from jointwear.mechanism.slider_crank import _contact_impact_kernel as kernel
+from jointwear.mechanism.slider_crank._contact_impact_rosenbrock import STIFF_SYSTEM
 
 __all__ = ["integrate_revolution_radau"]
 
@@ -30,13 +31,4 @@ _DIGEST = (
 )
 
 #: ``integrate_revolution_rk``'s arguments and results, RADAU5's steps
-integrate_revolution_radau = radau.bind(
-    {
-        "rhs": kernel.rhs,
-        "gap": kernel.gap,
-        "gap_and_rate": kernel.gap_and_rate,
-        "JACOBIAN_COLUMNS": 4,
-        "DIFFERENCE_STEP": 1e-11,
-    },
-    f"slider_crank_{_DIGEST}",
-)
+integrate_revolution_radau = radau.bind(STIFF_SYSTEM, f"slider_crank_{_DIGEST}")
