@@ -27,7 +27,8 @@ was fresh the step halved. The error estimate is the embedded 3rd-order one filt
 by one more solve with the real factors, ``err = (mu_r/h I - J)^{-1} (f_0 + sum_i e_i
 Z_i / h)`` (after a rejection, once more with ``f(t, y_0 + err)``); the new step is
 ``h err^{-1/4}`` with Gustafsson's predictive controller [2]_, a safety factor that
-falls with the Newton sweeps, at most 10 times larger and 5 times smaller; the step
+falls with the Newton sweeps, at most 10 times larger (5 times smaller after a rejection,
+half the step where the sweeps fail); the step
 (and its factors) is kept unless it would grow by 1.2 or more, and the Jacobian is
 recomputed after a step whose sweeps converged slowly (more than two, rate above
 1e-3). The first guess of the stages is the previous step's collocation polynomial,
