@@ -22,8 +22,9 @@ switching with the explicit pair), the dry ones with ``RK45-compiled``.
 Last measured (``--quick``, docs/dynamics.md, CPU ratios): above the target, 18-211x on the
 paper's joint (43 / 18 / 211x; with ``RK45-compiled`` before: 587 / 112 / 5453x) and 8-18x on
 the separating case (unchanged: the explicit pair runs throughout, held by the tolerance, not
-by stability). scipy's Radau integrates the paper's oiled revolution with 36.7 k right-hand
-sides (1.3x dry) but 2 s of Python; a compiled Radau IIA is the next step (docs/dynamics.md).
+by stability). ``--integrator Radau-compiled`` (the compiled RADAU5 for the lubricated runs):
+3.0 / 2.5 / 6.5x on the paper's joint (43 / 18 / 95 k right-hand sides), 1.2 / 2.0 / 0.96x on
+the separating case (docs/dynamics.md).
 The finite-length film is not offered in contact-impact.
 """
 
@@ -82,7 +83,7 @@ def paired(dry, wet, repeat: int) -> dict[str, list[tuple[float, float]]]:
     return times
 
 
-def bench_case(case: str, quick: bool) -> None:
+def bench_case(case: str, quick: bool, integrator: str) -> None:
     config = load_config(
         PAPER,
         overrides={
@@ -99,7 +100,8 @@ def bench_case(case: str, quick: bool) -> None:
         f"{dry.history.evaluations} RHS evaluations",
     )
     for label, film in FILMS.items():
-        wet_inputs = replace(dry_inputs, film=film)
+        dynamics = dry_inputs.dynamics.model_copy(update={"integrator": integrator})
+        wet_inputs = replace(dry_inputs, film=film, dynamics=dynamics)
         wet = revolution(wet_inputs)
         times = paired(
             lambda: revolution(dry_inputs),
@@ -128,16 +130,21 @@ def bench_case(case: str, quick: bool) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer repeats")
+    parser.add_argument(
+        "--integrator",
+        default="auto",
+        help="dynamics.integrator of the lubricated runs (the dry ones: auto's, RK45-compiled)",
+    )
     args = parser.parse_args()
     if ci.impact_kernel() is None:
         raise SystemExit("bench_lubricated_impact: needs numba (and JOINTWEAR_NO_NUMBA unset)")
     load = os.getloadavg()
     for case in CASES:
         print(f"[{case}]", file=sys.stderr, flush=True)
-        bench_case(case, args.quick)
+        bench_case(case, args.quick, args.integrator)
     lines = [
         f"Machine: {machine()}; load average at start {load[0]:.2f}, "
-        f"at end {os.getloadavg()[0]:.2f}\n",
+        f"at end {os.getloadavg()[0]:.2f}; lubricated runs: integrator {args.integrator}\n",
         "| benchmark | result | target |",
         "|---|---|---|",
         *(f"| {name} | {value} | {target} |" for name, value, target in ROWS),

@@ -233,8 +233,9 @@ class DynamicsConfig(Section):
     # auto: RK45-compiled where it runs (the slider-crank's point laws; Rodas4-compiled with
     # an oil film), LSODA elsewhere
     integrator: Literal[
-        "auto", "LSODA", "Radau", "BDF", "RK45", "DOP853", "RK45-compiled", "Rodas4-compiled"
-    ] = "auto"
+        "auto", "LSODA", "Radau", "BDF", "RK45", "DOP853", "RK45-compiled", "Rodas4-compiled",
+        "Radau-compiled",
+    ] = "auto"  # fmt: skip
     rtol: Annotated[float, Field(gt=0, lt=1)] = 1e-8
     atol: Annotated[float, Field(gt=0)] = 1e-10
     # a flying, impacting pin is tolerance-sensitive: rtol 1e-8 is off by percents there;

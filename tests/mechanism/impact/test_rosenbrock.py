@@ -86,6 +86,14 @@ def run(integrate, t_end, y0, parameters, rtol, samples, max_step=math.inf):
     return result[2], result[1]
 
 
+def linear_closed_form(samples, y0, fast):
+    """The ``LINEAR`` problem's states at ``samples`` from ``y0``, modes -1 and ``-fast``."""
+    # y0 = a (1, 1) + b (1, -1)
+    a, b = 0.5 * (y0[0] + y0[1]), 0.5 * (y0[0] - y0[1])
+    slow_mode, fast_mode = np.exp(-samples), np.exp(-fast * samples)
+    return np.column_stack([a * slow_mode + b * fast_mode, a * slow_mode - b * fast_mode])
+
+
 def test_tableau_is_l_stable_and_consistent() -> None:
     # on y' = lambda y with the exact Jacobian, W = (1/(gamma h) - lambda), z = h lambda:
     # the stability function R(z), 1 + z + z^2/2 + z^3/6 + z^4/24 + O(z^5), R(-inf) = 0
@@ -151,14 +159,7 @@ def test_stiff_linear_system_closed_form(integrators) -> None:
     samples = np.linspace(0.0, t_end, 41)
     y0 = np.array([1.0, 0.5])
     states, evaluations = run(integrators[True], t_end, y0, [fast, LINEAR], 1e-9, samples, 0.05)
-    # y0 = a (1, 1) + b (1, -1)
-    a, b = 0.5 * (y0[0] + y0[1]), 0.5 * (y0[0] - y0[1])
-    exact = np.column_stack(
-        [
-            a * np.exp(-samples) + b * np.exp(-fast * samples),
-            a * np.exp(-samples) - b * np.exp(-fast * samples),
-        ]
-    )
+    exact = linear_closed_form(samples, y0, fast)
     np.testing.assert_allclose(states[1:], exact[1:], rtol=1e-7, atol=1e-12)
     assert evaluations < 20_000  # RK45: ~lambda T / 3.3 = 6e7 steps
 

@@ -4,9 +4,10 @@
   stiff) its contact force agrees with ``RK45-compiled``'s at a tight tolerance and
   converges to it as the tolerance tightens, with far fewer right-hand sides;
 * on the separating case with a long-bearing film (an impact) the two give the same
-  impacts and loads;
+  impacts and loads, and so does ``Radau-compiled`` (RADAU5);
 * ``auto`` picks it for an oiled joint and reports it; a dry joint and a film of zero
-  viscosity keep ``RK45-compiled``, bit for bit; an explicit choice runs what it names.
+  viscosity keep ``RK45-compiled``, bit for bit; an explicit choice runs what it names (a
+  dry joint named ``Rodas4-compiled`` or ``Radau-compiled``: the dry load).
 """
 
 from __future__ import annotations
@@ -79,15 +80,19 @@ def test_agrees_with_the_explicit_pair_on_the_wall(paper_config: Config) -> None
     assert evaluations[0] < explicit / 10
 
 
-def test_the_separating_case_impacts_alike(paper_config: Config) -> None:
+@pytest.mark.parametrize(
+    ("name", "ran"), [("auto", "Rodas4-compiled"), ("Radau-compiled", "Radau-compiled")]
+)
+def test_the_separating_case_impacts_alike(paper_config: Config, name: str, ran: str) -> None:
+    # the stiff integrators (auto's RODAS4, RADAU5) against the explicit pair
     film = FilmParameters("long-bearing", 0.1)
     runs = {}
-    for name in ("auto", "RK45-compiled"):
-        config = impact_config(paper_config, **SEPARATING, **{"dynamics.integrator": name})
+    for method in (name, "RK45-compiled"):
+        config = impact_config(paper_config, **SEPARATING, **{"dynamics.integrator": method})
         inputs = replace(mechanism_inputs(config), film=film)
-        runs[name] = ci.solve_contact_impact(inputs, compare=False)
-    stiff, explicit = runs["auto"], runs["RK45-compiled"]
-    assert stiff.summary()["integrator"] == "Rodas4-compiled"
+        runs[method] = ci.solve_contact_impact(inputs, compare=False)
+    stiff, explicit = runs[name], runs["RK45-compiled"]
+    assert stiff.summary()["integrator"] == ran
     assert explicit.summary()["integrator"] == "RK45-compiled"
     assert stiff.impacts == explicit.impacts
     assert stiff.peak_joint_force == pytest.approx(explicit.peak_joint_force, rel=1e-5)
@@ -117,10 +122,11 @@ def test_auto_picks_the_stiff_integrator_for_an_oiled_joint_only(paper_config: C
     assert settings.integrator_for(python) == "LSODA"
 
 
-def test_an_explicit_stiff_choice_on_a_dry_joint_runs_it(paper_config: Config) -> None:
-    config = impact_config(paper_config, **{"dynamics.integrator": "Rodas4-compiled"})
+@pytest.mark.parametrize("name", ["Rodas4-compiled", "Radau-compiled"])
+def test_an_explicit_stiff_choice_on_a_dry_joint_runs_it(paper_config: Config, name: str) -> None:
+    config = impact_config(paper_config, **{"dynamics.integrator": name})
     solution = ci.solve_contact_impact(mechanism_inputs(config), compare=False)
-    assert solution.summary()["integrator"] == "Rodas4-compiled"
+    assert solution.summary()["integrator"] == name
     reference = ci.solve_contact_impact(
         mechanism_inputs(impact_config(paper_config)), compare=False
     )

@@ -22,11 +22,7 @@ from numpy.typing import ArrayLike, NDArray
 from jointwear.errors import ContactLossWarning, JointwearError
 from jointwear.mechanism.cycle import LoadCycle
 from jointwear.mechanism.impact.integrator import ContactHistory, integrate_contacts
-from jointwear.mechanism.impact.settings import (
-    COMPILED_INTEGRATOR,
-    STIFF_INTEGRATOR,
-    ContactImpactSettings,
-)
+from jointwear.mechanism.impact.settings import COMPILED_INTEGRATORS, ContactImpactSettings
 
 __all__ = [
     "ContactImpactSolution",
@@ -193,7 +189,7 @@ def _integrate(
     """The integration at ``tolerances``: history, states at ``times`` and their segments
     (``None``: the pin left the wall and ``stop_on_separation`` was asked)."""
     method = settings.integrator_for(system)
-    if method in (COMPILED_INTEGRATOR, STIFF_INTEGRATOR):
+    if method in COMPILED_INTEGRATORS:
         # the whole integration in one compiled function (the slider-crank's)
         return system.integrate_compiled(
             span, y0, in_contact, settings, max_step, times, tolerances, stop_on_separation,

@@ -650,6 +650,36 @@ def _segment_end(
     return OK, stalled, (v_imp if in_contact else max(event_rate, floor))
 
 
+def _open_segment(t, y, t_end, in_contact, v_imp, p, wear, rtol, atol, max_step, n_seg,
+                  capacity, seg_start, seg_contact, seg_velocity, seg_rate):  # type: ignore[no-untyped-def]  # fmt: skip
+    """A segment's start recorded: ``(full, f, h_abs, g, rate)``, ``full`` if the records
+    are (then nothing else is done), ``f`` the right-hand side, ``h_abs`` the initial step
+    (two right-hand sides in all), the gap and, in contact, its rate."""
+    if n_seg >= capacity:
+        return True, y, 0.0, 0.0, 0.0
+    seg_start[n_seg], seg_contact[n_seg], seg_velocity[n_seg] = t, in_contact, v_imp
+    seg_rate[n_seg] = np.nan
+    f = rhs(t, y, v_imp, p, wear)
+    h_abs = _initial_step(t, y, f, t_end, max_step, v_imp, p, wear, rtol, atol)
+    g, rate = gap_and_rate(t, y, p, wear)
+    return False, f, h_abs, g, (rate if in_contact else 0.0)
+
+
+def _close_segment(t, y, p, wear, in_contact, event, stop_on_separation, seg_start, seg_end,
+                   seg_rate, n_seg, stalled, v_imp, floor):  # type: ignore[no-untyped-def]  # fmt: skip
+    """A segment's end at ``t`` recorded: ``(status, done, n_seg, stalled, v_imp,
+    in_contact)``, ``done`` without a contact event (the end of the integration)."""
+    seg_end[n_seg] = t
+    n_seg += 1
+    if not event:
+        return OK, True, n_seg, stalled, v_imp, in_contact
+    status, stalled, v_imp = _segment_end(
+        t, y, p, wear, in_contact, stop_on_separation, seg_start, seg_rate, n_seg - 1,
+        stalled, v_imp, floor,
+    )  # fmt: skip
+    return status, False, n_seg, stalled, v_imp, not in_contact
+
+
 def _records(samples, capacity, n):  # type: ignore[no-untyped-def]
     """The states at the samples, their segments, and the segments' starts, ends, contact
     flags, approach velocities and event rates."""
@@ -692,16 +722,14 @@ def integrate(
     explicit = SWITCHING
     t, y = t0, y0.copy()
     while status == OK:
-        if n_seg >= capacity:
+        full, f, h_abs, g, rate = _open_segment(
+            t, y, t_end, in_contact, v_imp, p, wear, rtol, atol, max_step, n_seg, capacity,
+            seg_start, seg_contact, seg_velocity, seg_rate,
+        )  # fmt: skip
+        if full:
             status = TOO_MANY_EVENTS
             break
-        seg_start[n_seg], seg_contact[n_seg], seg_velocity[n_seg] = t, in_contact, v_imp
-        seg_rate[n_seg] = np.nan
-        f = rhs(t, y, v_imp, p, wear)
-        h_abs = _initial_step(t, y, f, t_end, max_step, v_imp, p, wear, rtol, atol)
         nfev += 2
-        g, rate = gap_and_rate(t, y, p, wear)
-        rate = rate if in_contact else 0.0
         control[:] = 0.0
         event = False
         while t < t_end:
@@ -743,15 +771,12 @@ def integrate(
             rate = rate_new if in_contact else rate
         if status != OK:
             break
-        seg_end[n_seg] = t
-        n_seg += 1
-        if not event:
-            break
-        status, stalled, v_imp = _segment_end(
-            t, y, p, wear, in_contact, stop_on_separation, seg_start, seg_rate, n_seg - 1,
-            stalled, v_imp, floor,
+        status, done, n_seg, stalled, v_imp, in_contact = _close_segment(
+            t, y, p, wear, in_contact, event, stop_on_separation, seg_start, seg_end, seg_rate,
+            n_seg, stalled, v_imp, floor,
         )  # fmt: skip
-        in_contact = not in_contact
+        if done:
+            break
     return (
         status, nfev, sample_states, sample_segment, seg_start, seg_end, seg_contact,
         seg_velocity, seg_rate, n_seg, peak_t, peak_y, peak_segment, n_peaks,
@@ -780,6 +805,8 @@ _ORDER = (
     "_switch",
     "_step_events",
     "_segment_end",
+    "_open_segment",
+    "_close_segment",
     "_records",
     "_work_arrays",
     "integrate",

@@ -20,8 +20,10 @@ __all__ = [
     "AUTO_INTEGRATOR",
     "COMPILED_FALLBACK",
     "COMPILED_INTEGRATOR",
+    "COMPILED_INTEGRATORS",
     "FALLBACK_INTEGRATOR",
     "INTEGRATORS",
+    "RADAU_INTEGRATOR",
     "SEPARATION_RTOL",
     "STIFF_FALLBACK",
     "STIFF_INTEGRATOR",
@@ -40,6 +42,12 @@ COMPILED_FALLBACK = "RK45"
 STIFF_INTEGRATOR = "Rodas4-compiled"
 #: what :data:`STIFF_INTEGRATOR` runs as where the system has no compiled integration
 STIFF_FALLBACK = "Radau"
+#: the fully implicit Radau IIA method RADAU5 with the contact events, the whole
+#: integration compiled (:mod:`jointwear.mechanism.impact.radau`); ``Radau`` of
+#: ``solve_ivp`` (:data:`STIFF_FALLBACK`) where the system has no compiled integration
+RADAU_INTEGRATOR = "Radau-compiled"
+#: the integrators that run as the system's compiled integration where it has one
+COMPILED_INTEGRATORS = (COMPILED_INTEGRATOR, STIFF_INTEGRATOR, RADAU_INTEGRATOR)
 #: the compiled integrator where the system has it (the stiff one with an oil film), LSODA
 #: elsewhere: on the slider-crank
 #: as accurate as LSODA against a converged solution or more, 10-57 times less CPU
@@ -56,6 +64,7 @@ INTEGRATORS: tuple[str, ...] = (
     "DOP853",
     COMPILED_INTEGRATOR,
     STIFF_INTEGRATOR,
+    RADAU_INTEGRATOR,
     AUTO_INTEGRATOR,
 )
 
@@ -165,9 +174,10 @@ class ContactImpactSettings:
         law or without numba ``auto`` is LSODA, :data:`COMPILED_INTEGRATOR` is ``RK45``
         of ``solve_ivp`` (:data:`COMPILED_FALLBACK`: the same pair and step control, the
         right-hand side in Python) and :data:`STIFF_INTEGRATOR` is ``Radau``
-        (:data:`STIFF_FALLBACK`, an L-stable implicit method too).
+        (:data:`STIFF_FALLBACK`, an L-stable implicit method too), as is
+        :data:`RADAU_INTEGRATOR`.
         """
-        if self.integrator not in (AUTO_INTEGRATOR, COMPILED_INTEGRATOR, STIFF_INTEGRATOR):
+        if self.integrator not in (AUTO_INTEGRATOR, *COMPILED_INTEGRATORS):
             return self.integrator
         if getattr(system, "compiled", False) and hasattr(system, "integrate_compiled"):
             if self.integrator != AUTO_INTEGRATOR:
@@ -178,7 +188,7 @@ class ContactImpactSettings:
             return STIFF_INTEGRATOR if oiled else COMPILED_INTEGRATOR
         if self.integrator == COMPILED_INTEGRATOR:
             return COMPILED_FALLBACK
-        if self.integrator == STIFF_INTEGRATOR:
+        if self.integrator in (STIFF_INTEGRATOR, RADAU_INTEGRATOR):
             return STIFF_FALLBACK
         return FALLBACK_INTEGRATOR
 

@@ -26,20 +26,21 @@ from jointwear.mechanism.impact import rosenbrock
 from jointwear.mechanism.impact.compiled_film import SOURCE_DIGEST
 from jointwear.mechanism.slider_crank import _contact_impact_kernel as kernel
 
-__all__ = ["integrate_revolution_rosenbrock"]
+__all__ = ["STIFF_SYSTEM", "integrate_revolution_rosenbrock"]
 
 #: the cache entries carry the right-hand side's and the film force's sources (numba
 #: checks only the integrator's own file when it loads a cached function)
 _DIGEST = hashlib.sha1(Path(kernel.__file__).read_bytes()).hexdigest()[:12] + SOURCE_DIGEST
 
+#: the slider-crank for a stiff integrator's ``bind``: its compiled functions, the
+#: Jacobian's columns and difference step (above); RADAU5's binding takes it too
+STIFF_SYSTEM = {
+    "rhs": kernel.rhs,
+    "gap": kernel.gap,
+    "gap_and_rate": kernel.gap_and_rate,
+    "JACOBIAN_COLUMNS": 4,
+    "DIFFERENCE_STEP": 1e-11,
+}
+
 #: ``integrate_revolution_rk``'s arguments and results, RODAS4's steps
-integrate_revolution_rosenbrock = rosenbrock.bind(
-    {
-        "rhs": kernel.rhs,
-        "gap": kernel.gap,
-        "gap_and_rate": kernel.gap_and_rate,
-        "JACOBIAN_COLUMNS": 4,
-        "DIFFERENCE_STEP": 1e-11,
-    },
-    f"slider_crank_{_DIGEST}",
-)
+integrate_revolution_rosenbrock = rosenbrock.bind(STIFF_SYSTEM, f"slider_crank_{_DIGEST}")

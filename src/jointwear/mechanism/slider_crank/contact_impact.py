@@ -90,6 +90,8 @@ from jointwear.mechanism.impact.revolution import (
 from jointwear.mechanism.impact.settings import (
     AUTO_INTEGRATOR,
     COMPILED_INTEGRATOR,
+    COMPILED_INTEGRATORS,
+    RADAU_INTEGRATOR,
     STIFF_INTEGRATOR,
     ContactImpactSettings,
 )
@@ -322,7 +324,8 @@ class SliderCrankContactSystem(ContactSystemBase):
             ``RK45-compiled`` (Dormand-Prince,
             :mod:`~jointwear.mechanism.slider_crank._contact_impact_rk`) or
             ``Rodas4-compiled`` (the stiff RODAS4,
-            :mod:`~jointwear.mechanism.impact.rosenbrock`).
+            :mod:`~jointwear.mechanism.impact.rosenbrock`) or ``Radau-compiled`` (the
+            fully implicit RADAU5, :mod:`~jointwear.mechanism.impact.radau`).
 
         Returns
         -------
@@ -345,6 +348,10 @@ class SliderCrankContactSystem(ContactSystemBase):
         if method == STIFF_INTEGRATOR:
             from jointwear.mechanism.slider_crank._contact_impact_rosenbrock import (
                 integrate_revolution_rosenbrock as integrate,
+            )
+        elif method == RADAU_INTEGRATOR:
+            from jointwear.mechanism.slider_crank._contact_impact_radau import (
+                integrate_revolution_radau as integrate,
             )
         else:
             integrate = rk.integrate_revolution_rk
@@ -638,8 +645,7 @@ def solve_contact_impact(
     contact = slider_crank_contact(inputs, settings, contour)
     choice = inputs.compiled if compiled is None else (None if compiled else False)
     if compiled is None and (
-        contact.film is not None
-        or settings.integrator in (COMPILED_INTEGRATOR, STIFF_INTEGRATOR, AUTO_INTEGRATOR)
+        contact.film is not None or settings.integrator in (*COMPILED_INTEGRATORS, AUTO_INTEGRATOR)
     ):
         # the film's force in Python costs far more than loading the compiled kernel; the
         # compiled integrator (and ``auto``, which picks it where it runs) asks for it
