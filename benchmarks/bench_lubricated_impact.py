@@ -17,14 +17,12 @@ light rod, 0.2 mm, 240 rpm: dry, the pin flies and hits the wall; a viscous film
 it off the wall). Without settling revolutions the start transient is part of the
 timed revolution (a squeeze-film spike where the pin starts pressed into the wall).
 The numba kernels are compiled (or loaded from the cache) before anything is timed.
-The lubricated runs integrate with ``auto``'s choice for a film, ``Rodas4-compiled`` (RODAS4
-switching with the explicit pair), the dry ones with ``RK45-compiled``.
-Last measured (``--quick``, docs/dynamics.md, CPU ratios): above the target, 18-211x on the
-paper's joint (43 / 18 / 211x; with ``RK45-compiled`` before: 587 / 112 / 5453x) and 8-18x on
-the separating case (unchanged: the explicit pair runs throughout, held by the tolerance, not
-by stability). ``--integrator Radau-compiled`` (the compiled RADAU5 for the lubricated runs):
-3.0 / 2.5 / 6.5x on the paper's joint (43 / 18 / 95 k right-hand sides), 1.2 / 2.0 / 0.96x on
-the separating case (docs/dynamics.md).
+The lubricated runs integrate with ``auto``'s choice for a film, ``Radau-compiled`` (the
+compiled RADAU5), or with ``--integrator NAME``; the dry ones with ``RK45-compiled``.
+Last measured (``--quick``, docs/dynamics.md, CPU ratios): ``Radau-compiled`` 3.0 / 2.5 /
+6.5x on the paper's joint (43 / 18 / 95 k right-hand sides) and 1.2 / 2.0 / 0.96x on the
+separating case; ``Rodas4-compiled`` 43 / 18 / 211x and 12 / 8.0 / 18x; ``RK45-compiled``
+before: 587 / 112 / 5453x and 10 / 7.6 / 19x.
 The finite-length film is not offered in contact-impact.
 """
 

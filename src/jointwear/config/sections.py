@@ -230,7 +230,7 @@ class DynamicsConfig(Section):
     friction_velocity_tolerance: Annotated[float, si("velocity"), Field(gt=0)] = 1e-4
     friction_velocity_full: Annotated[Annotated[float, Field(gt=0)] | None, si("velocity")] = None
     impact_velocity_floor: Annotated[float, si("velocity"), Field(gt=0)] = 1e-3
-    # auto: RK45-compiled where it runs (the slider-crank's point laws; Rodas4-compiled with
+    # auto: RK45-compiled where it runs (the slider-crank's point laws; Radau-compiled with
     # an oil film), LSODA elsewhere
     integrator: Literal[
         "auto", "LSODA", "Radau", "BDF", "RK45", "DOP853", "RK45-compiled", "Rodas4-compiled",

@@ -58,6 +58,14 @@ KERNEL_GROUPS: dict[str, dict[str, Any]] = {
         "simulation.update_contour": False,
         "simulation.steps_per_revolution": 36,
     },
+    # a tabulated film's orbit: its first guess by the compiled steady force factor
+    "orbit_tabulated": {
+        "lubrication.model": "long-bearing",
+        "lubrication.viscosity": "0.05 Pa*s",
+        "simulation.revolutions": 1,
+        "simulation.update_contour": False,
+        "simulation.steps_per_revolution": 36,
+    },
 }
 
 #: the contact-impact integrations: ``(integrator, oiled)`` -> the name of their group
@@ -66,7 +74,8 @@ DYNAMICS_GROUPS: dict[tuple[str, bool], str] = {
     ("LSODA", True): "dynamics_film",  # with the film's force (mechanism.impact.compiled_film)
     ("RK45-compiled", False): "dynamics_rk45",  # the whole integration compiled
     ("RK45-compiled", True): "dynamics_rk45_film",
-    ("Rodas4-compiled", True): "dynamics_rodas4_film",  # auto's with a film: RODAS4
+    ("Rodas4-compiled", True): "dynamics_rodas4_film",  # RODAS4, named
+    ("Radau-compiled", True): "dynamics_radau_film",  # auto's with a film: RADAU5
 }
 
 
@@ -79,8 +88,8 @@ def warm_up() -> dict[str, Any]:
         ``compiled`` (whether numba is there and not switched off by
         ``JOINTWEAR_NO_NUMBA``), ``groups`` (kernel group -> wall seconds of the small
         case that reaches it, compile or cache load included: ``contact``, ``slices``,
-        ``orbit``, ``dynamics``, ``dynamics_film``, ``dynamics_rk45``,
-        ``dynamics_rk45_film``, ``dynamics_rodas4_film``), ``contact_kernel_s`` and
+        ``orbit``, ``orbit_tabulated``, ``dynamics``, ``dynamics_film``, ``dynamics_rk45``,
+        ``dynamics_rk45_film``, ``dynamics_rodas4_film``, ``dynamics_radau_film``), ``contact_kernel_s`` and
         ``dynamics_kernel_s`` (the contact group's and the dynamics groups' together),
         ``compile_s`` (of them, numba compiling: 0 when the cache was warm) and
         ``total_s``. Without numba
