@@ -89,7 +89,8 @@ def warm_up() -> dict[str, Any]:
         ``JOINTWEAR_NO_NUMBA``), ``groups`` (kernel group -> wall seconds of the small
         case that reaches it, compile or cache load included: ``contact``, ``slices``,
         ``orbit``, ``orbit_tabulated``, ``dynamics``, ``dynamics_film``, ``dynamics_rk45``,
-        ``dynamics_rk45_film``, ``dynamics_rodas4_film``, ``dynamics_radau_film``), ``contact_kernel_s`` and
+        ``dynamics_rk45_film``, ``dynamics_rodas4_film``, ``dynamics_radau_film``),
+        ``contact_kernel_s`` and
         ``dynamics_kernel_s`` (the contact group's and the dynamics groups' together),
         ``compile_s`` (of them, numba compiling: 0 when the cache was warm) and
         ``total_s``. Without numba
