@@ -6,8 +6,8 @@
 * on the separating case with a long-bearing film (an impact) the two give the same
   impacts and loads, and so does ``Radau-compiled`` (RADAU5);
 * ``auto`` picks ``Radau-compiled`` for an oiled joint and reports it; a dry joint and a
-  film of zero viscosity keep ``RK45-compiled``, bit for bit; an explicit choice runs what it names (a
-  dry joint named ``Rodas4-compiled`` or ``Radau-compiled``: the dry load).
+  film of zero viscosity keep ``RK45-compiled``, bit for bit; an explicit choice runs what
+  it names (a dry joint named ``Rodas4-compiled`` or ``Radau-compiled``: the dry load).
 """
 
 from __future__ import annotations
