@@ -166,8 +166,7 @@ def main() -> None:
         if baseline is not None:
             old = times.get(f"{name} [baseline]")
             cells += (
-                [f"{median(old):.3f}", f"{paired_ratio(times[name], old):.2f}"]
-                if old else ["", ""]
+                [f"{median(old):.3f}", f"{paired_ratio(times[name], old):.2f}"] if old else ["", ""]
             )
         plain = name.startswith("run, ") and "every 1" not in name and "first" not in name
         target = f"<= {TARGET} s" if plain else ""
@@ -177,8 +176,7 @@ def main() -> None:
             loaded.append(heavy_modules(command, old_env[1]) if old_env else "")
         table.add(*cells, target, *loaded)
     table.print(
-        f"Whole processes, median of {repeat} interleaved runs after a warm-up. "
-        f"Machine: {machine}"
+        f"Whole processes, median of {repeat} interleaved runs after a warm-up. Machine: {machine}"
     )
 
 

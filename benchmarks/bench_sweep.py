@@ -180,9 +180,7 @@ def main() -> None:
     local = median([r["per_case"] for r in results["2 processes"]])
     for mode, runs in results.items():
         wall = median([r["runtime"] for r in runs])
-        speedup = median(
-            [s["runtime"] / r["runtime"] for s, r in zip(serial, runs, strict=True)]
-        )
+        speedup = median([s["runtime"] / r["runtime"] for s, r in zip(serial, runs, strict=True)])
         per_case = median([r["per_case"] for r in runs])
         workers = {r["workers"] for r in runs}
         target = f">= {TARGET:g} cases/s" if mode == "2 processes" else ""

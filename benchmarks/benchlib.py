@@ -62,8 +62,7 @@ def describe_machine() -> str:
         pass
     load = ", ".join(f"{x:.2f}" for x in os.getloadavg()) if hasattr(os, "getloadavg") else "?"
     return (
-        f"{name}; {os.cpu_count()} cores; Python {platform.python_version()}; "
-        f"load average {load}"
+        f"{name}; {os.cpu_count()} cores; Python {platform.python_version()}; load average {load}"
     )
 
 

@@ -12,12 +12,27 @@ import pytest
 from jointwear.cli import main
 
 REQUIRED_KEYS = {
-    "load_min_n", "load_max_n", "load_mean_n", "load_sliding_mean_n", "azimuth_range_deg",
-    "azimuth_min_deg", "azimuth_max_deg", "contact_lost", "contact_lost_crank_angles_deg",
-    "steps", "total_relative_rotation_rad", "crank_torque_rms_nm",
+    "load_min_n",
+    "load_max_n",
+    "load_mean_n",
+    "load_sliding_mean_n",
+    "azimuth_range_deg",
+    "azimuth_min_deg",
+    "azimuth_max_deg",
+    "contact_lost",
+    "contact_lost_crank_angles_deg",
+    "steps",
+    "total_relative_rotation_rad",
+    "crank_torque_rms_nm",
 }
-CONTACT_LOSS = ["--set", "mechanism.spring_mode=push", "--set", "mechanism.spring_preload=1",
-                "--set", "mechanism.crank_speed=240 rpm"]
+CONTACT_LOSS = [
+    "--set",
+    "mechanism.spring_mode=push",
+    "--set",
+    "mechanism.spring_preload=1",
+    "--set",
+    "mechanism.crank_speed=240 rpm",
+]
 
 
 def run_json(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[dict, str]:
@@ -39,7 +54,8 @@ def test_json_has_contract_keys(
     assert data["contact_lost_crank_angles_deg"] == []
     assert 0 < data["load_min_n"] < data["load_mean_n"] < data["load_max_n"]
     assert data["azimuth_range_deg"] == pytest.approx(
-        data["azimuth_max_deg"] - data["azimuth_min_deg"])
+        data["azimuth_max_deg"] - data["azimuth_min_deg"]
+    )
     assert data["total_relative_rotation_rad"] == pytest.approx(4 * np.arcsin(0.07 / 0.2), rel=1e-3)
 
 

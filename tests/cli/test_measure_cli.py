@@ -14,8 +14,15 @@ from jointwear.cli import main
 from jointwear.measurement.synthetic import cosine_squared_scar, synthesize_measurement
 
 FIT_KEYS = {
-    "center_x_m", "center_y_m", "radius_m", "peak_wear_depth_m", "wear_width_deg",
-    "wear_area_m2", "rms_residual_m", "points", "points_used",
+    "center_x_m",
+    "center_y_m",
+    "radius_m",
+    "peak_wear_depth_m",
+    "wear_width_deg",
+    "wear_area_m2",
+    "rms_residual_m",
+    "points",
+    "points_used",
 }
 R0 = 7.5e-3
 CENTER = (12.3e-3, -4.0e-3)
@@ -69,9 +76,26 @@ def test_options_units_nodes_mass_and_offset(
     lines = measured_csv.read_text().splitlines()[1:]
     plain = tmp_path / "worn.txt"
     plain.write_text("".join(line.replace(",", " ") + "\n" for line in lines))
-    data = run_json(capsys, str(plain), "--radius", "7.5e-3", "--units", "mm", "--nodes", "180",
-                    "--axial-length", "20 mm", "--density", "2200 kg/m^3",
-                    "--angle-offset", "30 deg", "--profile", "bin", "--floor", "3 um")
+    data = run_json(
+        capsys,
+        str(plain),
+        "--radius",
+        "7.5e-3",
+        "--units",
+        "mm",
+        "--nodes",
+        "180",
+        "--axial-length",
+        "20 mm",
+        "--density",
+        "2200 kg/m^3",
+        "--angle-offset",
+        "30 deg",
+        "--profile",
+        "bin",
+        "--floor",
+        "3 um",
+    )
     robust = data["fits"]["robust"]
     assert robust["nodes"] == 180
     assert robust["peak_angle_deg"] == pytest.approx(0, abs=4)  # 30 deg scar seen from 30 deg
@@ -123,9 +147,19 @@ def test_errors_exit_2_with_one_line(
 
 def test_console_script_bad_file_has_no_traceback(tmp_path: Path) -> None:
     result = subprocess.run(
-        [sys.executable, "-c", "from jointwear.cli import main; main()", "measure",
-         str(tmp_path / "nope.csv"), "--radius", "7.5 mm", "--json"],
-        capture_output=True, text=True, check=False,
+        [
+            sys.executable,
+            "-c",
+            "from jointwear.cli import main; main()",
+            "measure",
+            str(tmp_path / "nope.csv"),
+            "--radius",
+            "7.5 mm",
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        check=False,
     )
     assert result.returncode == 2
     assert result.stdout == ""

@@ -8,7 +8,10 @@ import pytest
 from jointwear.tribology.metrics import JointGeometry, evaluate_metrics, profile_metrics
 
 JOINT = JointGeometry(
-    bushing_radius=0.01, clearance=5e-5, axial_length=0.0187, bushing_thickness=0.0036,
+    bushing_radius=0.01,
+    clearance=5e-5,
+    axial_length=0.0187,
+    bushing_thickness=0.0036,
     density=8900.0,
 )
 

@@ -177,8 +177,12 @@ class BushingContour:
         """
         radii = radius + wear
         if not (
-            wear.dtype == np.float64 and wear.ndim == 1 and wear.size >= 16
-            and 0.0 < axial_length < np.inf and radii.min() > 0.0 and radii.max() < np.inf
+            wear.dtype == np.float64
+            and wear.ndim == 1
+            and wear.size >= 16
+            and 0.0 < axial_length < np.inf
+            and radii.min() > 0.0
+            and radii.max() < np.inf
         ):
             return cls.from_wear_profile(radius, wear, axial_length)
         if wear.flags.writeable:
