@@ -16,6 +16,7 @@ from jointwear.errors import ConfigError
 from jointwear.materials import (
     KINDS,
     LIMIT_KEYS,
+    TABLE_KEY,
     WEAR_FORMS,
     get_material,
     library,
@@ -55,7 +56,7 @@ def test_every_value_has_a_source():
         for key, entry in table.items():
             if key == "description":
                 continue
-            assert key in KINDS, (name, key)
+            assert key in KINDS or key == TABLE_KEY, (name, key)
             assert set(entry) == {"value", "source"}, (name, key)
             assert len(entry["source"].strip()) > 10, (name, key)
 
@@ -124,7 +125,7 @@ def test_a_name_gives_the_librarys_values_and_limits(paper_config_path):
     assert bushing.name == "bronze"
     assert bushing.youngs_modulus == 100e9
     assert bushing.density == bronze.si("density")
-    assert bushing.wear_coefficient == pytest.approx(1e-6 / 640e6, rel=1e-12)
+    assert bushing.wear_coefficient == pytest.approx(1e-6 / 640e6, rel=1e-12, abs=0)
     assert bushing.max_pv == pytest.approx(2.625e6)
 
 
@@ -159,14 +160,14 @@ def test_name_with_overrides_and_no_defaults_leaking_in(tmp_path):
 def test_wear_forms_convert_to_k_d(paper_config_path, overrides, expected):
     # the paper file gives wear_coefficient: a --set wear form replaces it
     bushing = load_config(paper_config_path, overrides).materials.bushing
-    assert bushing.wear_coefficient == pytest.approx(expected, rel=1e-12)
+    assert bushing.wear_coefficient == pytest.approx(expected, rel=1e-12, abs=0)
 
 
 def test_the_pin_wears_only_where_its_table_gives_a_wear_form(paper_config_path):
     cfg = load_config(
         paper_config_path, {"materials.pin": "steel", "materials.pin.wear_factor_k": 1e-6}
     )
-    assert cfg.materials.pin.wear_coefficient == pytest.approx(1e-6 / 7.5e9)
+    assert cfg.materials.pin.wear_coefficient == pytest.approx(1e-6 / 7.5e9, abs=0)
 
 
 def test_two_wear_forms_in_one_table_are_refused(tmp_path):
@@ -290,7 +291,7 @@ TABLE_ENTRIES = table_entry("table-test", PV_TABLE, "test source, table 9") + ta
 
 @pytest.fixture
 def with_tables(monkeypatch):
-    """The library with the test entries added (the shipped library has no table yet)."""
+    """The library with the test entries added (test tables, not data)."""
     from types import MappingProxyType
 
     import jointwear.materials as materials
@@ -421,4 +422,87 @@ def test_the_documented_skf_table_follows_skfs_rating_life():
     for pv, k in zip(si["points"], si["coefficients"], strict=True):
         mpa_m_s = pv / 1e6
         expected = 0.3e-3 * max(mpa_m_s, 0.025) / (480 * mpa_m_s * 3600 * 1e6)
-        assert k == pytest.approx(expected, rel=5e-3)
+        assert k == pytest.approx(expected, rel=5e-3, abs=0)
+
+
+# ---------------------------------------------------------------- bronze's table (SKF)
+
+#: SKF, Spherical plain bearings and rod ends (PUB BU/P1 06116/1 EN, 2013), table 5, p. 52:
+#: the temperature factor b2 of the steel/bronze rating life, by band of operating
+#: temperature: (upper end of the band [degC], b2); above 180 degC SKF gives none
+SKF_B2 = ((120.0, 1.0), (160.0, 0.9), (180.0, 0.8))
+
+
+def skf_b2(celsius: float) -> float:
+    """SKF's ``b2`` at ``celsius`` [degC]: the band whose upper end (inclusive) comes first."""
+    return next(b2 for upper, b2 in SKF_B2 if celsius <= upper)
+
+
+def kelvin(celsius: float) -> float:
+    from jointwear.units import registry
+
+    return registry().Quantity(celsius, "degC").to("K").magnitude
+
+
+def test_bronzes_table_is_its_coefficient_over_skfs_temperature_factor():
+    """Every point of bronze's table is K_d / b2(T), K_d the entry's own coefficient and b2
+    SKF's band value (a point 1 K past a band's end is in the next band); the table spans
+    -30 degC (SKF's lower end for steel/bronze rod ends) to 180 degC (the end of SKF's table)."""
+    from jointwear.units import registry
+
+    bronze = get_material("bronze")
+    table = bronze.wear_table()
+    assert table["against"] == "temperature"
+    assert table["points"][0] == pytest.approx(kelvin(-30.0), abs=1e-9)
+    assert table["points"][-1] == pytest.approx(kelvin(180.0), abs=1e-9)
+    k_d = bronze.si("wear_coefficient")
+    bands = set()
+    for point, coefficient in zip(table["points"], table["coefficients"], strict=True):
+        celsius = registry().Quantity(point, "K").to("degC").magnitude
+        assert coefficient == pytest.approx(k_d / skf_b2(celsius), rel=1e-7, abs=0), celsius
+        bands.add(skf_b2(celsius))
+    assert bands == {b2 for _, b2 in SKF_B2}
+    assert "table 5 p. 52" in bronze.sources["wear_table"]
+
+
+@pytest.fixture
+def bronze_joint(paper_config_path):
+    """The paper's joint with a bronze bushing (coarse grid, no contour update: the wear
+    is linear in K_d)."""
+    return load_config(
+        paper_config_path,
+        overrides={
+            "materials.bushing": "bronze",
+            "contact.nodes": 72,
+            "simulation.steps_per_revolution": 72,
+            "simulation.update_contour": False,
+        },
+    )
+
+
+def test_bronze_wears_by_skfs_temperature_factor(bronze_joint):
+    """At 100 degC (b2 = 1) the tabulated law is Archard's law with bronze's K_d; at 140
+    degC the wear is 1/0.9 of that, at 170 degC 1/0.8 = 1.25 times."""
+    import numpy as np
+
+    def at(celsius: float):
+        return _run(
+            bronze_joint.replace({"wear.law": "tabulated", "wear.temperature": kelvin(celsius)})
+        )
+
+    cool = at(100.0)
+    np.testing.assert_allclose(cool, _run(bronze_joint), rtol=1e-12, atol=0)
+    np.testing.assert_allclose(at(140.0), cool / 0.9, rtol=1e-7, atol=0)
+    hot = at(170.0)
+    np.testing.assert_allclose(hot, cool / 0.8, rtol=1e-7, atol=0)
+    assert hot.max() == pytest.approx(1.25 * cool.max(), rel=1e-7, abs=0)
+
+
+@pytest.mark.parametrize("celsius", [-40.0, 185.0])
+def test_bronzes_table_refuses_a_temperature_outside_it(bronze_joint, celsius: float):
+    """Below -30 degC and above 180 degC SKF gives no factor: the run is refused in one line
+    naming the key, not extrapolated."""
+    with pytest.raises(ConfigError, match=r"wear\.temperature: .* outside the table") as refused:
+        bronze_joint.replace({"wear.law": "tabulated", "wear.temperature": kelvin(celsius)})
+    assert "\n" not in str(refused.value)
+    assert "not extrapolated" in str(refused.value)
