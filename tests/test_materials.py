@@ -506,3 +506,13 @@ def test_bronzes_table_refuses_a_temperature_outside_it(bronze_joint, celsius: f
         bronze_joint.replace({"wear.law": "tabulated", "wear.temperature": kelvin(celsius)})
     assert "\n" not in str(refused.value)
     assert "not extrapolated" in str(refused.value)
+
+
+def test_wear_temperature_reads_a_temperature_with_its_unit(bronze_joint):
+    """``wear.temperature = "170 degC"`` is 443.15 K (an offset unit, not a factor), and a
+    text that is no temperature is refused in one line naming the key."""
+    tabulated = bronze_joint.replace({"wear.law": "tabulated", "wear.temperature": "170 degC"})
+    assert tabulated.wear.temperature == pytest.approx(443.15, rel=1e-12, abs=0)
+    with pytest.raises(ConfigError, match=r"wear\.temperature") as refused:
+        bronze_joint.replace({"wear.law": "tabulated", "wear.temperature": "170 mm"})
+    assert "\n" not in str(refused.value)

@@ -298,6 +298,43 @@ class SimulationConfig(Section):
 #: a table's points (SI of wear.table_against) and coefficients [1/Pa], 2 to 1000 each
 
 
+#: lowest temperature read [K]: a bare number is kelvin, and oil is liquid well above this
+LOWEST_TEMPERATURE = 173.15
+#: temperature of a lubricant given without one: the reference of the ISO VG grades [K]
+DEFAULT_TEMPERATURE = 313.15
+
+
+def read_temperature(value: Any) -> float:
+    """A temperature [K] from a number (kelvin) or a string with units (``"60 degC"``).
+
+    pint refuses ``"60 degC"`` as a product of a number and an offset unit; the
+    number and the unit are read apart and the quantity built from them.
+    """
+    if isinstance(value, str):
+        number, _, unit = value.strip().partition(" ")
+        try:
+            kelvin = float(
+                registry().Quantity(float(number), unit.strip() or "K").to("K").magnitude
+            )
+        except Exception as exc:  # pint's and float's errors alike: one message
+            raise ValueError(f"cannot read {value!r} as a temperature ({exc})") from None
+    elif isinstance(value, int | float) and not isinstance(value, bool):
+        kelvin = float(value)
+    else:
+        raise ValueError(f"expected a temperature such as '60 degC', got {value!r}")
+    if not math.isfinite(kelvin) or kelvin < LOWEST_TEMPERATURE:
+        raise ValueError(
+            f"{value!r} is below {LOWEST_TEMPERATURE:g} K (a bare number is kelvin: "
+            "write '60 degC')"
+        )
+    return kelvin
+
+
+def optional_temperature(value: Any) -> float | None:
+    """:func:`read_temperature`, with ``None`` (not given) passed through [K]."""
+    return None if value is None else read_temperature(value)
+
+
 class WearConfig(Section):
     """The wear law and its coefficients (``archard`` uses the bushing's wear coefficient)."""
 
@@ -320,7 +357,7 @@ class WearConfig(Section):
     table_against: Literal["speed", "pv", "temperature"] | None = None
     table_points: TablePoints | None = None
     table_coefficients: TableCoefficients | None = None
-    temperature: Annotated[float | None, Field(gt=0, le=2000)] = None  # [K]
+    temperature: Annotated[float | None, BeforeValidator(optional_temperature)] = None  # [K]
 
     @field_validator("law")
     @classmethod
@@ -359,43 +396,6 @@ class LifeConfig(Section):
 LubricationModel = Literal["dry", "short-bearing", "long-bearing", "finite-length"]
 #: ``lubrication.cavitation``: where the film ends (``jointwear.lubrication.reynolds``)
 LubricationCavitation = Literal["half-Sommerfeld", "Reynolds"]
-#: lowest temperature read [K]: a bare number is kelvin, and oil is liquid well above this
-LOWEST_TEMPERATURE = 173.15
-#: temperature of a lubricant given without one: the reference of the ISO VG grades [K]
-DEFAULT_TEMPERATURE = 313.15
-
-
-def read_temperature(value: Any) -> float:
-    """A temperature [K] from a number (kelvin) or a string with units (``"60 degC"``).
-
-    pint refuses ``"60 degC"`` as a product of a number and an offset unit; the
-    number and the unit are read apart and the quantity built from them.
-    """
-    if isinstance(value, str):
-        number, _, unit = value.strip().partition(" ")
-        try:
-            kelvin = float(
-                registry().Quantity(float(number), unit.strip() or "K").to("K").magnitude
-            )
-        except Exception as exc:  # pint's and float's errors alike: one message
-            raise ValueError(f"cannot read {value!r} as a temperature ({exc})") from None
-    elif isinstance(value, int | float) and not isinstance(value, bool):
-        kelvin = float(value)
-    else:
-        raise ValueError(f"expected a temperature such as '60 degC', got {value!r}")
-    if not math.isfinite(kelvin) or kelvin < LOWEST_TEMPERATURE:
-        raise ValueError(
-            f"{value!r} is below {LOWEST_TEMPERATURE:g} K (a bare number is kelvin: "
-            "write '60 degC')"
-        )
-    return kelvin
-
-
-def optional_temperature(value: Any) -> float | None:
-    """:func:`read_temperature`, with ``None`` (not given) passed through [K]."""
-    return None if value is None else read_temperature(value)
-
-
 class LubricationConfig(Section):
     """A lubricated joint: the film model, the oil and the surfaces' roughness.
 
