@@ -396,6 +396,8 @@ class LifeConfig(Section):
 LubricationModel = Literal["dry", "short-bearing", "long-bearing", "finite-length"]
 #: ``lubrication.cavitation``: where the film ends (``jointwear.lubrication.reynolds``)
 LubricationCavitation = Literal["half-Sommerfeld", "Reynolds"]
+
+
 class LubricationConfig(Section):
     """A lubricated joint: the film model, the oil and the surfaces' roughness.
 
