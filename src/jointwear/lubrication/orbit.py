@@ -28,7 +28,8 @@ Dormand--Prince 5(4); :func:`compiled_kernel`) or, without numba, with
 :func:`scipy.integrate.solve_ivp` (LSODA) and the right-hand side in Python, over whole
 cycles until the start of one cycle and its end agree within a tolerance (a fixed
 point of the cycle map; where plain repetition converges slowly, the fixed point is
-found with :func:`scipy.optimize.root`). The eccentricity is integrated in the
+found with :func:`scipy.optimize.root`, started with the secant Jacobian of the repeated
+cycles, :func:`secant_jacobian`). The eccentricity is integrated in the
 stretched coordinate ``e / (1 - eps)`` (:func:`stretched`), in which the wall lies at
 infinity: the pin stays inside its clearance and the gap keeps a relative accuracy.
 
