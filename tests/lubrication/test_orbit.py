@@ -15,6 +15,7 @@ import math
 import numpy as np
 import pytest
 
+from jointwear.lubrication import orbit as orbit_module
 from jointwear.lubrication.mixed import steady_load_sharing
 from jointwear.lubrication.mobility import dimensionless_force
 from jointwear.lubrication.orbit import (
@@ -23,6 +24,7 @@ from jointwear.lubrication.orbit import (
     OrbitSolver,
     film_shape,
     periodic_orbit,
+    secant_jacobian,
     short_shape,
     stretched,
     unstretched,
@@ -218,3 +220,74 @@ def test_a_pin_on_the_wall_rests_at_one_angle_wherever_it_starts():
     # (a fixed point of the cycle map alone: anywhere within 0.2 rad, at gaps of 1e-6
     # to 4e-5, from these starts)
     assert max(angles) - min(angles) < 1e-4
+
+
+def test_the_secant_jacobian_of_an_affine_cycle_map_is_its_own():
+    """Three repeated cycles of ``q -> A q + b`` give the residual's Jacobian ``A - I``;
+    a map that shrinks every direction alike steps along one line: no estimate."""
+    matrix, shift = np.array([[0.3, -0.2], [0.1, 0.5]]), np.array([1.0, -2.0])
+    starts, ends = [np.array([4.0, 7.0])], []
+    for _ in range(3):
+        ends.append(matrix @ starts[-1] + shift)
+        starts.append(ends[-1])
+    np.testing.assert_allclose(secant_jacobian(starts[:3], ends), matrix - np.eye(2), atol=1e-12)
+    assert secant_jacobian(starts[:2], ends[:2]) is None  # two cycles: one step
+    along = [np.array([4.0, 7.0]) * 0.5**k for k in range(4)]
+    assert secant_jacobian(along[:3], along[1:]) is None
+
+
+def paper_pin_cycle() -> tuple[OrbitSolver, tuple, np.ndarray]:
+    """The paper's Table 3 rod-slider pin, finite length, ISO VG 68 at 60 degC (lambda ~ 0.2):
+    its solver, the arguments of :func:`periodic_orbit` and the first guess."""
+    from pathlib import Path
+
+    from jointwear import Simulation, load_config
+    from jointwear.contact.lubricated import film_speeds
+
+    config = Path(__file__).resolve().parents[2] / "examples/paper/table3_winkler_120rpm.toml"
+    simulation = Simulation(
+        load_config(
+            config,
+            overrides=[
+                "lubrication.model=finite-length",
+                "lubrication.lubricant=iso-vg-68",
+                "lubrication.temperature=60 degC",
+            ],
+        )
+    )
+    lubrication, cycle = simulation.solver.lubrication, simulation.load_cycle
+    rate, _ = film_speeds(cycle)
+    arguments = (
+        lubrication.solver,
+        cycle.time,
+        cycle.period,
+        cycle.load * np.cos(cycle.azimuth),
+        cycle.load * np.sin(cycle.azimuth),
+        0.25 * (rate + np.roll(rate, 1)),
+    )
+    return lubrication.solver, arguments, lubrication.first_guess(cycle)
+
+
+def test_the_secant_search_finds_the_plain_root_finders_orbit(monkeypatch):
+    """The finite-length pin in the mixed regime: the orbit from the plain cycles'
+    secant Jacobian, stopped where a cycle closes within a twentieth of the tolerance,
+    is the one the root finder finds with its forward differences and its own step
+    tolerance, within the orbit's tolerance at every step, in fewer cycles; and one
+    more cycle from its start, integrated afresh, closes within the tolerance."""
+    solver, arguments, guess = paper_pin_cycle()
+    fast = periodic_orbit(*arguments, guess)
+    with monkeypatch.context() as patch:
+        patch.setattr(orbit_module, "SECANT_CONDITION", 0.0)
+        patch.setattr(orbit_module, "SETTLED", 0.0)
+        plain = periodic_orbit(*arguments, guess)
+    floor = solver.roughness / solver.clearance
+    allowed = 1e-3 * max(1.0 - fast.eccentricity_ratio.max(), floor)
+    assert 1.0 - fast.eccentricity_ratio.max() < floor  # within the roughness: the strict case
+    shift = np.hypot(
+        fast.eccentricity_x - plain.eccentricity_x, fast.eccentricity_y - plain.eccentricity_y
+    )
+    assert shift.max() < allowed
+    assert fast.cycles < plain.cycles
+    start = np.array([fast.eccentricity_x[0], fast.eccentricity_y[0]])
+    end = unstretched(CycleMap(*arguments)(stretched(start))[:, -1])
+    assert np.hypot(*(end - start)) < allowed

@@ -28,7 +28,8 @@ Dormand--Prince 5(4); :func:`compiled_kernel`) or, without numba, with
 :func:`scipy.integrate.solve_ivp` (LSODA) and the right-hand side in Python, over whole
 cycles until the start of one cycle and its end agree within a tolerance (a fixed
 point of the cycle map; where plain repetition converges slowly, the fixed point is
-found with :func:`scipy.optimize.root`). The eccentricity is integrated in the
+found with :func:`scipy.optimize.root`, started with the secant Jacobian of the repeated
+cycles, :func:`secant_jacobian`). The eccentricity is integrated in the
 stretched coordinate ``e / (1 - eps)`` (:func:`stretched`), in which the wall lies at
 infinity: the pin stays inside its clearance and the gap keeps a relative accuracy.
 
@@ -69,7 +70,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.integrate import solve_ivp
 from scipy.interpolate import CubicSpline, RectBivariateSpline, bisplev
-from scipy.optimize import brentq, root
+from scipy.optimize import approx_fprime, brentq, root
 
 from jointwear.errors import ConvergenceError
 from jointwear.lubrication.asperity import (
@@ -111,6 +112,12 @@ ROOT_ROUNDS = 3
 #: (MINPACK's ``epsfcn``): well above the integration's error, so that the cycle
 #: map's Jacobian is not round-off of the tolerance ``INTEGRATION_RTOL``
 JACOBIAN_STEP = 1e-6
+#: the two steps of the plain cycles give the secant Jacobian unless the matrix of
+#: them is conditioned worse than this (they point nearly the same way)
+SECANT_CONDITION = 100.0
+#: the root finder stops at a start whose cycle closes within this share of the
+#: tolerance: its further steps move the start by the integration's noise
+SETTLED = 0.05
 #: a mismatch of the film force's direction this small is a root [rad]
 ROUND_OFF = 1e-12
 #: the periodicity tolerance scales with the smallest gap, but not below this many
@@ -558,6 +565,20 @@ def unstretched(stretched_state: ArrayLike) -> FloatArray:
     return q / (1.0 + np.hypot(q[0], q[1]))
 
 
+class Settled(Exception):
+    """A start of the root finder whose cycle closes within ``SETTLED`` of the tolerance.
+
+    Parameters
+    ----------
+    start : ndarray, shape (2,)
+        That start in the stretched coordinate [-].
+    """
+
+    def __init__(self, start: FloatArray) -> None:
+        super().__init__("the cycle closes")
+        self.start = np.array(start, float)
+
+
 class PinOnWall(Exception):
     """The orbit's root finder put the pin closer to the wall than ``CycleMap.wall_gap``.
 
@@ -693,6 +714,33 @@ def residual(cycle: CycleMap, initial: FloatArray) -> FloatArray:
     return cycle(initial)[:, -1] - initial
 
 
+def secant_jacobian(starts: list[FloatArray], ends: list[FloatArray]) -> FloatArray | None:
+    """The cycle map's residual Jacobian from the last three plain cycles, or None [-].
+
+    Plain repetition ``q_{k+1} = P(q_k)`` gives the residual ``r(q) = P(q) - q`` at
+    three starts for nothing; its two differences give the secant (Broyden) estimate
+
+    .. math:: J\\,[\\Delta q_1\\;\\Delta q_2] = [\\Delta r_1\\;\\Delta r_2],
+
+    solved with :func:`numpy.linalg.solve`. None where fewer than three cycles were
+    repeated, or where the two steps point nearly the same way (the repetition
+    settles along one direction: the other column would be noise).
+
+    Parameters
+    ----------
+    starts, ends : list of ndarray, shape (2,)
+        Starts and ends of the plain cycles, stretched coordinate [-].
+    """
+    if len(starts) < 3:
+        return None
+    steps = np.column_stack([starts[-2] - starts[-3], starts[-1] - starts[-2]])
+    residuals = [end - start for start, end in zip(starts[-3:], ends[-3:], strict=True)]
+    changes = np.column_stack([residuals[1] - residuals[0], residuals[2] - residuals[1]])
+    if np.linalg.cond(steps / np.hypot(steps[0], steps[1])) > SECANT_CONDITION:
+        return None
+    return np.linalg.solve(steps.T, changes.T).T
+
+
 def fixed_point(
     cycle: CycleMap,
     path: FloatArray,
@@ -702,8 +750,14 @@ def fixed_point(
     """The path of a cycle that ends where it starts, from the cycle ``path`` [-].
 
     Plain repetition while it contracts fast (a stiff film forgets its start
-    quickly), then :func:`scipy.optimize.root` on the cycle map; the path of the last
-    cycle integrated, periodic or not (the caller checks ``mismatch``).
+    quickly), then :func:`scipy.optimize.root` on the cycle map from the last
+    repeated start. Its Jacobian there is :func:`secant_jacobian`'s, from the cycles
+    repeated (two cycles of forward differences saved); where that is None, or where
+    the root finder asks again elsewhere, forward differences
+    (:func:`scipy.optimize.approx_fprime`, MINPACK's step). It stops at the first start
+    whose cycle closes within ``SETTLED`` of the tolerance (:class:`Settled`): its
+    further steps would move the start by the integration's error only. Returns the
+    path of the last cycle integrated, periodic or not (the caller checks ``mismatch``).
 
     Parameters
     ----------
@@ -717,27 +771,63 @@ def fixed_point(
         The orbit's tolerance (:func:`periodic_orbit`) [-].
     """
     cycles, previous = 1, math.inf
+    starts, ends = [path[:, 0]], [path[:, -1]]
     while cycles < PLAIN_CYCLES:
         error, allowed = mismatch(path)
         if error <= allowed or error > FAST_CONTRACTION * previous:
             break
         previous = error
         path = cycle(path[:, -1])
+        starts.append(path[:, 0])
+        ends.append(path[:, -1])
         cycles += 1
+    error, allowed = mismatch(path)
+    if error > allowed:
+        # the root finder's start, from where plain repetition stopped; the secant
+        # Jacobian from this cycle and the two before, not the first guess's if it can
+        path = cycle(path[:, -1])
+        starts.append(path[:, 0])
+        ends.append(path[:, -1])
+    secant = secant_jacobian(starts, ends)
+
+    def function(initial: FloatArray) -> FloatArray:
+        value = residual(cycle, initial)
+        error, allowed = mismatch(cycle.path)
+        if error <= SETTLED * allowed:
+            raise Settled(initial)
+        return value
+
+    def jacobian(initial: FloatArray) -> FloatArray:
+        # (scipy calls it once at the start to check its shape, then once more there)
+        if np.array_equal(initial, starts[-1]):
+            return secant
+        step = math.sqrt(JACOBIAN_STEP) * np.where(initial == 0.0, 1.0, np.abs(initial))
+        return approx_fprime(initial, function, step)
+
     for _ in range(ROOT_ROUNDS):
         error, allowed = mismatch(path)
         if error <= allowed:
             break
         # the cycle map's fixed point; the orbit can creep towards the wall over many
-        # cycles (a squeeze film thins slowly), which plain repetition follows slowly
-        found = root(
-            lambda initial: residual(cycle, initial),
-            path[:, -1],
-            method="hybr",
-            options={"xtol": 0.1 * tolerance, "maxfev": ROOT_EVALUATIONS, "eps": JACOBIAN_STEP},
-        )
+        # cycles (a squeeze film thins slowly), which plain repetition follows slowly;
+        # from the last start, whose cycle is integrated already
+        from_secant = secant is not None and np.array_equal(path[:, 0], starts[-1])
+        try:
+            found = root(
+                function,
+                path[:, 0],
+                jac=jacobian if from_secant else None,
+                method="hybr",
+                options={
+                    "xtol": 0.1 * tolerance,
+                    "maxfev": ROOT_EVALUATIONS,
+                    "eps": JACOBIAN_STEP,
+                },
+            ).x
+        except Settled as settled:
+            found = settled.start
         # (the cycle map integrates a start it integrated last only once)
-        path = cycle(found.x)
+        path = cycle(found)
     return path
 
 
