@@ -287,12 +287,25 @@ def _guess(t, h, y, z, q_old, t_old, h_old, y_old, have_guess):  # type: ignore[
     """The stages' first guess: the previous step's polynomial at ``t + c_i h``, or 0."""
     for s in range(3):
         if have_guess:
-            value = _dense(t + C[s] * h, t_old, h_old, y_old, q_old)
+            # _dense's polynomial, evaluated in place (no array a stage)
+            x = (t + C[s] * h - t_old) / h_old
             for i in range(y.size):
-                z[s, i] = value[i] - y[i]
+                value = y_old[i] + h_old * (
+                    q_old[i, 0] * x + q_old[i, 1] * x * x + q_old[i, 2] * x**3 + q_old[i, 3] * x**4
+                )
+                z[s, i] = value - y[i]
         else:
             for i in range(y.size):
                 z[s, i] = 0.0
+
+
+def _error_norm(err, y, y_new, rtol, atol):  # type: ignore[no-untyped-def]
+    """``||err / (atol + rtol max(|y|, |y_new|))||_rms`` without an array for the scale."""
+    total = 0.0
+    for i in range(err.size):
+        ratio = err[i] / (atol + max(abs(y[i]), abs(y_new[i])) * rtol)
+        total += ratio * ratio
+    return math.sqrt(total / err.size)
 
 
 def _error(t, y, y_new, f, z, h, rejected, v_imp, p, wear, lu_real, piv_real, err, ze, rtol, atol):  # type: ignore[no-untyped-def]  # fmt: skip
@@ -304,8 +317,7 @@ def _error(t, y, y_new, f, z, h, rejected, v_imp, p, wear, lu_real, piv_real, er
         err[i] = f[i] + ze[i]
         y_new[i] = y[i] + z[2, i]
     _lu_solve(lu_real, piv_real, err)
-    scale = atol + np.maximum(np.abs(y), np.abs(y_new)) * rtol
-    norm = _rms(err, scale)
+    norm = _error_norm(err, y, y_new, rtol, atol)
     nfev = 0
     if rejected and norm > 1.0:
         value = rhs(t, y + err, v_imp, p, wear)
@@ -313,13 +325,13 @@ def _error(t, y, y_new, f, z, h, rejected, v_imp, p, wear, lu_real, piv_real, er
         for i in range(n):
             err[i] = value[i] + ze[i]
         _lu_solve(lu_real, piv_real, err)
-        norm = _rms(err, scale)
+        norm = _error_norm(err, y, y_new, rtol, atol)
     return (norm if math.isfinite(norm) else math.inf), nfev
 
 
 def _attempt(t, t_end, y, f, h_abs, min_step, tol, v_imp, p, wear, jac, work, lu_real,
              piv_real, lu_complex, piv_complex, z, w, stages, point, dw, dw_real, dw_complex,
-             err, ze, y_new, rtol, atol, control, q_old, t_old, h_old, y_old):  # type: ignore[no-untyped-def]  # fmt: skip
+             err, ze, y_new, rtol, atol, control, q_old, t_old, h_old, y_old, scale):  # type: ignore[no-untyped-def]  # fmt: skip
     """Steps from ``(t, y)`` until one is accepted, into ``y_new`` and ``z`` (scipy's
     ``Radau._step_impl``): ``(accepted, t_new, h, error norm, sweeps, rate, right-hand
     sides)``."""
@@ -332,7 +344,8 @@ def _attempt(t, t_end, y, f, h_abs, min_step, tol, v_imp, p, wear, jac, work, lu
         h = t_new - t
         h_abs = h
         _guess(t, h, y, z, q_old, t_old, h_old, y_old, control[HAVE_GUESS] != 0.0)
-        scale = atol + np.abs(y) * rtol
+        for i in range(y.size):
+            scale[i] = atol + abs(y[i]) * rtol
         converged, sweeps, rate = False, 0, -1.0
         while not converged:
             if control[LU_VALID] == 0.0:
@@ -409,13 +422,14 @@ def _accept(t_new, y_new, h, h_predicted, error_norm, sweeps, rate, v_imp, p, we
 def _radau_work(n):  # type: ignore[no-untyped-def]
     """The Jacobian, a state, the real and complex LUs with their pivots, ``Z``, ``W``,
     the stages' right-hand sides, a stage point, ``dW`` (real, its real and complex
-    parts), the error and ``Z E / h``, the dense output's coefficients, the control."""
+    parts), the error and ``Z E / h``, the dense output's coefficients, the control, the
+    Newton sweeps' scale."""
     return (
         np.zeros((n, n)), np.empty(n), np.empty((n, n)), np.zeros(n, dtype=np.int64),
         np.empty((n, n), dtype=np.complex128), np.zeros(n, dtype=np.int64), np.zeros((3, n)),
         np.empty((3, n)), np.empty((3, n)), np.empty(n), np.empty((3, n)), np.empty(n),
         np.empty(n, dtype=np.complex128), np.empty(n), np.empty(n), np.zeros((n, 4)),
-        np.zeros(9),
+        np.zeros(9), np.empty(n),
     )  # fmt: skip
 
 
@@ -445,7 +459,7 @@ def integrate(
     n_seg = n_peaks = nfev = next_sample = stalled = 0
     status = OK
     (jac, work, lu_real, piv_real, lu_complex, piv_complex, z, w, stages, point, dw, dw_real,
-     dw_complex, err, ze, q, control) = _radau_work(n)  # fmt: skip
+     dw_complex, err, ze, q, control, scale) = _radau_work(n)  # fmt: skip
     tol = max(10 * 2.220446049250313e-16 / rtol, min(0.03, rtol**0.5))
     t, y = t0, y0.copy()
     t_old, h_old, y_old = t0, 1.0, y0.copy()
@@ -471,7 +485,7 @@ def integrate(
             ok, t_new, h, error_norm, sweeps, newton_rate, spent = _attempt(
                 t, t_end, y, f, h_abs, min_step, tol, v_imp, p, wear, jac, work, lu_real,
                 piv_real, lu_complex, piv_complex, z, w, stages, point, dw, dw_real, dw_complex,
-                err, ze, y_new, rtol, atol, control, q, t_old, h_old, y_old,
+                err, ze, y_new, rtol, atol, control, q, t_old, h_old, y_old, scale,
             )  # fmt: skip
             nfev += spent
             if not ok:
@@ -514,6 +528,7 @@ _ORDER = (
     "_collocation",
     "_predict_factor",
     "_guess",
+    "_error_norm",
     "_error",
     "_attempt",
     "_after_step",
