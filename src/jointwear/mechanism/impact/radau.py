@@ -21,20 +21,21 @@ Z`` needs one real and one complex linear system a sweep,
 with the same ``J`` (a forward difference, step :data:`DIFFERENCE_STEP`, over the first
 :data:`JACOBIAN_COLUMNS` components) and factors kept over the sweeps and steps. The
 sweeps stop when the predicted remaining error ``rate / (1 - rate) ||dW||`` is below
-``max(10 eps / rtol, min(0.03, rtol^{1/2}))``, after the first sweep with the rate of
-the last sweeps (``radau5.f``'s ``FACCON``, raised to the power 0.8 a step), and give up
-at a rate >= 1 or a prediction that six sweeps cannot reach it: then the Jacobian is
-refreshed, and if it was fresh the step halved. The error estimate is the embedded
-3rd-order one filtered by one more solve with the real factors, ``err = (mu_r/h I -
-J)^{-1} (f_0 + sum_i e_i Z_i / h)`` (after a rejection, once more with ``f(t, y_0 +
-err)``); the new step is ``h err^{-1/4}`` with Gustafsson's predictive controller [2]_,
-a safety factor that falls with the Newton sweeps, at most 10 times larger (5 times
-smaller after a rejection, half the step where the sweeps fail); the step (and its
-factors) is kept unless it would grow by 1.2 or more, and the Jacobian is recomputed
-after a step whose sweeps converged slowly (more than two at a rate above 1e-3, or two
-at a rate above :data:`SLOW_RATE`). Where the sweeps diverged with a fresh Jacobian, the
-steps stay below :data:`NEWTON_MARGIN` times the step that diverged (so the halved step
-that converged is not followed by a larger one, as in ``radau5.f``), a bound relaxed by
+``max(10 eps / r, min(0.03, r^{1/2}))``, ``r = 0.1 rtol^{2/3}`` (``radau5.f``'s; scipy's
+``Radau`` takes ``r = rtol``), after the first sweep with the rate of the last sweeps
+(``radau5.f``'s ``FACCON``, raised to the power 0.8 a step), and give up at a rate >= 1
+or a prediction that six sweeps cannot reach it: then the Jacobian is refreshed, and if
+it was fresh the step halved. The error estimate is the embedded 3rd-order one filtered
+by one more solve with the real factors, ``err = (mu_r/h I - J)^{-1} (f_0 + sum_i e_i
+Z_i / h)`` (after a rejection, once more with ``f(t, y_0 + err)``); the new step is ``h
+err^{-1/4}`` with Gustafsson's predictive controller [2]_, a safety factor that falls
+with the Newton sweeps, at most 10 times larger (5 times smaller after a rejection, half
+the step where the sweeps fail); the step (and its factors) is kept unless it would grow
+by 1.2 or more, and the Jacobian is recomputed after a step whose sweeps converged
+slowly (more than two at a rate above 1e-3, or two at a rate above :data:`SLOW_RATE`).
+Where the sweeps diverged with a fresh Jacobian, the steps stay below
+:data:`NEWTON_MARGIN` times the step that diverged (so the halved step that converged is
+not followed by a larger one, as in ``radau5.f``), a bound relaxed by
 :data:`NEWTON_RELAX` an accepted step and dropped after :data:`FAST_CLEAR` one-sweep
 steps: where the film's force bends within a step, the error estimate alone lets the
 step grow tenfold into the same divergence, each time paying the failed sweeps, a
@@ -460,7 +461,11 @@ def integrate(
     status = OK
     (jac, work, lu_real, piv_real, lu_complex, piv_complex, z, w, stages, point, dw, dw_real,
      dw_complex, err, ze, q, control, scale) = _radau_work(n)  # fmt: skip
-    tol = max(10 * 2.220446049250313e-16 / rtol, min(0.03, rtol**0.5))
+    # radau5.f's stopping test, from the tolerance it transforms for its error control
+    # (0.1 rtol^{2/3}): at rtol = 1e-8 the sweeps stop at 7e-4 of the local error allowed,
+    # where scipy's Radau (rtol itself) sweeps on to 1e-4
+    newton_rtol = 0.1 * rtol ** (2.0 / 3.0)
+    tol = max(10 * 2.220446049250313e-16 / newton_rtol, min(0.03, newton_rtol**0.5))
     t, y = t0, y0.copy()
     t_old, h_old, y_old = t0, 1.0, y0.copy()
     while status == OK:
