@@ -19,10 +19,13 @@ timed revolution (a squeeze-film spike where the pin starts pressed into the wal
 The numba kernels are compiled (or loaded from the cache) before anything is timed.
 The lubricated runs integrate with ``auto``'s choice for a film, ``Radau-compiled`` (the
 compiled RADAU5), or with ``--integrator NAME``; the dry ones with ``RK45-compiled``.
-Last measured (``--quick``, docs/dynamics.md, CPU ratios): ``Radau-compiled`` 3.0 / 2.5 /
-6.5x on the paper's joint (43 / 18 / 95 k right-hand sides) and 1.2 / 2.0 / 0.96x on the
-separating case; ``Rodas4-compiled`` 43 / 18 / 211x and 12 / 8.0 / 18x; ``RK45-compiled``
-before: 587 / 112 / 5453x and 10 / 7.6 / 19x.
+Last measured (``--quick``, docs/dynamics.md, CPU ratios, load average 7.4-8.0):
+``Radau-compiled`` 1.27 / 1.51 / 1.58x on the paper's joint (15 / 10 / 20 k right-hand
+sides) and 1.07 / 1.82 / 0.85x on the separating case (again at load 6.4: 1.27 / 1.52 /
+1.60x and 1.09 / 1.86 / 0.85x); before its Newton sweeps stopped at
+radau5.f's tolerance and its steps kept off a divergence 3.0 / 2.5 / 6.5x (43 / 18 / 95 k)
+and 1.2 / 2.0 / 0.96x; ``Rodas4-compiled`` 43 / 18 / 211x and 12 / 8.0 / 18x;
+``RK45-compiled`` 587 / 112 / 5453x and 10 / 7.6 / 19x.
 The finite-length film is not offered in contact-impact.
 """
 

@@ -114,3 +114,29 @@ def test_prothero_robinson_stiff(integrate) -> None:
     assert np.abs(states[:, 0] - np.sin(samples)).max() < 1e-7
     # an explicit method's stability alone needs lambda T / 3.3 = 6e8 steps
     assert evaluations < 5_000
+
+
+def test_step_after_a_newton_divergence() -> None:
+    # the step control's Python source (bind compiles it): after the sweeps diverged on
+    # h_d with a fresh Jacobian and converged on h_d / 2, the steps stay below h_d / 2,
+    # growing by NEWTON_RELAX a step, until two steps in a row converge in one sweep
+    control = np.zeros(9)
+    control[radau.H_DIVERGED] = 2e-4
+    h, tiny_error, sweeps, rate = 1e-4, 1e-6, 2, 0.05
+    steps = []
+    for _ in range(3):
+        h, recompute = radau._after_step(h, h, tiny_error, sweeps, rate, control)
+        steps.append(h)
+        assert not recompute  # two sweeps at 0.05: the Jacobian is kept
+    relax = radau.NEWTON_RELAX
+    assert relax < radau.KEEP_STEP < relax**2
+    np.testing.assert_allclose(steps, [1e-4, 1e-4, 1e-4 * relax**2], rtol=1e-12)
+    for _ in range(radau.FAST_CLEAR):
+        h, _ = radau._after_step(h, h, tiny_error, 1, -1.0, control)
+    assert control[radau.H_DIVERGED] == 0.0
+    # unbounded, the tiny error lets the step grow tenfold
+    assert radau._after_step(h, h, tiny_error, 1, -1.0, control)[0] == pytest.approx(
+        radau.MAX_FACTOR * h
+    )
+    # two sweeps at a slow rate refresh the Jacobian
+    assert radau._after_step(h, h, tiny_error, 2, 0.5, control)[1]

@@ -18,21 +18,29 @@ Z`` needs one real and one complex linear system a sweep,
     (\mu_r / h\, I - J)\, \Delta W_1 = \sum_i (T^{-1})_{1i} F_i - \mu_r / h\, W_1, \qquad
     (\mu_c / h\, I - J)\, (\Delta W_2 + i \Delta W_3) = \ldots ,
 
-with the same ``J`` (a forward difference, step :data:`DIFFERENCE_STEP`, over the
-first :data:`JACOBIAN_COLUMNS` components) and factors kept over the sweeps and steps.
-The sweeps stop when the predicted remaining error ``rate / (1 - rate) ||dW||`` is
-below ``max(10 eps / rtol, min(0.03, rtol^{1/2}))``, and give up at a rate >= 1 or a
-prediction that six sweeps cannot reach it: then the Jacobian is refreshed, and if it
-was fresh the step halved. The error estimate is the embedded 3rd-order one filtered
+with the same ``J`` (a forward difference, step :data:`DIFFERENCE_STEP`, over the first
+:data:`JACOBIAN_COLUMNS` components) and factors kept over the sweeps and steps. The
+sweeps stop when the predicted remaining error ``rate / (1 - rate) ||dW||`` is below
+``max(10 eps / r, min(0.03, r^{1/2}))``, ``r = 0.1 rtol^{2/3}`` (``radau5.f``'s; scipy's
+``Radau`` takes ``r = rtol``), after the first sweep with the rate of the last sweeps
+(``radau5.f``'s ``FACCON``, raised to the power 0.8 a step), and give up at a rate >= 1
+or a prediction that six sweeps cannot reach it: then the Jacobian is refreshed, and if
+it was fresh the step halved. The error estimate is the embedded 3rd-order one filtered
 by one more solve with the real factors, ``err = (mu_r/h I - J)^{-1} (f_0 + sum_i e_i
-Z_i / h)`` (after a rejection, once more with ``f(t, y_0 + err)``); the new step is
-``h err^{-1/4}`` with Gustafsson's predictive controller [2]_, a safety factor that
-falls with the Newton sweeps, at most 10 times larger (5 times smaller after a rejection,
-half the step where the sweeps fail); the step
-(and its factors) is kept unless it would grow by 1.2 or more, and the Jacobian is
-recomputed after a step whose sweeps converged slowly (more than two, rate above
-1e-3). The first guess of the stages is the previous step's collocation polynomial,
-which is also the dense output (cubic in ``s``).
+Z_i / h)`` (after a rejection, once more with ``f(t, y_0 + err)``); the new step is ``h
+err^{-1/4}`` with Gustafsson's predictive controller [2]_, a safety factor that falls
+with the Newton sweeps, at most 10 times larger (5 times smaller after a rejection, half
+the step where the sweeps fail); the step (and its factors) is kept unless it would grow
+by 1.2 or more, and the Jacobian is recomputed after a step whose sweeps converged
+slowly (more than two at a rate above 1e-3, or two at a rate above :data:`SLOW_RATE`).
+Where the sweeps diverged with a fresh Jacobian, the steps stay below
+:data:`NEWTON_MARGIN` times the step that diverged (so the halved step that converged is
+not followed by a larger one, as in ``radau5.f``), a bound relaxed by
+:data:`NEWTON_RELAX` an accepted step and dropped after :data:`FAST_CLEAR` one-sweep
+steps: where the film's force bends within a step, the error estimate alone lets the
+step grow tenfold into the same divergence, each time paying the failed sweeps, a
+Jacobian and two factorizations. The first guess of the stages is the previous step's
+collocation polynomial, which is also the dense output (cubic in ``s``).
 
 The initial step, the contact events, the penetration maxima and the samples are those
 of :mod:`jointwear.mechanism.impact.rosenbrock` (its functions are compiled again here
@@ -134,10 +142,25 @@ JACOBIAN_COLUMNS = -1
 #: the forward differences' step over ``max(|y_j|, 1)``; bound (as RODAS4's)
 DIFFERENCE_STEP = 1.4901161193847656e-08
 
+#: a Newton rate above which the Jacobian is recomputed after the step even if the sweeps
+#: converged in two (a rate of 0.3-0.6 in two sweeps foretells a failure on the next step)
+SLOW_RATE = 0.3
+#: after the sweeps diverged on a step ``h_d`` with a fresh Jacobian, the next steps stay
+#: below ``NEWTON_MARGIN h_d``, a bound that grows by ``NEWTON_RELAX`` an accepted step
+#: and is dropped after ``FAST_CLEAR`` steps in a row that converged in one sweep (a
+#: divergence that was the rounding of a stiff linear system's sweeps, not the film)
+NEWTON_MARGIN = 0.5
+NEWTON_RELAX = 1.1
+FAST_CLEAR = 2
+
 #: the step control's state, indices of ``control``: the previous step's prediction and
 #: error norm (``HAVE_OLD``: whether they exist), the Jacobian fresh at the step's start,
-#: the factors valid, a previous step's polynomial to start the stages from
+#: the factors valid, a previous step's polynomial to start the stages from, the step
+#: whose sweeps diverged last (:data:`NEWTON_MARGIN`; 0: none), ``radau5.f``'s ``FACCON``
+#: (the last Newton rate's ``rate / (1 - rate)``, 1 at a segment's start), the accepted
+#: steps in a row that took one sweep
 H_OLD, ERR_OLD, HAVE_OLD, CURRENT_JAC, LU_VALID, HAVE_GUESS = 0, 1, 2, 3, 4, 5
+H_DIVERGED, FACCON, FAST_STEPS = 6, 7, 8
 
 
 def rhs(t, y, impact_velocity, p, wear):  # type: ignore[no-untyped-def]
@@ -190,16 +213,19 @@ def _factor(jac, h, lu_real, piv_real, lu_complex, piv_complex):  # type: ignore
 
 
 def _collocation(t, y, h, scale, tol, v_imp, p, wear, lu_real, piv_real, lu_complex,
-                 piv_complex, z, w, stages, point, dw, dw_real, dw_complex):  # type: ignore[no-untyped-def]  # fmt: skip
+                 piv_complex, z, w, stages, point, dw, dw_real, dw_complex, control):  # type: ignore[no-untyped-def]  # fmt: skip
     """Simplified Newton sweeps on the stages from the guess in ``z`` (``Z``, overwritten
     by the solution): ``(converged, sweeps, rate, right-hand sides)``, ``rate`` -1 if
-    there was one sweep only."""
+    there was one sweep only. One sweep suffices where the last known rate (``control``'s
+    ``FACCON``, ``radau5.f``'s) predicts the remaining error below ``tol``."""
     n = y.size
     m_real, m_complex = MU_REAL / h, MU_COMPLEX / h
     for s in range(3):
         for i in range(n):
             w[s, i] = TI[s, 0] * z[0, i] + TI[s, 1] * z[1, i] + TI[s, 2] * z[2, i]
     norm_old, rate, nfev, sweeps = -1.0, -1.0, 0, 0
+    faccon = max(control[FACCON], 2.220446049250313e-16) ** 0.8
+    control[FACCON] = faccon
     for k in range(NEWTON_MAXITER):
         sweeps = k + 1
         finite = True
@@ -234,13 +260,14 @@ def _collocation(t, y, h, scale, tol, v_imp, p, wear, lu_real, piv_real, lu_comp
             rate = norm / norm_old
             if rate >= 1.0 or rate ** (NEWTON_MAXITER - k) / (1.0 - rate) * norm > tol:
                 break
+            control[FACCON] = rate / (1.0 - rate)
         for s in range(3):
             for i in range(n):
                 w[s, i] += dw[s, i]
         for s in range(3):
             for i in range(n):
                 z[s, i] = T[s, 0] * w[0, i] + T[s, 1] * w[1, i] + T[s, 2] * w[2, i]
-        if norm == 0.0 or (rate >= 0.0 and rate / (1.0 - rate) * norm < tol):
+        if norm == 0.0 or control[FACCON] * norm < tol:
             return True, sweeps, rate, nfev
         norm_old = norm
     return False, sweeps, rate, nfev
@@ -261,12 +288,25 @@ def _guess(t, h, y, z, q_old, t_old, h_old, y_old, have_guess):  # type: ignore[
     """The stages' first guess: the previous step's polynomial at ``t + c_i h``, or 0."""
     for s in range(3):
         if have_guess:
-            value = _dense(t + C[s] * h, t_old, h_old, y_old, q_old)
+            # _dense's polynomial, evaluated in place (no array a stage)
+            x = (t + C[s] * h - t_old) / h_old
             for i in range(y.size):
-                z[s, i] = value[i] - y[i]
+                value = y_old[i] + h_old * (
+                    q_old[i, 0] * x + q_old[i, 1] * x * x + q_old[i, 2] * x**3 + q_old[i, 3] * x**4
+                )
+                z[s, i] = value - y[i]
         else:
             for i in range(y.size):
                 z[s, i] = 0.0
+
+
+def _error_norm(err, y, y_new, rtol, atol):  # type: ignore[no-untyped-def]
+    """``||err / (atol + rtol max(|y|, |y_new|))||_rms`` without an array for the scale."""
+    total = 0.0
+    for i in range(err.size):
+        ratio = err[i] / (atol + max(abs(y[i]), abs(y_new[i])) * rtol)
+        total += ratio * ratio
+    return math.sqrt(total / err.size)
 
 
 def _error(t, y, y_new, f, z, h, rejected, v_imp, p, wear, lu_real, piv_real, err, ze, rtol, atol):  # type: ignore[no-untyped-def]  # fmt: skip
@@ -278,8 +318,7 @@ def _error(t, y, y_new, f, z, h, rejected, v_imp, p, wear, lu_real, piv_real, er
         err[i] = f[i] + ze[i]
         y_new[i] = y[i] + z[2, i]
     _lu_solve(lu_real, piv_real, err)
-    scale = atol + np.maximum(np.abs(y), np.abs(y_new)) * rtol
-    norm = _rms(err, scale)
+    norm = _error_norm(err, y, y_new, rtol, atol)
     nfev = 0
     if rejected and norm > 1.0:
         value = rhs(t, y + err, v_imp, p, wear)
@@ -287,13 +326,13 @@ def _error(t, y, y_new, f, z, h, rejected, v_imp, p, wear, lu_real, piv_real, er
         for i in range(n):
             err[i] = value[i] + ze[i]
         _lu_solve(lu_real, piv_real, err)
-        norm = _rms(err, scale)
+        norm = _error_norm(err, y, y_new, rtol, atol)
     return (norm if math.isfinite(norm) else math.inf), nfev
 
 
 def _attempt(t, t_end, y, f, h_abs, min_step, tol, v_imp, p, wear, jac, work, lu_real,
              piv_real, lu_complex, piv_complex, z, w, stages, point, dw, dw_real, dw_complex,
-             err, ze, y_new, rtol, atol, control, q_old, t_old, h_old, y_old):  # type: ignore[no-untyped-def]  # fmt: skip
+             err, ze, y_new, rtol, atol, control, q_old, t_old, h_old, y_old, scale):  # type: ignore[no-untyped-def]  # fmt: skip
     """Steps from ``(t, y)`` until one is accepted, into ``y_new`` and ``z`` (scipy's
     ``Radau._step_impl``): ``(accepted, t_new, h, error norm, sweeps, rate, right-hand
     sides)``."""
@@ -306,7 +345,8 @@ def _attempt(t, t_end, y, f, h_abs, min_step, tol, v_imp, p, wear, jac, work, lu
         h = t_new - t
         h_abs = h
         _guess(t, h, y, z, q_old, t_old, h_old, y_old, control[HAVE_GUESS] != 0.0)
-        scale = atol + np.abs(y) * rtol
+        for i in range(y.size):
+            scale[i] = atol + abs(y[i]) * rtol
         converged, sweeps, rate = False, 0, -1.0
         while not converged:
             if control[LU_VALID] == 0.0:
@@ -315,11 +355,12 @@ def _attempt(t, t_end, y, f, h_abs, min_step, tol, v_imp, p, wear, jac, work, lu
                 control[LU_VALID] = 1.0
             converged, sweeps, rate, spent = _collocation(
                 t, y, h, scale, tol, v_imp, p, wear, lu_real, piv_real, lu_complex,
-                piv_complex, z, w, stages, point, dw, dw_real, dw_complex,
+                piv_complex, z, w, stages, point, dw, dw_real, dw_complex, control,
             )  # fmt: skip
             nfev += spent
             if not converged:
                 if control[CURRENT_JAC] != 0.0:
+                    control[H_DIVERGED] = h
                     break
                 nfev += _radau_jacobian(t, y, f, v_imp, p, wear, jac, work)
                 control[CURRENT_JAC], control[LU_VALID] = 1.0, 0.0
@@ -344,11 +385,17 @@ def _attempt(t, t_end, y, f, h_abs, min_step, tol, v_imp, p, wear, jac, work, lu
 def _after_step(h, h_abs_predicted, error_norm, sweeps, rate, control):  # type: ignore[no-untyped-def]
     """The next step's size after an accepted one of ``h``; whether to recompute the
     Jacobian at the new point (the factors marked stale with a new step)."""
-    recompute = sweeps > 2 and rate > 1e-3
+    recompute = (sweeps > 2 and rate > 1e-3) or rate > SLOW_RATE
     safety = 0.9 * (2 * NEWTON_MAXITER + 1) / (2 * NEWTON_MAXITER + sweeps)
     factor = _predict_factor(h, control[H_OLD], error_norm, control[ERR_OLD],
                              control[HAVE_OLD] != 0.0)  # fmt: skip
     factor = min(MAX_FACTOR, safety * factor)
+    control[FAST_STEPS] = control[FAST_STEPS] + 1.0 if sweeps == 1 else 0.0
+    if control[FAST_STEPS] >= FAST_CLEAR:
+        control[H_DIVERGED] = 0.0
+    if control[H_DIVERGED] > 0.0:
+        factor = min(factor, max(NEWTON_MARGIN * control[H_DIVERGED] / h, 1.0))
+        control[H_DIVERGED] *= NEWTON_RELAX
     if not recompute and factor < KEEP_STEP:
         factor = 1.0
     else:
@@ -376,13 +423,14 @@ def _accept(t_new, y_new, h, h_predicted, error_norm, sweeps, rate, v_imp, p, we
 def _radau_work(n):  # type: ignore[no-untyped-def]
     """The Jacobian, a state, the real and complex LUs with their pivots, ``Z``, ``W``,
     the stages' right-hand sides, a stage point, ``dW`` (real, its real and complex
-    parts), the error and ``Z E / h``, the dense output's coefficients, the control."""
+    parts), the error and ``Z E / h``, the dense output's coefficients, the control, the
+    Newton sweeps' scale."""
     return (
         np.zeros((n, n)), np.empty(n), np.empty((n, n)), np.zeros(n, dtype=np.int64),
         np.empty((n, n), dtype=np.complex128), np.zeros(n, dtype=np.int64), np.zeros((3, n)),
         np.empty((3, n)), np.empty((3, n)), np.empty(n), np.empty((3, n)), np.empty(n),
         np.empty(n, dtype=np.complex128), np.empty(n), np.empty(n), np.zeros((n, 4)),
-        np.zeros(6),
+        np.zeros(9), np.empty(n),
     )  # fmt: skip
 
 
@@ -412,8 +460,12 @@ def integrate(
     n_seg = n_peaks = nfev = next_sample = stalled = 0
     status = OK
     (jac, work, lu_real, piv_real, lu_complex, piv_complex, z, w, stages, point, dw, dw_real,
-     dw_complex, err, ze, q, control) = _radau_work(n)  # fmt: skip
-    tol = max(10 * 2.220446049250313e-16 / rtol, min(0.03, rtol**0.5))
+     dw_complex, err, ze, q, control, scale) = _radau_work(n)  # fmt: skip
+    # radau5.f's stopping test, from the tolerance it transforms for its error control
+    # (0.1 rtol^{2/3}): at rtol = 1e-8 the sweeps stop at 7e-4 of the local error allowed,
+    # where scipy's Radau (rtol itself) sweeps on to 1e-4
+    newton_rtol = 0.1 * rtol ** (2.0 / 3.0)
+    tol = max(10 * 2.220446049250313e-16 / newton_rtol, min(0.03, newton_rtol**0.5))
     t, y = t0, y0.copy()
     t_old, h_old, y_old = t0, 1.0, y0.copy()
     while status == OK:
@@ -426,7 +478,7 @@ def integrate(
             break
         nfev += 2 + _radau_jacobian(t, y, f, v_imp, p, wear, jac, work)
         control[:] = 0.0
-        control[CURRENT_JAC] = 1.0
+        control[CURRENT_JAC], control[FACCON] = 1.0, 1.0
         event = False
         while t < t_end:
             min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
@@ -438,7 +490,7 @@ def integrate(
             ok, t_new, h, error_norm, sweeps, newton_rate, spent = _attempt(
                 t, t_end, y, f, h_abs, min_step, tol, v_imp, p, wear, jac, work, lu_real,
                 piv_real, lu_complex, piv_complex, z, w, stages, point, dw, dw_real, dw_complex,
-                err, ze, y_new, rtol, atol, control, q, t_old, h_old, y_old,
+                err, ze, y_new, rtol, atol, control, q, t_old, h_old, y_old, scale,
             )  # fmt: skip
             nfev += spent
             if not ok:
@@ -481,6 +533,7 @@ _ORDER = (
     "_collocation",
     "_predict_factor",
     "_guess",
+    "_error_norm",
     "_error",
     "_attempt",
     "_after_step",
