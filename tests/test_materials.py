@@ -124,7 +124,7 @@ def test_a_name_gives_the_librarys_values_and_limits(paper_config_path):
     assert bushing.name == "bronze"
     assert bushing.youngs_modulus == 100e9
     assert bushing.density == bronze.si("density")
-    assert bushing.wear_coefficient == pytest.approx(1e-6 / 640e6, rel=1e-12)
+    assert bushing.wear_coefficient == pytest.approx(1e-6 / 640e6, rel=1e-12, abs=0)
     assert bushing.max_pv == pytest.approx(2.625e6)
 
 
@@ -159,14 +159,14 @@ def test_name_with_overrides_and_no_defaults_leaking_in(tmp_path):
 def test_wear_forms_convert_to_k_d(paper_config_path, overrides, expected):
     # the paper file gives wear_coefficient: a --set wear form replaces it
     bushing = load_config(paper_config_path, overrides).materials.bushing
-    assert bushing.wear_coefficient == pytest.approx(expected, rel=1e-12)
+    assert bushing.wear_coefficient == pytest.approx(expected, rel=1e-12, abs=0)
 
 
 def test_the_pin_wears_only_where_its_table_gives_a_wear_form(paper_config_path):
     cfg = load_config(
         paper_config_path, {"materials.pin": "steel", "materials.pin.wear_factor_k": 1e-6}
     )
-    assert cfg.materials.pin.wear_coefficient == pytest.approx(1e-6 / 7.5e9)
+    assert cfg.materials.pin.wear_coefficient == pytest.approx(1e-6 / 7.5e9, rel=1e-6, abs=0)
 
 
 def test_two_wear_forms_in_one_table_are_refused(tmp_path):
@@ -421,4 +421,4 @@ def test_the_documented_skf_table_follows_skfs_rating_life():
     for pv, k in zip(si["points"], si["coefficients"], strict=True):
         mpa_m_s = pv / 1e6
         expected = 0.3e-3 * max(mpa_m_s, 0.025) / (480 * mpa_m_s * 3600 * 1e6)
-        assert k == pytest.approx(expected, rel=5e-3)
+        assert k == pytest.approx(expected, rel=5e-3, abs=0)
