@@ -167,7 +167,7 @@ def test_the_pin_wears_only_where_its_table_gives_a_wear_form(paper_config_path)
     cfg = load_config(
         paper_config_path, {"materials.pin": "steel", "materials.pin.wear_factor_k": 1e-6}
     )
-    assert cfg.materials.pin.wear_coefficient == pytest.approx(1e-6 / 7.5e9, abs=0)
+    assert cfg.materials.pin.wear_coefficient == pytest.approx(1e-6 / 7.5e9, rel=1e-6, abs=0)
 
 
 def test_two_wear_forms_in_one_table_are_refused(tmp_path):

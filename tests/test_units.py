@@ -104,7 +104,7 @@ def test_every_rate_key_reads_two_turns_a_second_in_any_unit(
 ) -> None:
     config = load_config(EXAMPLES[mechanism], {key: text})
     expected = 2 * TURN if kind == "angular_velocity" else 2.0  # rad/s, Hz
-    assert value_of(config, key) == pytest.approx(expected, rel=1e-14)
+    assert value_of(config, key) == pytest.approx(expected, rel=1e-14, abs=0)
 
 
 @pytest.mark.parametrize(
@@ -120,7 +120,7 @@ def test_every_rate_key_both_ways(mechanism: str, key: str, kind: str) -> None:
         expected = {"30 rpm": math.pi, "5 Hz": 10 * math.pi, "10 rad/s": 10.0}
     else:  # Hz
         expected = {"30 rpm": 0.5, "5 Hz": 5.0, "10 rad/s": 10 / TURN}
-    assert read == pytest.approx(expected, rel=1e-14)
+    assert read == pytest.approx(expected, rel=1e-14, abs=0)
 
 
 def dynamics_period(config: Path, override: str, capsys: pytest.CaptureFixture[str]) -> float:
@@ -151,7 +151,7 @@ def test_dynamics_period_of_every_rate_key(
 ) -> None:
     """One cycle (a crank revolution, an oscillation) lasts one turn at the given rate."""
     read = dynamics_period(EXAMPLES[mechanism], f"{key}={text}", capsys)
-    assert read == pytest.approx(period, rel=1e-12)
+    assert read == pytest.approx(period, rel=1e-12, abs=0)
 
 
 def test_paper_speeds_are_unchanged() -> None:
@@ -177,8 +177,10 @@ positive = st.floats(min_value=1e-6, max_value=1e6, allow_nan=False, allow_infin
 @given(positive, st.sampled_from(sorted(UNITS_PER_TURN_A_SECOND)))
 def test_rate_in_any_unit_is_its_turns_a_second(number: float, unit: str) -> None:
     turns = number / UNITS_PER_TURN_A_SECOND[unit]
-    assert to_si(f"{number!r} {unit}", "frequency") == pytest.approx(turns, rel=1e-13)
-    assert to_si(f"{number!r} {unit}", "angular_velocity") == pytest.approx(TURN * turns, 1e-13)
+    assert to_si(f"{number!r} {unit}", "frequency") == pytest.approx(turns, rel=1e-13, abs=0)
+    assert to_si(f"{number!r} {unit}", "angular_velocity") == pytest.approx(
+        TURN * turns, rel=1e-13, abs=0
+    )
 
 
 @given(
@@ -192,9 +194,9 @@ def test_rate_round_trips_between_the_kinds_and_units(number: float, unit: str, 
     omega = to_si(f"{number!r} {unit}", "angular_velocity")
     text = f"{omega / TURN * UNITS_PER_TURN_A_SECOND[other]!r} {other}"
     frequency = to_si(text, "frequency")
-    assert frequency == pytest.approx(omega / TURN, rel=1e-13)
-    assert to_si(text, "angular_velocity") == pytest.approx(omega, rel=1e-13)
-    assert frequency * UNITS_PER_TURN_A_SECOND[unit] == pytest.approx(number, rel=1e-13)
+    assert frequency == pytest.approx(omega / TURN, rel=1e-13, abs=0)
+    assert to_si(text, "angular_velocity") == pytest.approx(omega, rel=1e-13, abs=0)
+    assert frequency * UNITS_PER_TURN_A_SECOND[unit] == pytest.approx(number, rel=1e-13, abs=0)
 
 
 def test_display_units_follow_the_rule() -> None:

@@ -114,8 +114,8 @@ def test_json_shape_and_recovered_kd(capsys: pytest.CaptureFixture[str], files: 
     kd = data["parameters"][KD]
     assert set(kd) >= {"value", "uncertainty", "unit"}
     assert kd["unit"] == "1/Pa"
-    assert kd["initial"] == pytest.approx(10 * TRUE_KD)
-    assert kd["value"] == pytest.approx(TRUE_KD, rel=0.02)
+    assert kd["initial"] == pytest.approx(10 * TRUE_KD, rel=1e-6, abs=0)
+    assert kd["value"] == pytest.approx(TRUE_KD, rel=0.02, abs=0)
     assert 0 < kd["uncertainty"] < 0.02 * TRUE_KD
     low, high = kd["interval"]
     assert low < TRUE_KD < high
@@ -154,7 +154,7 @@ def test_two_cases_with_their_own_speed_and_table(
     assert "fast.csv" in out
     assert "240 rpm" in out
     value = float(out.split("wear_coefficient")[1].split("│")[1])
-    assert value == pytest.approx(TRUE_KD, rel=0.02)
+    assert value == pytest.approx(TRUE_KD, rel=0.02, abs=0)
 
 
 def test_a_model_that_cannot_explain_the_measurement_warns(
@@ -215,7 +215,7 @@ def test_paper_row(capsys: pytest.CaptureFixture[str]) -> None:
         "mechanism.spring_preload",
     }
     for key in ("peak_wear_depth_m", "wear_width_deg", "wear_mass_kg"):
-        assert data["achieved"][key] == pytest.approx(data["targets"][key], rel=1e-4)
+        assert data["achieved"][key] == pytest.approx(data["targets"][key], rel=1e-4, abs=0)
     assert data["parameters"]["joint.axial_length"]["unit"] == "m"
     assert data["parameters"]["mechanism.spring_preload"]["uncertainty"] is None  # exact fit
 

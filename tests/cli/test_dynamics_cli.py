@@ -82,7 +82,7 @@ def test_csv_has_unit_headers_and_matches_json(
     # one row per step and the closing row at the period
     assert body.shape == (361, len(header))
     load = body[:, header.index("load [N]")]
-    assert load.max() == pytest.approx(data["load_max_n"], rel=1e-15)
+    assert load.max() == pytest.approx(data["load_max_n"], rel=1e-15, abs=0)
     np.testing.assert_allclose(body[:, header.index("phase [deg]")], np.arange(361.0))
     np.testing.assert_allclose(body[:, 0], np.arange(361.0) * data["period_s"] / 360)
     assert not list(tmp_path.glob("sub/.*.tmp"))  # no temporary file left behind

@@ -33,7 +33,7 @@ from jointwear.units import to_si
     ],
 )
 def test_units_accepted(text, kind, expected):
-    assert to_si(text, kind) == pytest.approx(expected, rel=1e-12)
+    assert to_si(text, kind) == pytest.approx(expected, rel=1e-12, abs=0)
 
 
 @pytest.mark.parametrize(

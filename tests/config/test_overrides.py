@@ -43,8 +43,8 @@ def test_overrides_apply_with_units(paper_config_path):
             "contact.nlcp_variant=mesh-independent",
         ],
     )
-    assert cfg.mechanism.crank_speed == pytest.approx(8 * math.pi, rel=1e-15)
-    assert cfg.joint.clearance == pytest.approx(2e-4, rel=1e-15)
+    assert cfg.mechanism.crank_speed == pytest.approx(8 * math.pi, rel=1e-15, abs=0)
+    assert cfg.joint.clearance == pytest.approx(2e-4, rel=1e-15, abs=0)
     assert cfg.contact.nodes == 720
     assert cfg.contact.model == "nlcp"
     assert cfg.contact.nlcp_variant == "mesh-independent"
@@ -63,7 +63,9 @@ def test_replace_takes_a_mapping_strings_or_one_string(paper_config):
         ("joint.clearance=0.2 mm" for _ in range(1)),
         "joint.clearance=0.2 mm",
     ):
-        assert paper_config.replace(overrides).joint.clearance == pytest.approx(wider, rel=1e-15)
+        assert paper_config.replace(overrides).joint.clearance == pytest.approx(
+            wider, rel=1e-15, abs=0
+        )
     # one string is one override, not a sequence of one-character ones
     with pytest.raises(ConfigError, match=r"^joint\.clearance: .*'abc'"):
         paper_config.replace("joint.clearance=abc")

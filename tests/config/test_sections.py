@@ -13,13 +13,15 @@ from jointwear.errors import ConfigError
 
 
 def test_paper_config_in_si(paper_config):
-    assert paper_config.mechanism.crank_speed == pytest.approx(4 * math.pi, rel=1e-15)
+    assert paper_config.mechanism.crank_speed == pytest.approx(4 * math.pi, rel=1e-15, abs=0)
     assert paper_config.mechanism.crank_length == pytest.approx(0.07)
     assert paper_config.joint.pin_radius == pytest.approx(7.45e-3)
     assert paper_config.joint.clearance == pytest.approx(5e-5)
     assert paper_config.bushing_radius == pytest.approx(7.5e-3)
     assert paper_config.materials.pin.youngs_modulus == pytest.approx(2.09e11)
-    assert paper_config.materials.bushing.wear_coefficient == pytest.approx(5.05e-13)
+    assert paper_config.materials.bushing.wear_coefficient == pytest.approx(
+        5.05e-13, rel=1e-6, abs=0
+    )
     assert paper_config.contact.model == "asymmetric-winkler"
     assert paper_config.spring_area == pytest.approx(7.5e-3 * math.pi / 180 * 20e-3)
 
@@ -97,7 +99,7 @@ def test_a_lubricant_temperature_in_celsius_reads_in_kelvin():
         ]
     )
     assert config.lubrication.temperature == pytest.approx(333.15)
-    assert config.lubrication.roughness == pytest.approx(0.3e-6)
+    assert config.lubrication.roughness == pytest.approx(0.3e-6, rel=1e-6, abs=0)
     assert config.replace({}).lubrication == config.lubrication  # reads back from its TOML
 
 

@@ -76,7 +76,7 @@ def test_one_slice_is_the_planar_solve(params, pin, circle, worn, model, azimuth
         axial = solve_axial(slices.contours(contour), slices, pin, 230.0, azimuth, law)
         peak = planar.pressure.max()
         assert np.abs(axial.pressure[0] - planar.pressure[0]).max() <= 1e-12 * peak
-        assert axial.offset[0] == pytest.approx(planar_offset(planar, azimuth)[0], rel=1e-12)
+        assert axial.offset[0] == pytest.approx(planar_offset(planar, azimuth)[0], rel=1e-12, abs=0)
         assert axial.tilt == 0.0
         assert abs(axial.force_residual) <= balance_floor(axial)
 
@@ -102,7 +102,9 @@ def test_aligned_slices_share_the_load_with_the_planar_pressure(
 def test_nlcp_paper_form_shares_its_spring_area(params):
     law = contact_law("nlcp", params)
     assert law.force_area == params.spring_area
-    assert slice_law(law, 0.25).force_area == pytest.approx(0.25 * params.spring_area, 1e-15)
+    assert slice_law(law, 0.25).force_area == pytest.approx(
+        0.25 * params.spring_area, rel=1e-15, abs=0
+    )
     assert slice_law(law, 0.25).coefficient == law.coefficient
     mesh_law = contact_law("asymmetric-winkler", params)
     assert slice_law(mesh_law, 0.25) is mesh_law  # the slice contour carries the width
@@ -123,7 +125,7 @@ def test_every_slice_is_the_planar_solve_of_its_force(params, pin):
     assert abs(axial.moment_reaction) <= max(1e-12 * params.axial_length, 8 * EPS * 250.0)
     for index, contour in enumerate(contours):
         alone = solve_contact(contour, pin, [axial.force[index]], [0.1], slice_law(law, 1 / count))
-        assert planar_offset(alone, 0.1)[0] == pytest.approx(axial.offset[index], rel=1e-12)
+        assert planar_offset(alone, 0.1)[0] == pytest.approx(axial.offset[index], rel=1e-12, abs=0)
         peak = alone.pressure.max()
         assert np.abs(alone.pressure[0] - axial.pressure[index]).max() <= 1e-9 * peak
 
@@ -164,7 +166,7 @@ def test_rigid_pin_imposed_tilt_on_a_winkler_foundation(params, pin, tight, wink
             slices.contours(contour), slices, pin, 200.0, 1.0, law,
             misalignment=Misalignment(2e-4, plane=1.0),
         )  # fmt: skip
-        assert axial.tilt == pytest.approx(2e-4, rel=1e-15)
+        assert axial.tilt == pytest.approx(2e-4, rel=1e-15, abs=0)
         linear = winkler_k * params.pin_radius * (math.pi / 2) * axial.offset
         np.testing.assert_allclose(axial.line_load, linear, rtol=CURVATURE)
         np.testing.assert_allclose(axial.offset, axial.centre_offset + 2e-4 * slices.centres)
@@ -226,7 +228,7 @@ def test_separation_shortens_the_contact(params, pin, circle, clearance):
     assert counts[0] == counts[1] == 40
     assert counts == sorted(counts, reverse=True)
     assert counts[-1] < counts[-2] < 40
-    assert axial.contact_length == pytest.approx(counts[-1] * slices.width, rel=1e-12)
+    assert axial.contact_length == pytest.approx(counts[-1] * slices.width, rel=1e-12, abs=0)
 
 
 def test_imposed_tilt_separates_and_the_supports_take_the_moment(params, pin, circle):
@@ -286,7 +288,7 @@ def test_misalignment_across_the_load(params, pin, circle):
     tilted = Misalignment(2e-3, plane=math.pi / 2)
     axial = solve_axial(contours, slices, pin, 200.0, 0.0, law, misalignment=tilted)
     assert abs(axial.tilt) < 1e-15
-    assert axial.lateral_tilt == pytest.approx(2e-3, rel=1e-12)
+    assert axial.lateral_tilt == pytest.approx(2e-3, rel=1e-12, abs=0)
     np.testing.assert_allclose(axial.force, axial.force[::-1], rtol=1e-9)
     np.testing.assert_allclose(axial.lateral_force, -axial.lateral_force[::-1], rtol=1e-9)
     # the pin's end at +z leans counter-clockwise and presses the bushing that way
@@ -309,13 +311,13 @@ def test_play_lets_the_pin_align_until_it_bears(params, pin, circle):
     wide = Misalignment(5e-4, plane=0.0, play=1e-3)  # the free tilt is within the play
     roomy = solve_axial(contours, slices, pin, 200.0, 0.0, law, load_offset=2e-3,
                         misalignment=wide)  # fmt: skip
-    assert roomy.tilt == pytest.approx(free.tilt, rel=1e-12)
+    assert roomy.tilt == pytest.approx(free.tilt, rel=1e-12, abs=0)
     assert abs(roomy.moment_reaction) <= 1e-12 * params.axial_length
     narrow = Misalignment(5e-4, plane=0.0, play=1e-4)
     held = solve_axial(contours, slices, pin, 200.0, 0.0, law, load_offset=2e-3,
                        misalignment=narrow)  # fmt: skip
     assert free.tilt < 4e-4
-    assert held.tilt == pytest.approx(4e-4, rel=1e-12)  # imposed minus the play
+    assert held.tilt == pytest.approx(4e-4, rel=1e-12, abs=0)  # imposed minus the play
     assert held.moment_reaction > 0  # the supports hold the pin back from aligning
 
 
@@ -456,7 +458,7 @@ def test_imposed_misalignment_with_a_bent_pin(params, pin, circle):
     matrix = compliance(beam, Clevis((-0.015, 0.015)), slices.centres)
     axial = solve_axial(slices.contours(circle), slices, pin, 300.0, 0.0, law,
                         misalignment=Misalignment(3e-4), compliance=matrix)  # fmt: skip
-    assert axial.tilt == pytest.approx(3e-4, rel=1e-15)
+    assert axial.tilt == pytest.approx(3e-4, rel=1e-15, abs=0)
     assert abs(axial.force_residual) <= balance_floor(axial)
     np.testing.assert_allclose(axial.deflection, -matrix @ axial.force, rtol=1e-9, atol=1e-18)
 

@@ -52,7 +52,7 @@ def hetenyi_free_centre_load(load, foundation, lam, length):
 
 def test_infinite_beam_under_a_point_load():
     lam = characteristic(FOUNDATION, STEEL.bending_stiffness)
-    assert lam == pytest.approx(30.0, rel=1e-14)
+    assert lam == pytest.approx(30.0, rel=1e-14, abs=0)
     length = 20 / lam  # the free ends are 10 / lambda away: e^-10 of the load's effect
     z, h = slices(length, 801)
     w = beam_on_foundation(STEEL, z, np.full(z.size, FOUNDATION), h, forces=[(0.0, 1000.0)])
@@ -99,10 +99,10 @@ def test_timoshenko_elements_are_exact_for_point_loads():
     span = 0.04
     # simply supported, central load: P l^3 / 48 EI + P l / 4 kGA
     middle = compliance(beam, Clevis((-span / 2, span / 2)), [0.0, 0.01])
-    assert middle[0, 0] == pytest.approx(span**3 / 48 / 500.0 + span / 4 / 2e6, rel=1e-12)
+    assert middle[0, 0] == pytest.approx(span**3 / 48 / 500.0 + span / 4 / 2e6, rel=1e-12, abs=0)
     # cantilever, tip load: P l^3 / 3 EI + P l / kGA
     tip = compliance(beam, Cantilever(-span / 2), [span / 2])
-    assert tip[0, 0] == pytest.approx(span**3 / 3 / 500.0 + span / 2e6, rel=1e-12)
+    assert tip[0, 0] == pytest.approx(span**3 / 3 / 500.0 + span / 2e6, rel=1e-12, abs=0)
     # Maxwell-Betti: the flexibility is symmetric, and positive definite
     matrix = compliance(beam, Clevis((-0.015, 0.018)), slices(0.02, 9)[0])
     assert np.all(np.linalg.eigvalsh(matrix) > 0)
@@ -139,9 +139,9 @@ def test_a_short_steel_pin_shears_noticeably():
     share = compliance(timoshenko, Clevis((-span / 2, span / 2)), [0.0])[0, 0]
     euler = compliance(STEEL, Clevis((-span / 2, span / 2)), [0.0])[0, 0]
     ratio = (span / 4 / timoshenko.shear_stiffness) / (span**3 / 48 / STEEL.bending_stiffness)
-    assert share / euler - 1 == pytest.approx(ratio, rel=1e-12)
+    assert share / euler - 1 == pytest.approx(ratio, rel=1e-12, abs=0)
     kappa = shear_coefficient(0.28)
-    assert ratio == pytest.approx(6 * 1.28 / kappa * (radius / span) ** 2, rel=1e-12)
+    assert ratio == pytest.approx(6 * 1.28 / kappa * (radius / span) ** 2, rel=1e-12, abs=0)
     assert ratio == pytest.approx(0.5425, rel=1e-3)
 
 
@@ -176,7 +176,7 @@ def test_a_clevis_pin_loads_the_bushing_ends():
     z, h = slices(0.02, 20)
     foundation = np.full(20, 1e12)  # a stiff bushing: lambda L ~ 4.5
     u = linearised_joint(STEEL, Clevis((-0.016, 0.016)), z, h, foundation, 5000.0)
-    assert u[0] == pytest.approx(u[-1], rel=1e-9)
+    assert u[0] == pytest.approx(u[-1], rel=1e-9, abs=0)
     assert u[0] > 2 * u[10]
     for support in (Clevis((-0.016, 0.016)), Cantilever(-0.02)):
         for offset in (0.0, 3e-3):
@@ -206,17 +206,17 @@ def test_supports_statics():
     (a, ra), (b, rb) = clevis.reactions(1000.0, 0.002)[0]
     assert ra + rb == pytest.approx(1000.0, rel=1e-15)
     assert ra * a + rb * b == pytest.approx(1000.0 * 0.002, rel=1e-12)
-    assert clevis.tilt_play == pytest.approx(2 * 20e-6 / 0.04, rel=1e-15)
+    assert clevis.tilt_play == pytest.approx(2 * 20e-6 / 0.04, rel=1e-15, abs=0)
     forces, moments = Cantilever(-0.02).reactions(1000.0, 0.002)
     assert forces == [(-0.02, 1000.0)]
-    assert moments[0][1] == pytest.approx(1000.0 * 0.022, rel=1e-15)
+    assert moments[0][1] == pytest.approx(1000.0 * 0.022, rel=1e-15, abs=0)
 
 
 def test_solid_section():
     beam = PinBeam.solid(0.01, 200e9, 0.3)
     assert beam.bending_stiffness == pytest.approx(200e9 * math.pi * 1e-8 / 4, rel=1e-15)
     kappa = shear_coefficient(0.3)
-    assert kappa == pytest.approx(7.8 / 8.8, rel=1e-15)  # Cowper: 0.886 for nu = 0.3
+    assert kappa == pytest.approx(7.8 / 8.8, rel=1e-15, abs=0)  # Cowper: 0.886 for nu = 0.3
     shear = kappa * 200e9 / 2.6 * math.pi * 1e-4
     assert beam.shear_stiffness == pytest.approx(shear, rel=1e-15)
     assert beam.model == "timoshenko"

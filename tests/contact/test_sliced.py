@@ -79,7 +79,7 @@ def test_aligned_slices_wear_as_the_planar_joint(update_every, compiled):
     assert scale > 0
     assert np.abs(maps - reference[:, None, :]).max() <= 1e-9 * scale
     for key in ("peak_wear_depth_m", "wear_volume_m3", "wear_width_deg"):
-        assert sliced.summary()[key] == pytest.approx(planar.summary()[key], rel=1e-9)
+        assert sliced.summary()[key] == pytest.approx(planar.summary()[key], rel=1e-9, abs=0)
     assert sliced.summary()["edge_to_mid_wear_ratio"] == pytest.approx(1.0, rel=1e-9)
     # slices worn alike: the deepest is said to be the one nearest the mid-plane
     assert abs(sliced.summary()["peak_wear_z_m"]) == pytest.approx(0.25 * 0.02 / 2)
@@ -239,7 +239,7 @@ def test_aligned_slices_with_a_wearing_pin_wear_as_the_planar_joint(update_every
         assert scale > 0
         assert np.abs(maps - np.expand_dims(reference, -2)).max() <= 1e-9 * scale, name
     for key in ("pin_peak_wear_depth_m", "pin_wear_volume_m3", "peak_wear_depth_m"):
-        assert sliced.summary()[key] == pytest.approx(planar.summary()[key], rel=1e-9)
+        assert sliced.summary()[key] == pytest.approx(planar.summary()[key], rel=1e-9, abs=0)
 
 
 def first_revolution(count: int, **extra):

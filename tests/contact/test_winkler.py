@@ -49,11 +49,11 @@ def test_numerical_balance_converges_to_the_closed_form(params, pin, clearance, 
         sol = solve(contour, pin, [load], [0.0], model, params)
         s = sol.eccentricity[0, 0]
         assert sol.eccentricity[0, 1] == 0.0
-        assert sol.penetration[0] == pytest.approx(s - clearance, rel=1e-12)
+        assert sol.penetration[0] == pytest.approx(s - clearance, rel=1e-12, abs=0)
         force, alpha = closed_form(params, s)
         errors.append(abs(force[()] / load - 1))
         angle_errors.append(abs(sol.half_angle_left[0] - alpha[()]))
-        assert sol.half_angle_left[0] == pytest.approx(sol.half_angle_right[0], rel=1e-12)
+        assert sol.half_angle_left[0] == pytest.approx(sol.half_angle_right[0], rel=1e-12, abs=0)
         old, _ = closed_form(params, s, curvature=False)
         old_offsets.append(old[()] / load - 1)
     # the node sum is a quadrature of a function with a kink at the contact edge: O(h^2)
@@ -146,7 +146,7 @@ def test_constrained_modulus_option(params, pin):
     e, nu = params.bushing_youngs_modulus, params.bushing_poisson_ratio
     expected = e * (1 - nu) / ((1 + nu) * (1 - 2 * nu))
     assert winkler.foundation_modulus(e, nu, "constrained") == pytest.approx(expected, rel=1e-15)
-    assert expected / e == pytest.approx(0.62 / (1.38 * 0.24), rel=1e-14)  # 1.872 for PTFE
+    assert expected / e == pytest.approx(0.62 / (1.38 * 0.24), rel=1e-14, abs=0)  # 1.872 for PTFE
     assert winkler.foundation_modulus(e, nu, "youngs") == e
     assert winkler.foundation_modulus(e, 0.0, "constrained") == e  # no Poisson effect
     with pytest.raises(ConfigError, match="foundation_modulus"):
@@ -192,9 +192,9 @@ def test_spread_factor_closed_form_and_its_small_arc_series() -> None:
     alpha = np.array([1e-3, 0.0299, 0.0301, 0.3, 0.7, np.pi / 2])
     kappa = winkler.spread_factor(alpha)
     # pi/2: p ~ cos(phi) over a half circle, sum|p| / sum p cos = 2 / (pi/2) = 4 / pi
-    assert kappa[-1] == pytest.approx(4 / np.pi, rel=1e-14)
+    assert kappa[-1] == pytest.approx(4 / np.pi, rel=1e-14, abs=0)
     # small arcs: 1 + alpha^2/10 + 19 alpha^4/4200, continuous across the switch
-    assert kappa[0] - 1 == pytest.approx(1e-7 + 19e-12 / 4200, rel=1e-9)
+    assert kappa[0] - 1 == pytest.approx(1e-7 + 19e-12 / 4200, rel=1e-9, abs=0)
     assert kappa[2] - kappa[1] == pytest.approx(0.2 * 0.03 * 2e-4, rel=1e-3)
     assert np.all(np.diff(kappa) > 0)
 

@@ -34,7 +34,7 @@ def test_limit_stop_lies_between_the_fixed_length_runs(small: Config, update: in
     life = stopped["life_revolutions"]
     assert stopped["stopped_by"] == "peak_wear_depth"
     assert stopped["revolutions"] == life > 10
-    assert stopped["peak_wear_depth_m"] == pytest.approx(LIMIT, rel=1e-12)
+    assert stopped["peak_wear_depth_m"] == pytest.approx(LIMIT, rel=1e-12, abs=0)
     without_limit = config.replace({"life.peak_wear_depth": None})
 
     def peak(revolutions: int) -> float:
@@ -106,7 +106,7 @@ def assert_consistent_stop(result, config: Config) -> None:
     data = result.summary()
     life = data["life_revolutions"]
     assert data["revolutions"] == life
-    assert data["life_hours"] == pytest.approx(life * PERIOD / 3600, rel=1e-12)
+    assert data["life_hours"] == pytest.approx(life * PERIOD / 3600, rel=1e-12, abs=0)
     assert result.dataset["update_revolution"].values[-1] == life
     assert result.dataset["revolution"].values[-1] == life
     assert 0 < life < config.simulation.revolutions
@@ -143,7 +143,7 @@ def test_wear_through_within_the_first_revolution_ends_at_the_wall(
     )
     rate = one["peak_wear_depth_m"] * 1e-3 / reference
     assert data["life_revolutions"] < 1
-    assert data["life_revolutions"] == pytest.approx(thickness / rate, rel=1e-9)
+    assert data["life_revolutions"] == pytest.approx(thickness / rate, rel=1e-9, abs=0)
 
 
 def test_a_wearing_pin_stops_with_the_bushing_on_its_own_path(wearing: Config) -> None:
@@ -196,7 +196,7 @@ def test_each_limit_ends_at_its_value(wearing: Config, key: str, scheme: str) ->
     result = simulate(config)
     data = result.summary()
     assert data["stopped_by"] == key
-    assert data[metric] == pytest.approx(limit, rel=1e-9)
+    assert data[metric] == pytest.approx(limit, rel=1e-9, abs=0)
     assert_consistent_stop(result, config)
     assert not float(data["life_revolutions"]).is_integer()
     # the update before the stop had not reached it
@@ -276,7 +276,7 @@ def test_a_peak_limit_on_a_quadratic_path_is_found_where_the_first_node_reaches_
     )
     assert key == "peak_wear_depth"
     assert at == pytest.approx(roots[(roots >= 0) & (roots <= jump)].min(), rel=1e-12)
-    assert depth_at(at).max() == pytest.approx(limit, rel=1e-12)
+    assert depth_at(at).max() == pytest.approx(limit, rel=1e-12, abs=0)
 
 
 def test_a_mass_limit_on_a_linear_path_is_the_root_of_the_area_quadratic() -> None:

@@ -78,7 +78,7 @@ def test_units_argument_applies_to_header_without_units(tmp_path: Path) -> None:
     x, _ = read_points(write(tmp_path / "p.csv", "x,y", x_mm, y_mm), units="mm")
     np.testing.assert_allclose(x, x_mm * 1e-3)
     file = write(tmp_path / "q.csv", "x [mm],y [mm]", x_mm, y_mm)
-    assert np.allclose(read_points(file, units="mm")[0], x_mm * 1e-3)  # agreeing: fine
+    assert np.allclose(read_points(file, units="mm")[0], x_mm * 1e-3, atol=0)  # agreeing: fine
     with pytest.raises(DataError, match=r"q\.csv: column 'x' is in mm but units 'um'"):
         read_points(file, units="um")
 

@@ -83,11 +83,11 @@ def test_recovers_kd_without_update_linear_problem(paper_config: Config) -> None
     start = base.replace({KD: 10 * TRUE_KD})
     fit = calibrate_profiles(start, [case], [kd_parameter(start)])
     value, sigma = fit.values[KD], fit.uncertainty[KD]
-    assert value == pytest.approx(TRUE_KD, rel=0.02)
+    assert value == pytest.approx(TRUE_KD, rel=0.02, abs=0)
     assert 0 < sigma < 0.02 * value
     low, high = fit.intervals[KD]
     assert low < TRUE_KD < high
-    assert fit.initial[KD] == pytest.approx(10 * TRUE_KD)
+    assert fit.initial[KD] == pytest.approx(10 * TRUE_KD, rel=1e-6, abs=0)
     (comparison,) = fit.comparisons
     assert math.degrees(comparison.alignment_offset) == pytest.approx(123.0, abs=0.5)
     summary = fit.summary()
@@ -95,7 +95,7 @@ def test_recovers_kd_without_update_linear_problem(paper_config: Config) -> None
     assert summary["parameters"][KD]["unit"] == "1/Pa"
     assert summary["parameters"][KD]["value"] == value
     assert not summary["parameters"][KD]["at_bound"]
-    assert summary["parameters"][KD]["interval"] == pytest.approx([low, high])
+    assert summary["parameters"][KD]["interval"] == pytest.approx([low, high], rel=1e-6, abs=0)
     assert summary["warnings"] == []
     # the residual at the points is the noise: the model explains the measurement
     assert summary["cases"][0]["rms_point_residual_m"] == pytest.approx(NOISE, rel=0.1)
@@ -108,7 +108,7 @@ def test_recovers_kd_with_contour_update(paper_config: Config) -> None:
     case = measure(base, 2, 57.0, "update.csv")
     start = base.replace({KD: TRUE_KD / 10})
     fit = calibrate_profiles(start, [case], [kd_parameter(start)])
-    assert fit.values[KD] == pytest.approx(TRUE_KD, rel=0.02)
+    assert fit.values[KD] == pytest.approx(TRUE_KD, rel=0.02, abs=0)
     assert fit.uncertainty[KD] < 0.01 * TRUE_KD
     assert abs(fit.comparisons[0].peak_error_rel) < 0.02
 
@@ -125,7 +125,7 @@ def test_two_speeds_calibrate_jointly(paper_config: Config) -> None:
     )
     start = base.replace({KD: 10 * TRUE_KD})
     fit = calibrate_profiles(start, [slow, fast], [kd_parameter(start)])
-    assert fit.values[KD] == pytest.approx(TRUE_KD, rel=0.02)
+    assert fit.values[KD] == pytest.approx(TRUE_KD, rel=0.02, abs=0)
     assert len(fit.comparisons) == 2
     offsets = [math.degrees(c.alignment_offset) % 360 for c in fit.comparisons]
     assert offsets == pytest.approx([10.0, 200.0], abs=0.5)
@@ -160,7 +160,7 @@ def test_wrong_model_leaves_a_residual_and_warns(paper_config: Config) -> None:
         warnings.simplefilter("error", FitMisfitWarning)
         lenient = calibrate_profiles(base, [wrong], [kd_parameter(base)], noise=20e-6)
     assert lenient.fits[0].noise_source == "given"
-    assert lenient.values[KD] == pytest.approx(bad.values[KD], rel=1e-3)
+    assert lenient.values[KD] == pytest.approx(bad.values[KD], rel=1e-3, abs=0)
 
 
 def test_parameter_names_units_and_bounds(paper_config: Config) -> None:
@@ -322,13 +322,13 @@ def test_recovers_kd_from_any_start_inside_the_bounds(liner: Config, liner_depth
             fit = calibrate_profiles(liner, [case], [kd], initial={KD: start})
         value = fit.values[KD]
         low, high = fit.intervals[KD]
-        assert value == pytest.approx(LINER_KD, rel=0.02)
+        assert value == pytest.approx(LINER_KD, rel=0.02, abs=0)
         assert low < LINER_KD < high
         assert high / low < 1.1  # an interval that says something
         assert fit.initial[KD] == start
         assert len(fit.scan) == 26  # 4 per decade over six decades, and the start
         found.append(value)
-    assert found == pytest.approx([found[0]] * 3, rel=1e-4)
+    assert found == pytest.approx([found[0]] * 3, rel=1e-4, abs=0)
     summary = fit.summary()
     assert summary["method"]["global"] == "grid"
     assert summary["parameters"][KD]["scale"] == "log"

@@ -72,7 +72,7 @@ def wear(config: Path, overrides: list[str] = ()) -> tuple[float, float]:
 def assert_same_cycle(actual: LoadCycle, expected: LoadCycle, rtol: float = 1e-12) -> None:
     """Equal fields, each to ``rtol`` of its largest magnitude (increments pass through 0)."""
     assert actual.steps == expected.steps
-    assert actual.period == pytest.approx(expected.period, rel=rtol)
+    assert actual.period == pytest.approx(expected.period, rel=rtol, abs=0)
     for name in FIELDS:
         want = getattr(expected, name)
         scale = max(float(np.max(np.abs(want))), np.finfo(float).tiny)
@@ -160,7 +160,7 @@ def test_without_a_closing_row_the_last_step_holds_the_load_and_does_not_slide(
     # without a period the median step closes the cycle: here the same 0.8 s
     for cycle in (read_load_history(path, period=0.8), read_load_history(path)):
         assert cycle.steps == closed.steps
-        assert cycle.period == pytest.approx(closed.period, rel=1e-15)
+        assert cycle.period == pytest.approx(closed.period, rel=1e-15, abs=0)
         for name in ("time", "load", "azimuth"):
             np.testing.assert_allclose(getattr(cycle, name), getattr(closed, name), rtol=1e-15)
         # the rows' rotations as given; the closing step, of which the file says nothing,
@@ -182,13 +182,15 @@ def test_open_cycle_of_a_turning_pin_slides_its_rows_only(tmp_path: Path) -> Non
     columns["rotation [rad]"] = 3 * 2 * np.pi * time / 0.8 + 0.1 * np.sin(7 * time)  # 3 turns
     cycle = read_load_history(write_csv(tmp_path / "turning.csv", columns))
     rows = columns["rotation [rad]"]
-    assert cycle.rotation[-1] == pytest.approx(rows[-1] - rows[0], rel=1e-14)
-    assert cycle.total_relative_rotation == pytest.approx(np.sum(np.abs(np.diff(rows))), 1e-14)
+    assert cycle.rotation[-1] == pytest.approx(rows[-1] - rows[0], rel=1e-14, abs=0)
+    assert cycle.total_relative_rotation == pytest.approx(
+        np.sum(np.abs(np.diff(rows))), rel=1e-14, abs=0
+    )
     closed = {name: np.append(values, values[0]) for name, values in columns.items()}
     closed["time [s]"][-1] = 0.8
     closed["rotation [rad]"][-1] = rows[0] + 3 * 2 * np.pi
     whole = read_load_history(write_csv(tmp_path / "closed.csv", closed))
-    assert whole.rotation[-1] == pytest.approx(3 * 2 * np.pi, rel=1e-14)
+    assert whole.rotation[-1] == pytest.approx(3 * 2 * np.pi, rel=1e-14, abs=0)
 
 
 def test_non_uniform_steps_are_kept_as_they_are(tmp_path: Path) -> None:
@@ -199,7 +201,7 @@ def test_non_uniform_steps_are_kept_as_they_are(tmp_path: Path) -> None:
     cycle = read_load_history(write_csv(tmp_path / "uneven.csv", columns))
     np.testing.assert_allclose(cycle.time, time[:-1] - time[0], rtol=1e-14, atol=1e-13)
     np.testing.assert_allclose(cycle.step_duration, np.diff(time), rtol=1e-12)
-    assert cycle.period == pytest.approx(time[-1] - time[0], rel=1e-15)
+    assert cycle.period == pytest.approx(time[-1] - time[0], rel=1e-15, abs=0)
     np.testing.assert_allclose(
         cycle.relative_rotation, np.diff(columns["rotation [rad]"]), rtol=0, atol=1e-15
     )
@@ -291,10 +293,10 @@ def test_a_history_slides_exactly_its_rows(
     for config, rotation in zip(configs, (short, long), strict=True):
         expected = np.radians(np.sum(np.abs(np.diff(rotation))))
         assert load_cycle(load_config(config)).total_relative_rotation == pytest.approx(
-            expected, rel=1e-14
+            expected, rel=1e-14, abs=0
         )
         summary = dynamics_json(config, capsys)
-        assert summary["total_relative_rotation_rad"] == pytest.approx(expected, rel=1e-14)
+        assert summary["total_relative_rotation_rad"] == pytest.approx(expected, rel=1e-14, abs=0)
     depth_a, depth_b = (Simulation(load_config(c)).run().wear_depth for c in configs)
     assert depth_a.max() > 0
     np.testing.assert_allclose(depth_b, ratio * depth_a, rtol=1e-9, atol=0)
@@ -312,7 +314,7 @@ def test_a_cycle_of_no_whole_turns_reads_back_from_its_csv(
     again = write_config(tmp_path, HISTORY.replace("loads.csv", "again.csv"))
     dynamics_csv(source, tmp_path / "again.csv", capsys)
     expected = load_cycle(load_config(source))
-    assert expected.rotation[-1] == pytest.approx(np.pi * 23 / 24, rel=1e-14)
+    assert expected.rotation[-1] == pytest.approx(np.pi * 23 / 24, rel=1e-14, abs=0)
     assert_same_cycle(load_cycle(load_config(again)), expected)
     np.testing.assert_allclose(wear(again, LONG_RUN), wear(source, LONG_RUN), rtol=1e-12)
 
@@ -486,7 +488,7 @@ def test_example_load_history_runs(capsys: pytest.CaptureFixture[str]) -> None:
     assert json.loads(out)["peak_wear_depth_m"] > 0
     # 181 rows in ms and kN: the last closes the cycle
     cycle = load_cycle(load_config(EXAMPLE))
-    assert (cycle.steps, cycle.period) == (180, pytest.approx(0.72, rel=1e-15))
+    assert (cycle.steps, cycle.period) == (180, pytest.approx(0.72, rel=1e-15, abs=0))
     assert cycle.rotation[-1] == pytest.approx(0.0, abs=1e-12)  # the pin swings back
     assert 100 < cycle.load.min() < cycle.load.max() < 1000
 

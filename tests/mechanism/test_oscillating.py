@@ -34,7 +34,7 @@ def test_one_cycle_slides_four_amplitudes() -> None:
     assert cycle.total_relative_rotation == pytest.approx(4 * math.radians(25), rel=1e-12)
     # the pin swings back to where it started
     assert cycle.rotation[-1] == pytest.approx(0.0, abs=1e-15)
-    assert cycle.rotation.max() == pytest.approx(math.radians(25), rel=1e-12)
+    assert cycle.rotation.max() == pytest.approx(math.radians(25), rel=1e-12, abs=0)
     np.testing.assert_allclose(cycle.load, 1500.0)
 
 
@@ -66,10 +66,16 @@ def test_fixed_load_wears_archards_global_form() -> None:
     # the spread factor of the discrete contact is the closed form's (small clearance)
     alpha = 0.5 * (solution.half_angle_left[0] + solution.half_angle_right[0])
     assert kappa == pytest.approx(float(winkler.spread_factor(alpha)), rel=2e-3)
-    volume = simulation.run().summary()["wear_volume_m3"]
+    result = simulation.run()
+    volume = result.summary()["wear_volume_m3"]
     k_d = config.materials.bushing.wear_coefficient
     sliding = config.joint.bushing_radius * 4 * math.radians(25)
-    assert volume == pytest.approx(k_d * kappa * 1500.0 * sliding, rel=1e-9)
+    # Archard's form is the first-order term of the worn area 1/2 sum h (2 R_b + h) dtheta;
+    # the reported volume keeps the h^2/2 term too (h / 2 R_b ~ 3e-6 here)
+    depth = np.asarray(result.wear_depth)
+    second_order = config.joint.axial_length * 0.5 * (depth**2).sum() * 2 * np.pi / depth.size
+    expected = k_d * kappa * 1500.0 * sliding + second_order
+    assert volume == pytest.approx(expected, rel=1e-9, abs=0)
 
 
 def test_symmetric_swing_wears_symmetrically_about_the_load() -> None:

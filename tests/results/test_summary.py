@@ -32,7 +32,7 @@ def test_one_metric_schema_drives_record_dataset_summary_and_csv(
         assert result.dataset[metric.name].attrs["units"] == metric.units
         if metric.key is not None:
             last = float(result.dataset[metric.name].values[-1])
-            assert data[metric.key] == pytest.approx(last * metric.scale, rel=1e-15)
+            assert data[metric.key] == pytest.approx(last * metric.scale, rel=1e-15, abs=0)
     write_metrics_csv(result.dataset, tmp_path / "m.csv")
     header = (tmp_path / "m.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     assert header == ["revolution"] + [m.header for m in WEAR_METRICS]

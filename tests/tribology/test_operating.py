@@ -110,10 +110,10 @@ def test_running_in_cycle_after_cycle_integrates_the_coefficient_exactly() -> No
 
 def test_the_mean_coefficient_of_a_point_is_the_coefficient() -> None:
     assert running_in_mean_coefficient(0.02, 0.0, 8e-12, 5e-13, 0.05) == pytest.approx(
-        5e-13 + 7.5e-12 * math.exp(-0.4), rel=1e-15
+        5e-13 + 7.5e-12 * math.exp(-0.4), rel=1e-15, abs=0
     )
     assert running_in_mean_coefficient(0.02, 1e-9, 8e-12, 5e-13, 0.05) == pytest.approx(
-        5e-13 + 7.5e-12 * math.exp(-0.4), rel=1e-7
+        5e-13 + 7.5e-12 * math.exp(-0.4), rel=1e-7, abs=0
     )
 
 

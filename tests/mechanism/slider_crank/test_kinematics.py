@@ -34,9 +34,11 @@ L1, L2 = 0.07, 0.2
 def test_dead_centre_slider_acceleration(omega: float) -> None:
     ratio = L1 / L2
     acc = slider_acceleration([0.0, math.pi], L1, L2, omega)
-    assert acc[0] == pytest.approx(-L1 * omega**2 * (1 + ratio), rel=1e-14)
-    assert acc[1] == pytest.approx(L1 * omega**2 * (1 - ratio), rel=1e-14)
-    assert slider_position([0.0, math.pi], L1, L2) == pytest.approx([L1 + L2, L2 - L1], rel=1e-15)
+    assert acc[0] == pytest.approx(-L1 * omega**2 * (1 + ratio), rel=1e-14, abs=0)
+    assert acc[1] == pytest.approx(L1 * omega**2 * (1 - ratio), rel=1e-14, abs=0)
+    assert slider_position([0.0, math.pi], L1, L2) == pytest.approx(
+        [L1 + L2, L2 - L1], rel=1e-15, abs=0
+    )
     assert slider_velocity([0.0, math.pi], L1, L2, omega) == pytest.approx([0.0, 0.0], abs=1e-15)
 
 

@@ -51,14 +51,14 @@ def test_a_sweep_over_the_shares_gives_the_share_weighted_wear(base, tmp_path) -
     ]
     peaks = [record["metrics"]["peak_wear_depth_m"] for record in result.records]
     for (a, b), peak in zip(shares, peaks, strict=True):
-        assert peak == pytest.approx(np.max(a * singles[0] + b * singles[1]), rel=1e-9)
+        assert peak == pytest.approx(np.max(a * singles[0] + b * singles[1]), rel=1e-9, abs=0)
     assert peaks[1] > 1.2 * peaks[0]  # the heavy mode's share counts
 
 
 def test_a_mode_frequency_is_swept_with_units(base) -> None:
     plan = expand_sweep({"grid": {"mechanism.modes.1.frequency": ["15 rpm", "0.5 Hz"]}}, base)
     speeds = [plan.config(case).mechanism.modes[1].frequency for case in plan.cases]
-    assert speeds == pytest.approx([0.25, 0.5], rel=1e-12)
+    assert speeds == pytest.approx([0.25, 0.5], rel=1e-12, abs=0)
     assert all(plan.config(c).mechanism.modes[0] == base.mechanism.modes[0] for c in plan.cases)
 
 
