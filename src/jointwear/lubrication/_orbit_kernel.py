@@ -27,12 +27,14 @@ import numpy as np
 from numba import njit
 from scipy.integrate import RK45
 
-from jointwear.lubrication.film import short_shape_scalar
+from jointwear.lubrication.film import LONG_CLOSED_FORM_GAP, short_shape_scalar
+from jointwear.mechanism.impact.compiled_film import long_bearing
 
 #: ``status`` of a cycle's integration
 DONE, TOO_MANY_STEPS, STEP_TOO_SMALL = 0, 1, 2
-#: model codes
-SHORT, TABULATED = 0, 1
+#: model codes (WALL: the finite bearing beyond its table's end, on the wall's table;
+#: LONG: the long bearing, tabulated up to the table's end and in closed form beyond)
+SHORT, TABULATED, WALL, LONG = 0, 1, 2, 3
 _TWO_PI = 2.0 * math.pi
 #: the largest eccentricity ratio the orbit reaches (h_min = 1e-12 c), as the orbit module
 _LARGEST = 1.0 - 1e-12
@@ -159,36 +161,98 @@ short_shape = njit(cache=True)(short_shape_scalar)
 
 
 @njit(cache=True)
-def shape(eps, beta, model, ratio, log_gap_max, tx, ty, radial, tangential):
+def shape(eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt):
     """``G(eps, beta)`` of the film model (``orbit.OrbitSolver.scalar_shape``) [-]."""
-    return shape_along(film_at(eps, model, ratio, log_gap_max, tx, ty, radial, tangential), beta)
+    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
+    return shape_along(film, beta)
 
 
 @njit(cache=True)
-def film_at(eps, model, ratio, log_gap_max, tx, ty, radial, tangential):
+def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt):
     """What :func:`shape_along` needs at ``eps``, evaluated once for all directions.
 
     The tabulated models' log-gap coordinate, their ``(1 - eps^2)^2.5`` and the knot
     span and B-spline basis along it: the direction of motion is sought at one ``eps``
     over some ten directions, and only the basis along ``beta`` changes between them
     (the same operations as :func:`bicubic` for each component, so the same values
-    bit for bit).
+    bit for bit). Beyond the table's end (``eps > 1 - 10^-log_gap_max``) the long
+    bearing in closed form, the finite one from the wall's table (``wtx, wty, wrr,
+    wtt``: ``orbit.wall_shape_table``) with ``1 - eps^2``.
     """
     if model == SHORT:
-        return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, radial, tangential
+        return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, rr, tt
+    if eps > 1.0 - 10.0**-log_gap_max:
+        if model == LONG:
+            return LONG, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, rr, tt
+        x = min(max(-math.log10(max(1.0 - eps, 1e-300)), wtx[3]), wtx[wtx.size - 4])
+        span_x = _interval(wtx, x, 3, wtx.size - 5)
+        return WALL, eps, ratio, 1.0 - eps * eps, span_x, _basis(wtx, x, span_x), wty, wrr, wtt
+    model = TABULATED
     log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
     x = min(max(log_gap, tx[3]), tx[tx.size - 4])
     span_x = _interval(tx, x, 3, tx.size - 5)
     scale = (1.0 - eps * eps) ** 2.5
-    return model, eps, ratio, scale, span_x, _basis(tx, x, span_x), ty, radial, tangential
+    return model, eps, ratio, scale, span_x, _basis(tx, x, span_x), ty, rr, tt
+
+
+@njit(cache=True)
+def _long_shape(eps, beta, ratio):
+    """The long bearing's ``G`` in closed form [-]: ``film.long_shape_near_wall``.
+
+    Its operations, with the compiled force (a compiled function passed as an argument
+    would keep numba from caching the kernel).
+    """
+    if 1.0 - eps >= LONG_CLOSED_FORM_GAP:
+        return long_bearing(
+            1.0, 2.0 * ratio, 1.0, 1.0 / 6.0, eps, 0.5 * math.sin(beta), math.cos(beta) / eps
+        )
+    held = 1.0 - LONG_CLOSED_FORM_GAP
+    one_minus, held_minus = 1.0 - eps * eps, 1.0 - held * held
+    root, held_root = math.sqrt(one_minus), math.sqrt(held_minus)
+    direction = math.atan2(held_root * math.sin(beta), root * math.cos(beta))
+    size = math.hypot(root * math.cos(beta), math.sin(beta))
+    held_size = math.hypot(held_root * math.cos(direction), math.sin(direction))
+    radial, tangential = long_bearing(
+        1.0,
+        2.0 * ratio,
+        1.0,
+        1.0 / 6.0,
+        held,
+        0.5 * math.sin(direction),
+        math.cos(direction) / held,
+    )
+    scale = size / held_size
+    return (
+        scale * radial * (held_minus / one_minus) ** 1.5,
+        scale * tangential * (held_minus / one_minus),
+    )
 
 
 @njit(cache=True)
 def shape_along(film, beta):
-    """``G(eps, beta)`` at the ``eps`` of ``film`` (:func:`film_at`) [-]."""
+    """``G(eps, beta)`` at the ``eps`` of ``film`` (:func:`film_at`) [-].
+
+    On the wall's table (``orbit.wall_shape_scalar``): at the inner direction
+    ``psi = atan2(sin beta, sqrt(1 - eps^2) cos beta)``,
+    ``G = m' (V_r / (1 - eps^2)^1.5, V_t / (1 - eps^2))``
+    (``mobility.to_wall``).
+    """
     model, eps, ratio, scale, span_x, wx, ty, radial, tangential = film
     if model == SHORT:
         return short_shape(eps, beta, ratio)
+    if model == LONG:
+        return _long_shape(eps, beta, ratio)
+    if model == WALL:
+        root = math.sqrt(scale)
+        wedge, squeeze = root * math.cos(beta), math.sin(beta)
+        y = min(max(math.atan2(squeeze, wedge), ty[3]), ty[ty.size - 4])
+        size = math.hypot(wedge, squeeze)
+        span_y = _interval(ty, y, 3, ty.size - 5)
+        wy = _basis(ty, y, span_y)
+        columns = ty.size - 4
+        g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+        g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
+        return size * g_r / (scale * root), size * g_t / scale
     y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
     span_y = _interval(ty, y, 3, ty.size - 5)
     wy = _basis(ty, y, span_y)
@@ -284,12 +348,14 @@ def _newton(start, target, film):
 
 
 @njit(cache=True)
-def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, nodes):
+def direction_of_motion(
+    eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, nodes
+):
     """``beta`` whose film force points at ``target`` (``OrbitSolver.direction_of_motion``).
 
     ``memory[0]`` holds the last root (NaN: none); returns NaN where none is found.
     """
-    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
+    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
     return direction_along(film, target, memory, nodes)[0]
 
 
@@ -375,12 +441,13 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
 
     ``joint = (clearance, roughness, cutoff, mobility_scale, ratio, model, log_gap_max)``,
     ``asperity = (breaks, coefficients)`` of the force's spline over the gap,
-    ``tables = (tx, ty, radial, tangential)`` of the tabulated models. Returns NaN
+    ``tables = (tx, ty, radial, tangential)`` of the tabulated models and the same of
+    their wall tables (``orbit.OrbitSolver.kernel_arguments``). Returns NaN
     where no direction of motion is found.
     """
     clearance, roughness, cutoff, scale, ratio, model_code, log_gap_max = joint
     model = int(model_code)
-    tx, ty, rr, tt = tables
+    tx, ty, rr, tt, wtx, wty, wrr, wtt = tables
     eps, phi = math.hypot(x, y), math.atan2(y, x)
     eps = min(max(eps, 1e-6), _LARGEST)
     cos_phi, sin_phi = math.cos(phi), math.sin(phi)
@@ -391,7 +458,7 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
     radial = tangential = 0.0
     if carried > 0.0:
         target = math.atan2(film_y, film_x) - phi + math.pi
-        film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
+        film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
         beta, g_r, g_t = direction_along(film, target, memory, nodes)
         if math.isnan(beta):
             return math.nan, math.nan
