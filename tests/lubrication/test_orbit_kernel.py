@@ -15,7 +15,13 @@ import numpy as np
 import pytest
 from scipy.interpolate import bisplev
 
-from jointwear.lubrication.orbit import CycleMap, OrbitSolver, compiled_kernel, periodic_orbit
+from jointwear.lubrication.orbit import (
+    LEAVING_WALL,
+    CycleMap,
+    OrbitSolver,
+    compiled_kernel,
+    periodic_orbit,
+)
 
 pytest.importorskip("numba")
 
@@ -166,3 +172,30 @@ def test_the_compiled_velocity_is_the_python_velocity_close_to_the_wall(kernel, 
     # difference of terms of order (1 - eps^2)^-1.5: round-off grows with it (both
     # paths evaluate the same closed form; 1e-7 measured)
     assert worst < (1e-6 if model == "long" else 1e-10)
+
+
+@pytest.mark.parametrize("model", ["long", "finite"])
+def test_newton_on_the_wall_table_finds_the_bracketed_direction(kernel, model):
+    """Beyond eps = 0.995 Newton's method runs on the wall table through the inner
+    direction psi; the long bearing's leaves it to the bracketing where the pin leaves
+    the wall (its closed form there)."""
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, model)
+    joint, _, memory, tables, nodes = solver.kernel_arguments()
+    _, _, _, _, ratio, code, log_gap_max = joint
+    arguments = (int(code), ratio, log_gap_max, *tables, nodes)
+    rng = np.random.default_rng(17)
+    on_the_table = 0
+    for _ in range(400):
+        eps, target = 1.0 - 10.0 ** -rng.uniform(2.31, 8.0), rng.uniform(-np.pi, 2 * np.pi)
+        memory[0] = math.nan
+        bracketed = kernel.direction_of_motion(eps, target, memory, *arguments)
+        film = kernel.film_at(eps, *arguments[:-1])
+        newton = kernel._newton(bracketed + rng.uniform(-1e-3, 1e-3), target, film)[0]
+        inner = math.atan2(math.sin(bracketed), math.sqrt(1.0 - eps * eps) * math.cos(bracketed))
+        leaving = -np.pi + LEAVING_WALL - 0.05 < inner < -LEAVING_WALL + 0.05
+        if leaving:  # (the finite wall table's turns within sqrt(1 - eps^2) there)
+            continue
+        on_the_table += 1
+        assert newton == pytest.approx(bracketed, abs=1e-11)
+    # (most random loads make the pin leave the wall)
+    assert on_the_table > 20

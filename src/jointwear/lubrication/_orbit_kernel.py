@@ -33,8 +33,12 @@ from jointwear.mechanism.impact.compiled_film import long_bearing
 #: ``status`` of a cycle's integration
 DONE, TOO_MANY_STEPS, STEP_TOO_SMALL = 0, 1, 2
 #: model codes (WALL: the finite bearing beyond its table's end, on the wall's table;
-#: LONG: the long bearing, tabulated up to the table's end and in closed form beyond)
+#: LONG: the long bearing, tabulated up to the table's end, on its wall table beyond
+#: and in closed form where the pin leaves the wall)
 SHORT, TABULATED, WALL, LONG = 0, 1, 2, 3
+#: the long bearing's closed form where the wall's inner direction psi lies in
+#: (-pi + _LEAVING, -_LEAVING): the pin leaves the wall (orbit.LEAVING_WALL)
+_LEAVING = math.atan(3.0)
 _TWO_PI = 2.0 * math.pi
 #: the largest eccentricity ratio the orbit reaches (h_min = 1e-12 c), as the orbit module
 _LARGEST = 1.0 - 1e-12
@@ -182,11 +186,10 @@ def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt):
     if model == SHORT:
         return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, rr, tt
     if eps > 1.0 - 10.0**-log_gap_max:
-        if model == LONG:
-            return LONG, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, rr, tt
+        code = LONG if model == LONG else WALL
         x = min(max(-math.log10(max(1.0 - eps, 1e-300)), wtx[3]), wtx[wtx.size - 4])
         span_x = _interval(wtx, x, 3, wtx.size - 5)
-        return WALL, eps, ratio, 1.0 - eps * eps, span_x, _basis(wtx, x, span_x), wty, wrr, wtt
+        return code, eps, ratio, 1.0 - eps * eps, span_x, _basis(wtx, x, span_x), wty, wrr, wtt
     model = TABULATED
     log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
     x = min(max(log_gap, tx[3]), tx[tx.size - 4])
@@ -240,12 +243,13 @@ def shape_along(film, beta):
     model, eps, ratio, scale, span_x, wx, ty, radial, tangential = film
     if model == SHORT:
         return short_shape(eps, beta, ratio)
-    if model == LONG:
-        return _long_shape(eps, beta, ratio)
-    if model == WALL:
+    if model != TABULATED:  # WALL or LONG
         root = math.sqrt(scale)
         wedge, squeeze = root * math.cos(beta), math.sin(beta)
-        y = min(max(math.atan2(squeeze, wedge), ty[3]), ty[ty.size - 4])
+        inner = math.atan2(squeeze, wedge)
+        if model == LONG and -math.pi + _LEAVING < inner < -_LEAVING:
+            return _long_shape(eps, beta, ratio)
+        y = min(max(inner, ty[3]), ty[ty.size - 4])
         size = math.hypot(wedge, squeeze)
         span_y = _interval(ty, y, 3, ty.size - 5)
         wy = _basis(ty, y, span_y)
@@ -317,23 +321,38 @@ def _newton(start, target, film):
 
     From ``start`` (the last root: the state moves little between calls), with the
     mismatch's slope ``(G_r G_t' - G_t G_r') / |G|^2`` from the splines' derivatives
-    along ``beta``; done when a step is below the tolerance of :func:`_brent`.
-    Returns the root and ``G`` at the iterate before the last step (it moved less
-    than 1e-13 rad); NaN where the slope is not positive, the iterate strays a
-    radian from the start or it does not settle: the bracketing search takes over.
+    along ``beta`` (on a wall table through the inner direction: :func:`_wall_slope`);
+    done when a step is below the tolerance of :func:`_brent`. Returns the root and
+    ``G`` at the iterate before the last step (it moved less than 1e-13 rad); NaN
+    where the slope is not positive, the iterate strays a radian from the start, the
+    long bearing's iterate leaves the wall (its closed form there) or it does not
+    settle: the bracketing search takes over.
     """
-    _, _, _, scale, span_x, wx, ty, radial, tangential = film
+    model, _, _, scale, span_x, wx, ty, radial, tangential = film
     columns = ty.size - 4
     beta = start
     for _ in range(_NEWTON_STEPS):
-        y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
+        if model == TABULATED:
+            y, turn, size, size_slope = _wrap(beta), 1.0, 1.0, 0.0
+        else:
+            y, turn, size, size_slope = _wall_slope(beta, scale)
+            if model == LONG and -math.pi + _LEAVING < y < -_LEAVING:
+                return math.nan, 0.0, 0.0
+        y = min(max(y, ty[3]), ty[ty.size - 4])
         span_y = _interval(ty, y, 3, ty.size - 5)
         wy = _basis(ty, y, span_y)
         dy = _basis_slope(ty, y, span_y)
-        g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
-        g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
-        d_r = _bicubic_sum(radial, span_x, span_y, columns, wx, dy)
-        d_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
+        g_r = size * _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+        g_t = size * _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
+        d_r = size * turn * _bicubic_sum(radial, span_x, span_y, columns, wx, dy)
+        d_t = size * turn * _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
+        if model != TABULATED:
+            # G = m' (V_r / q^1.5, V_t / q): the common factor m' / q cancels in the
+            # angle, which sees V_r / sqrt(q) against V_t
+            root = math.sqrt(scale)
+            d_r = (d_r + size_slope / size * g_r) / root
+            d_t = d_t + size_slope / size * g_t
+            g_r = g_r / root
         slope = (g_r * d_t - g_t * d_r) / (g_r * g_r + g_t * g_t)
         if not slope > 0.0:
             return math.nan, 0.0, 0.0
@@ -345,6 +364,26 @@ def _newton(start, target, film):
         if abs(step) <= 0.5 * (1e-13 + 1e-15 * abs(beta)):
             return beta, g_r, g_t
     return math.nan, 0.0, 0.0
+
+
+@njit(cache=True)
+def _wall_slope(beta, scale):
+    """The inner direction ``psi`` of ``beta``, ``dpsi/dbeta``, ``m'`` and ``dm'/dbeta``.
+
+    ``tan psi = tan beta / sqrt(q)``, ``m' = sqrt(q cos^2 beta + sin^2 beta)`` with
+    ``q = 1 - eps^2`` (``mobility.wall_direction``): ``dpsi/dbeta = sqrt(q) / m'^2``,
+    ``dm'/dbeta = (1 - q) sin beta cos beta / m'``.
+    """
+    root = math.sqrt(scale)
+    cos_b, sin_b = math.cos(beta), math.sin(beta)
+    wedge = root * cos_b
+    size = math.hypot(wedge, sin_b)
+    return (
+        math.atan2(sin_b, wedge),
+        root / (size * size),
+        size,
+        (1.0 - scale) * sin_b * cos_b / size,
+    )
 
 
 @njit(cache=True)
@@ -369,7 +408,7 @@ def direction_along(film, target, memory, nodes):
             centre = memory[0]
             if math.isnan(centre):
                 continue
-            if film[0] == TABULATED:
+            if film[0] != SHORT:
                 # the root turns with the load: start from the last root turned as far
                 # as the target has turned since (memory[1], NaN: not at all)
                 turn = _wrap(target - memory[1]) if memory.size > 1 else math.nan

@@ -533,8 +533,8 @@ def long_shape_near_wall(
 
     ``force(R, L, c, mu, eps, deps/dt, omega_bar)`` at ``R = c = 1``, ``mu = 1/6`` and
     unit motion in the direction ``beta`` (``force`` is
-    :func:`jointwear.mechanism.impact.film.long_bearing`, compiled or not: the orbit's
-    Python and compiled paths run this one function). Closer to the wall than
+    :func:`jointwear.mechanism.impact.film.long_bearing` in the orbit's Python path; its
+    compiled kernel repeats these operations with the compiled force). Closer to the wall than
     :data:`LONG_CLOSED_FORM_GAP` of the clearance, where the closed form's
     antiderivatives cancel to round-off times ``(1 - eps^2)^-1.5``, the value there in
     the wall's scaling (:func:`jointwear.lubrication.mobility.to_wall`): at the same

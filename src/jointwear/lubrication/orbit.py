@@ -93,7 +93,9 @@ from jointwear.lubrication.mobility import (
     WALL_LOG_GAP_NODES,
     dimensionless_force,
     from_wall,
+    to_wall,
     wall_direction,
+    wall_motion,
     wall_table,
 )
 from jointwear.mechanism.impact.film import long_bearing
@@ -137,6 +139,11 @@ WALL_STEP = 0.05
 #: on the wall a cycle keeps most of a displacement along it: it shrinks by less than
 #: this share (a film that holds the pin steers it back much more)
 WALL_CONTRACTION = 0.5
+#: close to the wall the long bearing is its closed form where the wall's inner
+#: direction psi (mobility.wall_direction) lies in (-pi + LEAVING_WALL, -LEAVING_WALL):
+#: the pin leaves the wall, tan(beta) < -3 sqrt(1 - eps^2), and its film's force is of
+#: order one, which the wall table in psi does not resolve; its wall table elsewhere
+LEAVING_WALL = math.atan(3.0)
 #: the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`), imported on first use
 _KERNEL: Any = None
 
@@ -277,19 +284,20 @@ def shape_table(model: str, ratio: float) -> RectBivariateSpline:
 
 @cache
 def wall_shape_table(model: str, ratio: float) -> RectBivariateSpline:
-    """Spline of the finite bearing's wall values ``V`` over ``(s, psi)`` [-].
+    """Spline of the wall's scaled values ``V`` of a film model over ``(s, psi)`` [-].
 
     Beyond :func:`shape_table` (``eps`` from 0.995 to ``1 - 1e-5``, held beyond): the
     values ``V`` and the inner direction ``psi`` of
     :func:`jointwear.lubrication.mobility.to_wall`, in which the film close to the wall
-    is bounded and smooth, from :func:`jointwear.lubrication.mobility.wall_table` at
-    its nodes. One spline per component, as :func:`shape_table`. (The long bearing
-    is evaluated in closed form there.)
+    is bounded and smooth; the long bearing's from its closed form
+    (:func:`long_shape_scalar`), the finite one's from
+    :func:`jointwear.lubrication.mobility.wall_table` at its nodes. One spline per
+    component, as :func:`shape_table`.
 
     Parameters
     ----------
     model : str
-        ``"finite"`` or ``"finite-reynolds"``.
+        ``"long"``, ``"finite"`` or ``"finite-reynolds"``.
     ratio : float
         ``L / D`` [-].
     """
@@ -297,9 +305,15 @@ def wall_shape_table(model: str, ratio: float) -> RectBivariateSpline:
     pad = 3
     step = 2.0 * np.pi / WALL_DIRECTION_NODES
     inner = -np.pi + step * np.arange(-pad, WALL_DIRECTION_NODES + pad)
-    table = wall_table(ratio, FINITE_CAVITATION[model])
-    nodes = np.stack(np.broadcast_arrays(log_gap[:, None], wrap_to_pi(inner)[None, :]), -1)
-    scaled = np.moveaxis(table(nodes), -1, 0)
+    if model in FINITE_CAVITATION:
+        table = wall_table(ratio, FINITE_CAVITATION[model])
+        nodes = np.stack(np.broadcast_arrays(log_gap[:, None], wrap_to_pi(inner)[None, :]), -1)
+        scaled = np.moveaxis(table(nodes), -1, 0)
+    else:
+        eps = 1.0 - 10.0 ** -log_gap[:, None]
+        direction, size = wall_motion(eps, inner[None, :])
+        shape = np.vectorize(long_shape_scalar)(eps, direction, ratio)
+        scaled = to_wall(np.stack(shape), eps, size)
     return (
         RectBivariateSpline(log_gap, inner, scaled[0]),
         RectBivariateSpline(log_gap, inner, scaled[1]),
@@ -332,21 +346,23 @@ def long_shape_scalar(eps: float, beta: float, ratio: float) -> tuple[float, flo
 
 
 def wall_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tuple[float, float]]:
-    """``G(eps, beta)`` beyond ``eps = 0.995`` for one state [-].
+    """``G(eps, beta)`` beyond ``eps = 0.995`` for one state, from :func:`wall_shape_table` [-].
 
-    The long bearing in closed form (:func:`long_shape_scalar`), the finite one from
-    :func:`wall_shape_table` with the operations of the compiled kernel's ``shape_along``.
+    The operations of the compiled kernel's ``shape_along`` for the wall's table; the
+    long bearing in closed form where the pin leaves the wall (:data:`LEAVING_WALL`).
     """
-    if model == "long":
-        return lambda eps, beta: long_shape_scalar(eps, beta, ratio)
     knots = [(*spline.tck, *spline.degrees) for spline in wall_shape_table(model, ratio)]
+    long = model == "long"
 
     def shape(eps: float, beta: float) -> tuple[float, float]:
         log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), LOG_GAP_MAX), WALL_LOG_GAP_MAX)
         one_minus = 1.0 - eps * eps
         root = math.sqrt(one_minus)
         wedge, squeeze = root * math.cos(beta), math.sin(beta)
-        inner, size = math.atan2(squeeze, wedge), math.hypot(wedge, squeeze)
+        inner = math.atan2(squeeze, wedge)
+        if long and -math.pi + LEAVING_WALL < inner < -LEAVING_WALL:
+            return long_shape_scalar(eps, beta, ratio)
+        size = math.hypot(wedge, squeeze)
         radial, tangential = (float(bisplev(log_gap, inner, tck)) for tck in knots)
         return size * radial / (one_minus * root), size * tangential / one_minus
 
@@ -407,16 +423,20 @@ def film_shape(model: str, ratio: float) -> Callable[[ArrayLike, ArrayLike], Flo
 def wall_shape(model: str, ratio: float, eps: FloatArray, beta: FloatArray) -> FloatArray:
     """``G(eps, beta)`` beyond ``eps = 0.995``, shape ``(2, n)`` [-].
 
-    The long bearing in closed form, the finite one from :func:`wall_shape_table` (the
-    scaling of :func:`jointwear.lubrication.mobility.to_wall`).
+    From :func:`wall_shape_table` (the scaling of
+    :func:`jointwear.lubrication.mobility.to_wall`); the long bearing in closed form
+    where the pin leaves the wall (:data:`LEAVING_WALL`).
     """
-    if model == "long":
-        return np.array([long_shape_scalar(e, b, ratio) for e, b in zip(eps, beta, strict=True)]).T
     wall_radial, wall_tangential = wall_shape_table(model, ratio)
     inner, size = wall_direction(eps, beta)
     log_gap = np.clip(-np.log10(np.maximum(1.0 - eps, 1e-300)), LOG_GAP_MAX, WALL_LOG_GAP_MAX)
     values = np.stack([wall_radial.ev(log_gap, inner), wall_tangential.ev(log_gap, inner)])
-    return from_wall(values, eps, size)
+    out = from_wall(values, eps, size)
+    if model == "long":
+        leaving = (-np.pi + LEAVING_WALL < inner) & (inner < -LEAVING_WALL)
+        for k in np.flatnonzero(leaving):
+            out[:, k] = long_shape_scalar(float(eps[k]), float(beta[k]), ratio)
+    return out
 
 
 class OrbitSolver:
@@ -519,11 +539,8 @@ class OrbitSolver:
         else:
             radial, tangential = shape_table(self.model, self.ratio)
             tables = (*radial.tck, tangential.tck[2])
-            if self.model == "long":  # closed form beyond the table's end
-                tables += (np.zeros(8),) * 4
-            else:
-                radial, tangential = wall_shape_table(self.model, self.ratio)
-                tables += (*radial.tck, tangential.tck[2])
+            radial, tangential = wall_shape_table(self.model, self.ratio)
+            tables += (*radial.tck, tangential.tck[2])
         tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
         return joint, asperity, self.memory, tables, DIRECTION_NODES
 
