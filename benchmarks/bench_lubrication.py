@@ -16,9 +16,10 @@ changes both alike); the last column is the number of cycles the orbit search in
 The load average is printed at the start and the end.
 Target: a lubricated revolution within 2x of a dry one; the last measurement and where the
 time goes are in docs/lubrication.md (*Speed*). One revolution: short bearing 1.5-1.8x (14
-and 10 cycles), long bearing on the wall 1.8-1.9x (13 cycles since its orbit is posed on the
-pin's resting angle along the wall; 45 and 2.5-2.9x before), finite length 2.0-2.2x (11
-cycles, the fewest its search needs: not met).
+and 10 cycles), long bearing 2.1-2.2x (11 cycles; its film near the wall Sommerfeld's, the pin
+held off the wall; 1.8-2.0x and 13 cycles while the film force beyond eps = 0.995 was
+extrapolated like the short bearing's and the pin rested on the wall), finite length
+2.2-2.3x (4 cycles; 11 before: not met).
 
 Run: ``python benchmarks/bench_lubrication.py [--repeats N] [--python-repeats N]``
 """
