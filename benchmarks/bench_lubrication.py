@@ -15,11 +15,7 @@ of as many revolutions, and the ratio is that of the two CPU medians (a changing
 changes both alike); the last column is the number of cycles the orbit search integrated.
 The load average is printed at the start and the end.
 Target: a lubricated revolution within 2x of a dry one; the last measurement and where the
-time goes are in docs/lubrication.md (*Speed*). One revolution: short bearing 1.6-1.7x (13
-and 9 cycles), long bearing on the wall 1.9x (13 cycles since its orbit is posed on the
-pin's resting angle along the wall; 45 and 2.5-2.9x before), finite length 1.95-1.98x (7
-cycles since the root finder starts with the secant Jacobian of the repeated cycles; 11 cycles
-and 2.1-2.2x before).
+time goes are in docs/lubrication.md (*Speed*).
 
 Run: ``python benchmarks/bench_lubrication.py [--repeats N] [--python-repeats N]``
 """

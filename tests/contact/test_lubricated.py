@@ -117,9 +117,10 @@ def test_in_the_mixed_regime_wear_falls_with_speed():
 
 def test_the_oiled_slider_crank_pin_wears_less_the_faster_the_crank_turns():
     """The gallery's oiled slider-crank pin (finite length, ISO VG 68 at 40 degC, Rq
-    0.1 um): in the mixed regime between 20 and 60 rpm, the orbit the same from the
-    steady start and from a start on the asperities, and the wear per revolution falls
-    with the crank speed."""
+    0.1 um): on the asperities between 20 and 60 rpm (least film parameter 0.37-0.91,
+    its film Sommerfeld's near the wall), the orbit the same from the steady start and
+    from a start on the asperities, and the wear per revolution falls with the crank
+    speed."""
     base = [
         "mechanism.type=slider-crank",
         "materials.pin=steel",
@@ -153,7 +154,9 @@ def test_the_oiled_slider_crank_pin_wears_less_the_faster_the_crank_turns():
         )
         smallest = 1.0 - orbit.eccentricity_ratio.max()
         assert 1.0 - other.eccentricity_ratio.max() == pytest.approx(smallest, rel=1e-2)
-    assert 0.5 < least[0] < 1.0 < least[-1] < 3.0  # from the bulk's edge into the mixed regime
+    # within the roughness: the film's force grows only like (1 - eps^2)^-3/2 there
+    # (0.61-1.08 while it was extrapolated like the short bearing's, (1 - eps^2)^-5/2)
+    assert 0.3 < least[0] < 0.5 < 0.8 < least[-1] < 1.0
     assert np.all(np.diff(least) > 0.0)
     assert np.all(np.diff(wear) < 0.0)
 
@@ -341,10 +344,11 @@ def test_the_asperities_reach_only_the_nodes_kept_for_them(reach):
         assert columns.shape[1] < nodes / 4
 
 
-def test_a_pin_on_the_wall_wears_the_same_wherever_its_orbit_starts(paper_config, monkeypatch):
-    """The paper's slider-crank, long bearing, 0.3 Pa s: the film alone cannot hold the
-    rod-slider pin (its asperities carry 1.7 N of 196-338 N), which rests on the wall. From
-    the steady start and from a start on the wall 0.1 rad off, the same orbit and wear."""
+def test_a_pin_started_on_the_wall_wears_as_from_its_steady_start(paper_config, monkeypatch):
+    """The paper's slider-crank, long bearing, 0.3 Pa s: the film alone holds the
+    rod-slider pin (its asperities carry 1.7 N of 196-338 N) within the roughness, its
+    least film parameter 0.49 (Sommerfeld's film close to the wall). From the steady
+    start and from a start on the wall 0.1 rad off, the same orbit and wear."""
     from jointwear.contact.lubricated import LubricatedContact
 
     config = paper_config.replace(
@@ -361,7 +365,7 @@ def test_a_pin_on_the_wall_wears_the_same_wherever_its_orbit_starts(paper_config
     on_the_wall = (1.0 - 1e-6) * np.array([math.cos(3.04), math.sin(3.04)])
     monkeypatch.setattr(LubricatedContact, "first_guess", lambda self, cycle: on_the_wall)
     other, other_angle = run_from_its_start()
-    assert one["min_film_parameter"] < 1e-5  # on the wall
+    assert one["min_film_parameter"] == pytest.approx(0.49, abs=0.01)  # off the wall
     assert abs(math.remainder(one_angle - other_angle, 2.0 * math.pi)) < 1e-4
     # (a fixed point of the cycle map alone: the peak depth 1.6e-3 apart)
     assert other["peak_wear_depth_m"] == pytest.approx(one["peak_wear_depth_m"], rel=1e-6, abs=0)

@@ -15,7 +15,13 @@ import numpy as np
 import pytest
 from scipy.interpolate import bisplev
 
-from jointwear.lubrication.orbit import CycleMap, OrbitSolver, compiled_kernel, periodic_orbit
+from jointwear.lubrication.orbit import (
+    LEAVING_WALL,
+    CycleMap,
+    OrbitSolver,
+    compiled_kernel,
+    periodic_orbit,
+)
 
 pytest.importorskip("numba")
 
@@ -58,7 +64,7 @@ def test_the_compiled_velocity_is_the_python_velocity(kernel, model):
 
 def test_the_compiled_bicubic_spline_is_fitpacks(kernel):
     solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, "finite")
-    _, _, _, (tx, ty, radial, _), _ = solver.kernel_arguments()
+    _, _, _, (tx, ty, radial, *_), _ = solver.kernel_arguments()
     rng = np.random.default_rng(3)
     # inside the table and beyond both ends (held at the end values, as FITPACK)
     for x, y in rng.uniform([-0.5, -3.5], [3.5, 3.5], size=(100, 2)):
@@ -68,7 +74,7 @@ def test_the_compiled_bicubic_spline_is_fitpacks(kernel):
 
 def test_the_compiled_spline_slope_along_the_direction_is_fitpacks(kernel):
     solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, "long")
-    _, _, _, (tx, ty, radial, _), _ = solver.kernel_arguments()
+    _, _, _, (tx, ty, radial, *_), _ = solver.kernel_arguments()
     columns = ty.size - 4
     rng = np.random.default_rng(5)
     for x, y in rng.uniform([0.0, -np.pi], [2.3, np.pi], size=(100, 2)):
@@ -142,3 +148,54 @@ def test_the_steady_shape_is_the_scalar_shape(kernel, model):
         for beta in (0.0, math.pi, 1.0):
             expected = solver.scalar_shape(eps, beta)
             np.testing.assert_allclose(steady(eps, beta), expected, rtol=1e-12)
+
+
+@pytest.mark.parametrize("model", ["long", "finite"])
+def test_the_compiled_velocity_is_the_python_velocity_close_to_the_wall(kernel, model):
+    """Beyond the force table's end (eps > 0.995, down to 1e-9 of the clearance): the
+    long bearing in closed form, the finite one on its wall table, in both paths."""
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, model)
+    joint, asperity, memory, tables, nodes = solver.kernel_arguments()
+    rng = np.random.default_rng(13)
+    worst = 0.0
+    for _ in range(100):
+        eps, phi = 1.0 - 10.0 ** -rng.uniform(2.3, 9.0), rng.uniform(-np.pi, np.pi)
+        state = np.array([eps * math.cos(phi), eps * math.sin(phi)])
+        load_x, load_y, speed = rng.normal(size=3) * [2000.0, 2000.0, 20.0]
+        solver.last_direction, memory[0] = None, math.nan
+        python = solver.velocity(state, load_x, load_y, speed)
+        compiled = kernel.velocity(
+            *state, load_x, load_y, speed, joint, asperity, memory, tables, nodes
+        )
+        worst = max(worst, np.max(np.abs(python - compiled)) / np.max(np.abs(python)))
+    # where the pin leaves the wall the long bearing's force is of order one, a
+    # difference of terms of order (1 - eps^2)^-1.5: round-off grows with it (both
+    # paths evaluate the same closed form; 1e-7 measured)
+    assert worst < (1e-6 if model == "long" else 1e-10)
+
+
+@pytest.mark.parametrize("model", ["long", "finite"])
+def test_newton_on_the_wall_table_finds_the_bracketed_direction(kernel, model):
+    """Beyond eps = 0.995 Newton's method runs on the wall table through the inner
+    direction psi; the long bearing's leaves it to the bracketing where the pin leaves
+    the wall (its closed form there)."""
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, model)
+    joint, _, memory, tables, nodes = solver.kernel_arguments()
+    _, _, _, _, ratio, code, log_gap_max = joint
+    arguments = (int(code), ratio, log_gap_max, *tables, nodes)
+    rng = np.random.default_rng(17)
+    on_the_table = 0
+    for _ in range(400):
+        eps, target = 1.0 - 10.0 ** -rng.uniform(2.31, 8.0), rng.uniform(-np.pi, 2 * np.pi)
+        memory[0] = math.nan
+        bracketed = kernel.direction_of_motion(eps, target, memory, *arguments)
+        film = kernel.film_at(eps, *arguments[:-1])
+        newton = kernel._newton(bracketed + rng.uniform(-1e-3, 1e-3), target, film)[0]
+        inner = math.atan2(math.sin(bracketed), math.sqrt(1.0 - eps * eps) * math.cos(bracketed))
+        leaving = -np.pi + LEAVING_WALL - 0.05 < inner < -LEAVING_WALL + 0.05
+        if leaving:  # (the finite wall table's turns within sqrt(1 - eps^2) there)
+            continue
+        on_the_table += 1
+        assert newton == pytest.approx(bracketed, abs=1e-11)
+    # (most random loads make the pin leave the wall)
+    assert on_the_table > 20

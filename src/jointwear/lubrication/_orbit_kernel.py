@@ -27,12 +27,18 @@ import numpy as np
 from numba import njit
 from scipy.integrate import RK45
 
-from jointwear.lubrication.film import short_shape_scalar
+from jointwear.lubrication.film import LONG_CLOSED_FORM_GAP, short_shape_scalar
+from jointwear.mechanism.impact.compiled_film import long_bearing
 
 #: ``status`` of a cycle's integration
 DONE, TOO_MANY_STEPS, STEP_TOO_SMALL = 0, 1, 2
-#: model codes
-SHORT, TABULATED = 0, 1
+#: model codes (WALL: the finite bearing beyond its table's end, on the wall's table;
+#: LONG: the long bearing, tabulated up to the table's end, on its wall table beyond
+#: and in closed form where the pin leaves the wall)
+SHORT, TABULATED, WALL, LONG = 0, 1, 2, 3
+#: the long bearing's closed form where the wall's inner direction psi lies in
+#: (-pi + _LEAVING, -_LEAVING): the pin leaves the wall (orbit.LEAVING_WALL)
+_LEAVING = math.atan(3.0)
 _TWO_PI = 2.0 * math.pi
 #: the largest eccentricity ratio the orbit reaches (h_min = 1e-12 c), as the orbit module
 _LARGEST = 1.0 - 1e-12
@@ -159,36 +165,98 @@ short_shape = njit(cache=True)(short_shape_scalar)
 
 
 @njit(cache=True)
-def shape(eps, beta, model, ratio, log_gap_max, tx, ty, radial, tangential):
+def shape(eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt):
     """``G(eps, beta)`` of the film model (``orbit.OrbitSolver.scalar_shape``) [-]."""
-    return shape_along(film_at(eps, model, ratio, log_gap_max, tx, ty, radial, tangential), beta)
+    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
+    return shape_along(film, beta)
 
 
 @njit(cache=True)
-def film_at(eps, model, ratio, log_gap_max, tx, ty, radial, tangential):
+def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt):
     """What :func:`shape_along` needs at ``eps``, evaluated once for all directions.
 
     The tabulated models' log-gap coordinate, their ``(1 - eps^2)^2.5`` and the knot
     span and B-spline basis along it: the direction of motion is sought at one ``eps``
     over some ten directions, and only the basis along ``beta`` changes between them
     (the same operations as :func:`bicubic` for each component, so the same values
-    bit for bit).
+    bit for bit). Beyond the table's end (``eps > 1 - 10^-log_gap_max``) the long
+    bearing in closed form, the finite one from the wall's table (``wtx, wty, wrr,
+    wtt``: ``orbit.wall_shape_table``) with ``1 - eps^2``.
     """
     if model == SHORT:
-        return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, radial, tangential
+        return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, rr, tt
+    if eps > 1.0 - 10.0**-log_gap_max:
+        code = LONG if model == LONG else WALL
+        x = min(max(-math.log10(max(1.0 - eps, 1e-300)), wtx[3]), wtx[wtx.size - 4])
+        span_x = _interval(wtx, x, 3, wtx.size - 5)
+        return code, eps, ratio, 1.0 - eps * eps, span_x, _basis(wtx, x, span_x), wty, wrr, wtt
+    model = TABULATED
     log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
     x = min(max(log_gap, tx[3]), tx[tx.size - 4])
     span_x = _interval(tx, x, 3, tx.size - 5)
     scale = (1.0 - eps * eps) ** 2.5
-    return model, eps, ratio, scale, span_x, _basis(tx, x, span_x), ty, radial, tangential
+    return model, eps, ratio, scale, span_x, _basis(tx, x, span_x), ty, rr, tt
+
+
+@njit(cache=True)
+def _long_shape(eps, beta, ratio):
+    """The long bearing's ``G`` in closed form [-]: ``film.long_shape_near_wall``.
+
+    Its operations, with the compiled force (a compiled function passed as an argument
+    would keep numba from caching the kernel).
+    """
+    if 1.0 - eps >= LONG_CLOSED_FORM_GAP:
+        return long_bearing(
+            1.0, 2.0 * ratio, 1.0, 1.0 / 6.0, eps, 0.5 * math.sin(beta), math.cos(beta) / eps
+        )
+    held = 1.0 - LONG_CLOSED_FORM_GAP
+    one_minus, held_minus = 1.0 - eps * eps, 1.0 - held * held
+    root, held_root = math.sqrt(one_minus), math.sqrt(held_minus)
+    direction = math.atan2(held_root * math.sin(beta), root * math.cos(beta))
+    size = math.hypot(root * math.cos(beta), math.sin(beta))
+    held_size = math.hypot(held_root * math.cos(direction), math.sin(direction))
+    radial, tangential = long_bearing(
+        1.0,
+        2.0 * ratio,
+        1.0,
+        1.0 / 6.0,
+        held,
+        0.5 * math.sin(direction),
+        math.cos(direction) / held,
+    )
+    scale = size / held_size
+    return (
+        scale * radial * (held_minus / one_minus) ** 1.5,
+        scale * tangential * (held_minus / one_minus),
+    )
 
 
 @njit(cache=True)
 def shape_along(film, beta):
-    """``G(eps, beta)`` at the ``eps`` of ``film`` (:func:`film_at`) [-]."""
+    """``G(eps, beta)`` at the ``eps`` of ``film`` (:func:`film_at`) [-].
+
+    On the wall's table (``orbit.wall_shape_scalar``): at the inner direction
+    ``psi = atan2(sin beta, sqrt(1 - eps^2) cos beta)``,
+    ``G = m' (V_r / (1 - eps^2)^1.5, V_t / (1 - eps^2))``
+    (``mobility.to_wall``).
+    """
     model, eps, ratio, scale, span_x, wx, ty, radial, tangential = film
     if model == SHORT:
         return short_shape(eps, beta, ratio)
+    if model != TABULATED:  # WALL or LONG
+        root = math.sqrt(scale)
+        wedge, squeeze = root * math.cos(beta), math.sin(beta)
+        inner = math.atan2(squeeze, wedge)
+        if model == LONG and -math.pi + _LEAVING < inner < -_LEAVING:
+            return _long_shape(eps, beta, ratio)
+        y = min(max(inner, ty[3]), ty[ty.size - 4])
+        size = math.hypot(wedge, squeeze)
+        span_y = _interval(ty, y, 3, ty.size - 5)
+        wy = _basis(ty, y, span_y)
+        columns = ty.size - 4
+        g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+        g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
+        return size * g_r / (scale * root), size * g_t / scale
     y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
     span_y = _interval(ty, y, 3, ty.size - 5)
     wy = _basis(ty, y, span_y)
@@ -253,23 +321,38 @@ def _newton(start, target, film):
 
     From ``start`` (the last root: the state moves little between calls), with the
     mismatch's slope ``(G_r G_t' - G_t G_r') / |G|^2`` from the splines' derivatives
-    along ``beta``; done when a step is below the tolerance of :func:`_brent`.
-    Returns the root and ``G`` at the iterate before the last step (it moved less
-    than 1e-13 rad); NaN where the slope is not positive, the iterate strays a
-    radian from the start or it does not settle: the bracketing search takes over.
+    along ``beta`` (on a wall table through the inner direction: :func:`_wall_slope`);
+    done when a step is below the tolerance of :func:`_brent`. Returns the root and
+    ``G`` at the iterate before the last step (it moved less than 1e-13 rad); NaN
+    where the slope is not positive, the iterate strays a radian from the start, the
+    long bearing's iterate leaves the wall (its closed form there) or it does not
+    settle: the bracketing search takes over.
     """
-    _, _, _, scale, span_x, wx, ty, radial, tangential = film
+    model, _, _, scale, span_x, wx, ty, radial, tangential = film
     columns = ty.size - 4
     beta = start
     for _ in range(_NEWTON_STEPS):
-        y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
+        if model == TABULATED:
+            y, turn, size, size_slope = _wrap(beta), 1.0, 1.0, 0.0
+        else:
+            y, turn, size, size_slope = _wall_slope(beta, scale)
+            if model == LONG and -math.pi + _LEAVING < y < -_LEAVING:
+                return math.nan, 0.0, 0.0
+        y = min(max(y, ty[3]), ty[ty.size - 4])
         span_y = _interval(ty, y, 3, ty.size - 5)
         wy = _basis(ty, y, span_y)
         dy = _basis_slope(ty, y, span_y)
-        g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
-        g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
-        d_r = _bicubic_sum(radial, span_x, span_y, columns, wx, dy)
-        d_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
+        g_r = size * _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+        g_t = size * _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
+        d_r = size * turn * _bicubic_sum(radial, span_x, span_y, columns, wx, dy)
+        d_t = size * turn * _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
+        if model != TABULATED:
+            # G = m' (V_r / q^1.5, V_t / q): the common factor m' / q cancels in the
+            # angle, which sees V_r / sqrt(q) against V_t
+            root = math.sqrt(scale)
+            d_r = (d_r + size_slope / size * g_r) / root
+            d_t = d_t + size_slope / size * g_t
+            g_r = g_r / root
         slope = (g_r * d_t - g_t * d_r) / (g_r * g_r + g_t * g_t)
         if not slope > 0.0:
             return math.nan, 0.0, 0.0
@@ -284,12 +367,34 @@ def _newton(start, target, film):
 
 
 @njit(cache=True)
-def direction_of_motion(eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, nodes):
+def _wall_slope(beta, scale):
+    """The inner direction ``psi`` of ``beta``, ``dpsi/dbeta``, ``m'`` and ``dm'/dbeta``.
+
+    ``tan psi = tan beta / sqrt(q)``, ``m' = sqrt(q cos^2 beta + sin^2 beta)`` with
+    ``q = 1 - eps^2`` (``mobility.wall_direction``): ``dpsi/dbeta = sqrt(q) / m'^2``,
+    ``dm'/dbeta = (1 - q) sin beta cos beta / m'``.
+    """
+    root = math.sqrt(scale)
+    cos_b, sin_b = math.cos(beta), math.sin(beta)
+    wedge = root * cos_b
+    size = math.hypot(wedge, sin_b)
+    return (
+        math.atan2(sin_b, wedge),
+        root / (size * size),
+        size,
+        (1.0 - scale) * sin_b * cos_b / size,
+    )
+
+
+@njit(cache=True)
+def direction_of_motion(
+    eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, nodes
+):
     """``beta`` whose film force points at ``target`` (``OrbitSolver.direction_of_motion``).
 
     ``memory[0]`` holds the last root (NaN: none); returns NaN where none is found.
     """
-    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
+    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
     return direction_along(film, target, memory, nodes)[0]
 
 
@@ -303,7 +408,7 @@ def direction_along(film, target, memory, nodes):
             centre = memory[0]
             if math.isnan(centre):
                 continue
-            if film[0] == TABULATED:
+            if film[0] != SHORT:
                 # the root turns with the load: start from the last root turned as far
                 # as the target has turned since (memory[1], NaN: not at all)
                 turn = _wrap(target - memory[1]) if memory.size > 1 else math.nan
@@ -375,12 +480,13 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
 
     ``joint = (clearance, roughness, cutoff, mobility_scale, ratio, model, log_gap_max)``,
     ``asperity = (breaks, coefficients)`` of the force's spline over the gap,
-    ``tables = (tx, ty, radial, tangential)`` of the tabulated models. Returns NaN
+    ``tables = (tx, ty, radial, tangential)`` of the tabulated models and the same of
+    their wall tables (``orbit.OrbitSolver.kernel_arguments``). Returns NaN
     where no direction of motion is found.
     """
     clearance, roughness, cutoff, scale, ratio, model_code, log_gap_max = joint
     model = int(model_code)
-    tx, ty, rr, tt = tables
+    tx, ty, rr, tt, wtx, wty, wrr, wtt = tables
     eps, phi = math.hypot(x, y), math.atan2(y, x)
     eps = min(max(eps, 1e-6), _LARGEST)
     cos_phi, sin_phi = math.cos(phi), math.sin(phi)
@@ -391,7 +497,7 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
     radial = tangential = 0.0
     if carried > 0.0:
         target = math.atan2(film_y, film_x) - phi + math.pi
-        film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt)
+        film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
         beta, g_r, g_t = direction_along(film, target, memory, nodes)
         if math.isnan(beta):
             return math.nan, math.nan

@@ -56,6 +56,7 @@ References
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import NamedTuple
 
 import numpy as np
@@ -66,6 +67,7 @@ __all__ = [
     "FilmForce",
     "film_thickness",
     "long_bearing_force",
+    "long_shape_near_wall",
     "min_film_thickness",
     "short_bearing_force",
     "short_shape_scalar",
@@ -81,6 +83,9 @@ FloatArray = NDArray[np.float64]
 SMALLEST_ECCENTRICITY = 1e-8
 #: cells of the film angle searched for the ends of the long bearing's positive film
 LONG_BEARING_CELLS = 96
+#: the long bearing's closed form down to this gap over the clearance; closer, its value
+#: there in the wall's scaling (:func:`long_shape_near_wall`)
+LONG_CLOSED_FORM_GAP = 1e-6
 
 
 class FilmForce(NamedTuple):
@@ -518,4 +523,64 @@ def short_shape_scalar(eps: float, beta: float, ratio: float) -> tuple[float, fl
     return (
         scale * (cos_b * sin_cos - sin_b * cos_cos),
         scale * (cos_b * sin_sin - sin_b * sin_cos),
+    )
+
+
+def long_shape_near_wall(
+    eps: float, beta: float, ratio: float, force: Callable[..., tuple[float, float]]
+) -> tuple[float, float]:
+    """``G(eps, beta; L/D)`` of the long bearing from its scalar closed form ``force`` [-].
+
+    ``force(R, L, c, mu, eps, deps/dt, omega_bar)`` at ``R = c = 1``, ``mu = 1/6`` and
+    unit motion in the direction ``beta`` (``force`` is
+    :func:`jointwear.mechanism.impact.film.long_bearing` in the orbit's Python path; its
+    compiled kernel repeats these operations with the compiled force). Closer to the wall than
+    :data:`LONG_CLOSED_FORM_GAP` of the clearance, where the closed form's
+    antiderivatives cancel to round-off times ``(1 - eps^2)^-1.5``, the value there in
+    the wall's scaling (:func:`jointwear.lubrication.mobility.to_wall`): at the same
+    inner direction ``tan psi = tan beta / sqrt(1 - eps^2)``,
+
+    .. math::
+
+        G_r = \\frac{m'}{m'_w}\\Big(\\frac{1-\\varepsilon_w^2}{1-\\varepsilon^2}\\Big)^{3/2}
+              G_{r,w}, \\qquad
+        G_t = \\frac{m'}{m'_w}\\,\\frac{1-\\varepsilon_w^2}{1-\\varepsilon^2}\\, G_{t,w},
+
+    the growth of Sommerfeld's film near the wall (squeeze ``(1 - eps^2)^-3/2``, wedge
+    ``(1 - eps^2)^-1`` and ``^-1/2``; Hamrock, Schmid & Jacobson 2004, ch. 8 and 10).
+
+    Parameters
+    ----------
+    eps : float
+        Eccentricity ratio [-].
+    beta : float
+        Direction of the motion [rad].
+    ratio : float
+        ``L / D`` [-].
+    force : callable
+        The long bearing's scalar force [N] (module text).
+    """
+    if 1.0 - eps >= LONG_CLOSED_FORM_GAP:
+        return force(
+            1.0, 2.0 * ratio, 1.0, 1.0 / 6.0, eps, 0.5 * math.sin(beta), math.cos(beta) / eps
+        )
+    held = 1.0 - LONG_CLOSED_FORM_GAP
+    one_minus, held_minus = 1.0 - eps * eps, 1.0 - held * held
+    root, held_root = math.sqrt(one_minus), math.sqrt(held_minus)
+    direction = math.atan2(held_root * math.sin(beta), root * math.cos(beta))
+    size = math.hypot(root * math.cos(beta), math.sin(beta))
+    held_size = math.hypot(held_root * math.cos(direction), math.sin(direction))
+    radial, tangential = force(
+        1.0,
+        2.0 * ratio,
+        1.0,
+        1.0 / 6.0,
+        held,
+        0.5 * math.sin(direction),
+        math.cos(direction) / held,
+    )
+    scale = size / held_size
+    return (
+        scale * radial * (held_minus / one_minus) ** 1.5,
+        scale * tangential * (held_minus / one_minus),
     )

@@ -24,7 +24,9 @@ half-Sommerfeld cavitation keeps its positive part. The force is then
 second-order stencil on a grid uniform in Sommerfeld's angle, which crowds the nodes at
 the smallest film), tabulates ``G`` over the eccentricity and ``beta`` once per ``L/D``
 (cached) and interpolates it with cubic splines: thousands of states per call, any
-``L/D``. Its accuracy against closed forms is in ``docs/lubrication.md``.
+``L/D``. Up to ``eps = 0.995``; beyond, up to ``1 - 1e-5``, a wall table in the variables
+in which the film near the wall is bounded (:func:`to_wall`, :func:`wall_table`). Its
+accuracy against closed forms is in ``docs/lubrication.md``.
 
 Booker's mobility method inverts the force law: given the load on the pin, it returns
 the velocity of the pin's centre. In a frame turning at the mean surface speed
@@ -86,10 +88,24 @@ __all__ = [
 FloatArray = NDArray[np.float64]
 
 #: tabulated eccentricities eps = 1 - 10^-s, s uniform in [0, LOG_GAP_MAX] (eps <= 0.995);
-#: beyond, the force scaled by (1 - eps^2)^2.5 is held at its last tabulated value
+#: beyond, the wall table (:func:`wall_table`) takes over
 LOG_GAP_MAX = 2.3
 LOG_GAP_NODES = 40
+#: the table's largest eccentricity (its node, bit for bit): beyond it the wall table
+TABLE_EDGE = 1.0 - 10.0**-LOG_GAP_MAX
 DIRECTION_NODES = 72
+#: the wall table: s uniform in [LOG_GAP_MAX, WALL_LOG_GAP_MAX] (eps up to 1 - 1e-5);
+#: beyond, its scaled values are held (the wall's own asymptotics, :func:`to_wall`)
+WALL_LOG_GAP_MAX = 5.0
+WALL_LOG_GAP_NODES = 10
+#: inner directions psi of the wall table (:func:`wall_direction`)
+WALL_DIRECTION_NODES = 72
+#: the wall table's Reynolds grid (angle nodes, axial cells): the film's pressure gathers
+#: within ``sqrt(1 - eps)`` of the smallest gap, and its axial fall at the ends as well
+WALL_GRID = (480, 64)
+#: over this much of s beyond the table's end the wall table passes from the usual grid
+#: (force_table's) to WALL_GRID
+WALL_BLEND = 0.6
 #: eccentricity below which the mobility uses this value (the direction of e is undefined)
 SMALLEST_ECCENTRICITY = 1e-6
 
@@ -118,13 +134,158 @@ def force_table(
     for k, s in enumerate(log_gap):
         eps = 1.0 - 10.0**-s
         values[k] = forces(eps, length_to_diameter, directions).T * (1.0 - eps * eps) ** 2.5
-    # three directions repeated on each side make the spline periodic in beta
+    return periodic_interpolant(log_gap, directions, values)
+
+
+def periodic_interpolant(
+    log_gap: FloatArray, directions: FloatArray, values: FloatArray
+) -> RegularGridInterpolator:
+    """Cubic interpolant of ``values[s, direction, component]``, periodic in the direction.
+
+    Parameters
+    ----------
+    log_gap : ndarray
+        ``s = -log10(1 - eps)`` of the rows [-].
+    directions : ndarray
+        Directions of the columns, uniform over ``[-pi, pi)`` [rad].
+    values : ndarray
+        The tabulated values [-].
+    """
+    # three directions repeated on each side make the spline periodic
     pad = 3
     padded = np.concatenate([values[:, -pad:], values, values[:, :pad]], axis=1)
     axis = np.concatenate(
         [directions[-pad:] - 2.0 * np.pi, directions, directions[:pad] + 2.0 * np.pi]
     )
     return RegularGridInterpolator((log_gap, axis), padded, method="cubic")
+
+
+def wall_motion(eps: ArrayLike, inner: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """The direction ``beta`` of the wall's inner direction ``psi`` [rad], and ``m'`` [-].
+
+    Close to the wall the film's pressure gathers within ``sqrt(1 - eps)`` of the
+    smallest gap, where the wedge's share of the pressure is ``sqrt(1 - eps^2) cos beta``
+    to the squeeze's ``sin beta``. The film there depends on the direction through
+
+    .. math:: \\tan\\psi = \\frac{\\tan\\beta}{\\sqrt{1-\\varepsilon^2}}, \\qquad
+              m' = \\sqrt{(1-\\varepsilon^2)\\cos^2\\beta + \\sin^2\\beta},
+
+    (``psi`` in the quadrant of ``beta``): the inverse of :func:`wall_direction`.
+
+    Parameters
+    ----------
+    eps : array_like
+        Eccentricity ratio [-].
+    inner : array_like
+        ``psi`` [rad].
+    """
+    root = np.sqrt(1.0 - np.asarray(eps, float) ** 2)
+    direction = np.arctan2(root * np.sin(inner), np.cos(inner))
+    return direction, wall_direction(eps, direction)[1]
+
+
+def wall_direction(eps: ArrayLike, direction: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """The wall's inner direction ``psi`` of the motion ``beta`` [rad], and ``m'`` [-].
+
+    (:func:`wall_motion`.)
+
+    Parameters
+    ----------
+    eps : array_like
+        Eccentricity ratio [-].
+    direction : array_like
+        ``beta`` [rad].
+    """
+    root = np.sqrt(1.0 - np.asarray(eps, float) ** 2)
+    wedge, squeeze = root * np.cos(direction), np.sin(direction)
+    return np.arctan2(squeeze, wedge), np.hypot(wedge, squeeze)
+
+
+def to_wall(shape: FloatArray, eps: ArrayLike, size: ArrayLike) -> FloatArray:
+    """``G`` scaled to the wall's bounded values ``V``, shape ``(2, ...)`` [-].
+
+    Where the gap is small against the bushing's length the film near the wall is a
+    long bearing's (Sommerfeld's): its wedge force grows like ``(1 - eps^2)^-1``
+    (radial) and ``(1 - eps^2)^-1/2`` (tangential), its squeeze force like
+    ``(1 - eps^2)^-3/2`` (Hamrock, Schmid & Jacobson 2004, ch. 8 and 10). With the inner
+    direction of :func:`wall_direction`,
+
+    .. math:: G_r = \\frac{m' V_r(\\varepsilon, \\psi)}{(1-\\varepsilon^2)^{3/2}}, \\qquad
+              G_t = \\frac{m' V_t(\\varepsilon, \\psi)}{1-\\varepsilon^2},
+
+    and ``V`` tends to a bounded function of ``psi`` alone as ``eps -> 1`` (within
+    2e-4 from ``1 - eps = 1e-4`` for the long bearing), smooth where ``G`` changes
+    within ``sqrt(1 - eps)`` of a pure wedge.
+
+    Parameters
+    ----------
+    shape : ndarray
+        ``G_r, G_t`` [-].
+    eps : array_like
+        Eccentricity ratio [-].
+    size : array_like
+        ``m'`` [-].
+    """
+    one_minus = 1.0 - np.asarray(eps, float) ** 2
+    return np.stack([shape[0] * one_minus**1.5, shape[1] * one_minus]) / size
+
+
+def from_wall(values: FloatArray, eps: ArrayLike, size: ArrayLike) -> FloatArray:
+    """``G`` of the wall's scaled values ``V`` (:func:`to_wall`), shape ``(2, ...)`` [-]."""
+    one_minus = 1.0 - np.asarray(eps, float) ** 2
+    return np.stack(
+        [size * values[0] / (one_minus * np.sqrt(one_minus)), size * values[1] / one_minus]
+    )
+
+
+@cache
+def wall_table(
+    length_to_diameter: float, cavitation: Cavitation = "half-Sommerfeld"
+) -> RegularGridInterpolator:
+    """Interpolant of the wall's ``V(eps, psi)`` (:func:`to_wall`) over ``(s, psi)``.
+
+    ``eps = 1 - 10^-s`` from the end of :func:`force_table` (0.995) to ``1 - 1e-5``;
+    half-Sommerfeld's film on the finer grid :data:`WALL_GRID` (about 1.5 s once per
+    ``L/D``), Reynolds' on the usual grid (some 5 s).
+
+    Parameters
+    ----------
+    length_to_diameter : float
+        ``L / D`` [-].
+    cavitation : {"half-Sommerfeld", "Reynolds"}
+        The film's cavitation condition (:mod:`jointwear.lubrication.reynolds`).
+    """
+    log_gap = np.linspace(LOG_GAP_MAX, WALL_LOG_GAP_MAX, WALL_LOG_GAP_NODES)
+    inner = np.linspace(-np.pi, np.pi, WALL_DIRECTION_NODES, endpoint=False)
+    values = np.empty((WALL_LOG_GAP_NODES, WALL_DIRECTION_NODES, 2))
+    for k, s in enumerate(log_gap):
+        eps = 1.0 - 10.0**-s
+        direction, size = wall_motion(eps, inner)
+        if cavitation == "Reynolds":
+            shape = reynolds_forces(eps, length_to_diameter, direction)
+        else:
+            shape = tabulated_forces(eps, length_to_diameter, direction, WALL_GRID)
+            # the usual grid's error (0.4 % at the table's end) fades out over
+            # WALL_BLEND, so that the wall table continues force_table at its end
+            share = max(0.0, 1.0 - (s - LOG_GAP_MAX) / WALL_BLEND)
+            if share > 0.0:
+                coarse = tabulated_forces(eps, length_to_diameter, direction)
+                shape = shape + share * (coarse - shape)
+        values[k] = to_wall(shape, eps, size).T
+    return periodic_interpolant(log_gap, inner, values)
+
+
+def wall_finite(
+    eps: FloatArray, direction: FloatArray, ratio: float, cavitation: Cavitation
+) -> FloatArray:
+    """``G(eps, beta; L/D)`` of the finite bearing beyond ``eps = 0.995``, shape ``(2, ...)`` [-].
+
+    From :func:`wall_table`, its values held beyond ``1 - 1e-5`` (:func:`to_wall`).
+    """
+    inner, size = wall_direction(eps, direction)
+    log_gap = np.clip(-np.log10(np.maximum(1.0 - eps, 1e-300)), LOG_GAP_MAX, WALL_LOG_GAP_MAX)
+    values = wall_table(ratio, cavitation)(np.stack([log_gap, inner], axis=-1))
+    return from_wall(values.T, eps, size)
 
 
 def finite_bearing_force(
@@ -146,8 +307,9 @@ def finite_bearing_force(
     with ``G`` the tabulated numerical solution of the Reynolds equation (module text).
     Tends to :func:`~jointwear.lubrication.film.short_bearing_force` for small ``L/D``
     and to :func:`~jointwear.lubrication.film.long_bearing_force` for large ``L/D``.
-    Tabulated for ``eps <= 0.995``; beyond, ``(1 - eps^2)^2.5 G`` is held at its value
-    there (the growth of the squeeze film).
+    Tabulated in ``(1 - eps^2)^2.5 G`` for ``eps <= 0.995``; beyond, up to ``1 - 1e-5``, in
+    the wall's scaled values (:func:`to_wall`: near the wall the film is a long bearing's
+    where the gap is small against the length), held beyond that.
 
     Parameters
     ----------
@@ -202,14 +364,19 @@ def dimensionless_finite(
 ) -> FloatArray:
     """``G(eps, beta; L/D)`` of the finite bearing, shape ``(2, ...)`` [-]."""
     out = np.empty((2, *eps.shape))
-    # beyond the table the scaled value is held: V(s_max) / (1 - eps^2)^2.5
-    log_gap = np.clip(-np.log10(np.maximum(1.0 - eps, 1e-300)), 0.0, LOG_GAP_MAX)
+    unclipped = -np.log10(np.maximum(1.0 - eps, 1e-300))
+    log_gap = np.clip(unclipped, 0.0, LOG_GAP_MAX)
+    # beyond the table's end the wall table takes over (its own scaling: to_wall)
+    near_wall = eps > TABLE_EDGE
     wrapped = wrap_angle(direction)
     for value in np.unique(ratio):
-        where = ratio == value
+        where = (ratio == value) & ~near_wall
         table = force_table(float(value), cavitation)
         scaled = table(np.stack([log_gap[where], wrapped[where]], axis=-1))
         out[:, where] = (scaled / (1.0 - eps[where, None] ** 2) ** 2.5).T
+        wall = (ratio == value) & near_wall
+        if np.any(wall):
+            out[:, wall] = wall_finite(eps[wall], direction[wall], float(value), cavitation)
     return out
 
 

@@ -38,10 +38,12 @@ still holds the pin off the wall for a time of order ``mu L D (R/c)^2 / W``: the
 quasi-static solution (no squeeze) would put it on the wall.
 
 A pin that the film alone must hold, its asperities too weak, may creep onto the wall
-instead; there the film resists motion in every direction without bound, the pin
-rolls with the mean surface speed, and every start closes the cycle. Such an orbit is
-posed on the pin's resting angle along the wall, not on a fixed point of the cycle map
-(:func:`wall_orbit`).
+instead; where the film there resists motion in every direction without bound (the
+short bearing's), the pin rolls with the mean surface speed and every start closes the
+cycle. Such an orbit is posed on the pin's resting angle along the wall, not on a fixed
+point of the cycle map (:func:`wall_orbit`). Sommerfeld's film near the wall (long and
+finite bearing, :func:`jointwear.lubrication.mobility.to_wall`) lets an oblique load slide
+the pin along the wall instead, and the pin finds an orbit off it.
 
 Sources: [1]_, [2]_, [3]_.
 
@@ -80,13 +82,24 @@ from jointwear.lubrication.asperity import (
     FIT_OMEGA,
     journal_asperity_force,
 )
-from jointwear.lubrication.film import short_shape_scalar
+from jointwear.lubrication.film import long_shape_near_wall, short_shape_scalar
 from jointwear.lubrication.mobility import (
     DIRECTION_NODES,
+    FINITE_CAVITATION,
     LOG_GAP_MAX,
     LOG_GAP_NODES,
+    TABLE_EDGE,
+    WALL_DIRECTION_NODES,
+    WALL_LOG_GAP_MAX,
+    WALL_LOG_GAP_NODES,
     dimensionless_force,
+    from_wall,
+    to_wall,
+    wall_direction,
+    wall_motion,
+    wall_table,
 )
+from jointwear.mechanism.impact.film import long_bearing
 
 __all__ = ["Orbit", "OrbitSolver", "periodic_orbit"]
 
@@ -133,6 +146,11 @@ WALL_STEP = 0.05
 #: on the wall a cycle keeps most of a displacement along it: it shrinks by less than
 #: this share (a film that holds the pin steers it back much more)
 WALL_CONTRACTION = 0.5
+#: close to the wall the long bearing is its closed form where the wall's inner
+#: direction psi (mobility.wall_direction) lies in (-pi + LEAVING_WALL, -LEAVING_WALL):
+#: the pin leaves the wall, tan(beta) < -3 sqrt(1 - eps^2), and its film's force is of
+#: order one, which the wall table in psi does not resolve; its wall table elsewhere
+LEAVING_WALL = math.atan(3.0)
 #: the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`), imported on first use
 _KERNEL: Any = None
 
@@ -245,8 +263,9 @@ def shape_table(model: str, ratio: float) -> RectBivariateSpline:
     """Spline of ``(1 - eps^2)^2.5 G`` of a film model over ``(s, beta)``, ``eps = 1 - 10^-s``.
 
     The long and the finite bearing's force factor, tabulated once per ``L/D`` on the
-    grid of :func:`jointwear.lubrication.mobility.force_table` and held beyond its
-    largest eccentricity (0.995) as there; a bicubic spline
+    grid of :func:`jointwear.lubrication.mobility.force_table` up to its largest
+    eccentricity (0.995; beyond, the long bearing in closed form,
+    :func:`long_shape_scalar`, and the finite one from :func:`wall_shape_table`); a bicubic spline
     (:class:`scipy.interpolate.RectBivariateSpline`) evaluates it in microseconds.
     Returns one spline per component, stacked along the first axis of the values.
 
@@ -270,12 +289,102 @@ def shape_table(model: str, ratio: float) -> RectBivariateSpline:
     )
 
 
+@cache
+def wall_shape_table(model: str, ratio: float) -> RectBivariateSpline:
+    """Spline of the wall's scaled values ``V`` of a film model over ``(s, psi)`` [-].
+
+    Beyond :func:`shape_table` (``eps`` from 0.995 to ``1 - 1e-5``, held beyond): the
+    values ``V`` and the inner direction ``psi`` of
+    :func:`jointwear.lubrication.mobility.to_wall`, in which the film close to the wall
+    is bounded and smooth; the long bearing's from its closed form
+    (:func:`long_shape_scalar`), the finite one's from
+    :func:`jointwear.lubrication.mobility.wall_table` at its nodes. One spline per
+    component, as :func:`shape_table`.
+
+    Parameters
+    ----------
+    model : str
+        ``"long"``, ``"finite"`` or ``"finite-reynolds"``.
+    ratio : float
+        ``L / D`` [-].
+    """
+    log_gap = np.linspace(LOG_GAP_MAX, WALL_LOG_GAP_MAX, WALL_LOG_GAP_NODES)
+    pad = 3
+    step = 2.0 * np.pi / WALL_DIRECTION_NODES
+    inner = -np.pi + step * np.arange(-pad, WALL_DIRECTION_NODES + pad)
+    if model in FINITE_CAVITATION:
+        table = wall_table(ratio, FINITE_CAVITATION[model])
+        nodes = np.stack(np.broadcast_arrays(log_gap[:, None], wrap_to_pi(inner)[None, :]), -1)
+        scaled = np.moveaxis(table(nodes), -1, 0)
+    else:
+        eps = 1.0 - 10.0 ** -log_gap[:, None]
+        direction, size = wall_motion(eps, inner[None, :])
+        shape = np.vectorize(long_shape_scalar)(eps, direction, ratio)
+        scaled = to_wall(np.stack(shape), eps, size)
+    return (
+        RectBivariateSpline(log_gap, inner, scaled[0]),
+        RectBivariateSpline(log_gap, inner, scaled[1]),
+    )
+
+
+def wrap_to_pi(angle: ArrayLike) -> FloatArray:
+    """``angle`` wrapped to ``[-pi, pi)`` [rad]."""
+    return np.remainder(np.asarray(angle, float) + np.pi, 2.0 * np.pi) - np.pi
+
+
+def long_shape_scalar(eps: float, beta: float, ratio: float) -> tuple[float, float]:
+    """``G(eps, beta; L/D)`` of the long bearing in closed form, for one state [-].
+
+    :func:`jointwear.lubrication.film.long_shape_near_wall` with
+    :func:`jointwear.mechanism.impact.film.long_bearing` (the scalar form of
+    :func:`jointwear.lubrication.film.long_bearing_force` that the compiled kernel runs
+    too).
+
+    Parameters
+    ----------
+    eps : float
+        Eccentricity ratio [-].
+    beta : float
+        Direction of the motion [rad].
+    ratio : float
+        ``L / D`` [-].
+    """
+    return long_shape_near_wall(eps, beta, ratio, long_bearing)
+
+
+def wall_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tuple[float, float]]:
+    """``G(eps, beta)`` beyond ``eps = 0.995`` for one state, from :func:`wall_shape_table` [-].
+
+    The operations of the compiled kernel's ``shape_along`` for the wall's table; the
+    long bearing in closed form where the pin leaves the wall (:data:`LEAVING_WALL`).
+    """
+    knots = [(*spline.tck, *spline.degrees) for spline in wall_shape_table(model, ratio)]
+    long = model == "long"
+
+    def shape(eps: float, beta: float) -> tuple[float, float]:
+        log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), LOG_GAP_MAX), WALL_LOG_GAP_MAX)
+        one_minus = 1.0 - eps * eps
+        root = math.sqrt(one_minus)
+        wedge, squeeze = root * math.cos(beta), math.sin(beta)
+        inner = math.atan2(squeeze, wedge)
+        if long and -math.pi + LEAVING_WALL < inner < -LEAVING_WALL:
+            return long_shape_scalar(eps, beta, ratio)
+        size = math.hypot(wedge, squeeze)
+        radial, tangential = (float(bisplev(log_gap, inner, tck)) for tck in knots)
+        return size * radial / (one_minus * root), size * tangential / one_minus
+
+    return shape
+
+
 def table_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tuple[float, float]]:
     """:func:`film_shape` of a tabulated model for one state (:func:`scipy.interpolate.bisplev`)."""
     splines = shape_table(model, ratio)
     knots = [(*spline.tck, *spline.degrees) for spline in splines]
+    near_wall = wall_shape_scalar(model, ratio)
 
     def shape(eps: float, beta: float) -> tuple[float, float]:
+        if eps > TABLE_EDGE:
+            return near_wall(eps, beta)
         log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), LOG_GAP_MAX)
         wrapped = math.remainder(beta, 2.0 * math.pi)
         scale = (1.0 - eps * eps) ** 2.5
@@ -307,11 +416,34 @@ def film_shape(model: str, ratio: float) -> Callable[[ArrayLike, ArrayLike], Flo
         log_gap = np.clip(-np.log10(np.maximum(1.0 - eps_, 1e-300)), 0.0, LOG_GAP_MAX)
         wrapped = np.remainder(beta_ + np.pi, 2.0 * np.pi) - np.pi
         scale = (1.0 - eps_ * eps_) ** 2.5
-        return np.stack(
+        out = np.stack(
             [radial.ev(log_gap, wrapped) / scale, tangential.ev(log_gap, wrapped) / scale]
         )
+        near_wall = eps_ > TABLE_EDGE
+        if np.any(near_wall):
+            out[:, near_wall] = wall_shape(model, ratio, eps_[near_wall], beta_[near_wall])
+        return out
 
     return tabulated
+
+
+def wall_shape(model: str, ratio: float, eps: FloatArray, beta: FloatArray) -> FloatArray:
+    """``G(eps, beta)`` beyond ``eps = 0.995``, shape ``(2, n)`` [-].
+
+    From :func:`wall_shape_table` (the scaling of
+    :func:`jointwear.lubrication.mobility.to_wall`); the long bearing in closed form
+    where the pin leaves the wall (:data:`LEAVING_WALL`).
+    """
+    wall_radial, wall_tangential = wall_shape_table(model, ratio)
+    inner, size = wall_direction(eps, beta)
+    log_gap = np.clip(-np.log10(np.maximum(1.0 - eps, 1e-300)), LOG_GAP_MAX, WALL_LOG_GAP_MAX)
+    values = np.stack([wall_radial.ev(log_gap, inner), wall_tangential.ev(log_gap, inner)])
+    out = from_wall(values, eps, size)
+    if model == "long":
+        leaving = (-np.pi + LEAVING_WALL < inner) & (inner < -LEAVING_WALL)
+        for k in np.flatnonzero(leaving):
+            out[:, k] = long_shape_scalar(float(eps[k]), float(beta[k]), ratio)
+    return out
 
 
 class OrbitSolver:
@@ -391,8 +523,12 @@ class OrbitSolver:
         self.memory = np.array([math.nan, math.nan])
 
     def kernel_arguments(self) -> tuple[Any, ...]:
-        """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity."""
-        codes = {"short": 0.0, "long": 1.0, "finite": 1.0, "finite-reynolds": 1.0}
+        """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity.
+
+        ``tables``: knots and coefficients of :func:`shape_table` and of
+        :func:`wall_shape_table` (``tx, ty, radial, tangential`` each).
+        """
+        codes = {"short": 0.0, "long": 3.0, "finite": 1.0, "finite-reynolds": 1.0}
         joint = (
             self.clearance,
             self.roughness,
@@ -406,11 +542,12 @@ class OrbitSolver:
         asperity = (np.ascontiguousarray(spline.x), np.ascontiguousarray(spline.c[:, :, None]))
         if self.model == "short":
             unused = np.zeros(8)
-            tables = (unused, unused, unused, unused)
+            tables = (unused,) * 8
         else:
             radial, tangential = shape_table(self.model, self.ratio)
-            tx, ty, radial_c = radial.tck
-            tables = (tx, ty, radial_c, tangential.tck[2])
+            tables = (*radial.tck, tangential.tck[2])
+            radial, tangential = wall_shape_table(self.model, self.ratio)
+            tables += (*radial.tck, tangential.tck[2])
         tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
         return joint, asperity, self.memory, tables, DIRECTION_NODES
 

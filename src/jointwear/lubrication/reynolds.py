@@ -88,7 +88,9 @@ def inverse_sommerfeld_angle(gamma: FloatArray, eps: float) -> FloatArray:
     return gamma + 2.0 * np.arctan(b * np.sin(gamma) / (1.0 - b * np.cos(gamma)))
 
 
-def film_system(eps: float, half_length: float) -> tuple[FloatArray, FloatArray, csc_matrix]:
+def film_system(
+    eps: float, half_length: float, grid: tuple[int, int] | None = None
+) -> tuple[FloatArray, FloatArray, csc_matrix]:
     """The finite-difference Reynolds operator of the bushing's half on the grid.
 
     Conservative second-order stencil on ``ANGLE_NODES`` angles uniform in
@@ -101,6 +103,9 @@ def film_system(eps: float, half_length: float) -> tuple[FloatArray, FloatArray,
         Eccentricity ratio [-].
     half_length : float
         ``L / (2R)`` [-].
+    grid : tuple of int
+        Angle nodes and axial cells [-] (a finer grid for films close to the wall);
+        ``ANGLE_NODES`` and ``AXIAL_CELLS`` if None.
 
     Returns
     -------
@@ -109,8 +114,9 @@ def film_system(eps: float, half_length: float) -> tuple[FloatArray, FloatArray,
         operator ``A`` with ``A Pi = (d theta / d gamma) f`` the discrete form of
         ``div(H^3 grad Pi) = f`` (rows: axial index major) [-].
     """
-    step = 2.0 * np.pi / ANGLE_NODES
-    gamma = step * np.arange(ANGLE_NODES)
+    angle_nodes, axial_cells = grid or (ANGLE_NODES, AXIAL_CELLS)
+    step = 2.0 * np.pi / angle_nodes
+    gamma = step * np.arange(angle_nodes)
     root = np.sqrt(1.0 - eps * eps)
 
     def stretch(g: FloatArray) -> FloatArray:  # d theta / d gamma
@@ -122,20 +128,22 @@ def film_system(eps: float, half_length: float) -> tuple[FloatArray, FloatArray,
     mid = gamma + 0.5 * step
     flux = film(mid) ** 3 / stretch(mid) / step**2  # at gamma_{i+1/2}
     around = diags(-(flux + np.roll(flux, 1))) + diags(flux[:-1], 1) + diags(flux[:-1], -1)
-    around = around + diags([flux[-1]], ANGLE_NODES - 1) + diags([flux[-1]], 1 - ANGLE_NODES)
-    dz = half_length / AXIAL_CELLS
+    around = around + diags([flux[-1]], angle_nodes - 1) + diags([flux[-1]], 1 - angle_nodes)
+    dz = half_length / axial_cells
     axial = diags(
-        [-2.0 * np.ones(AXIAL_CELLS), np.ones(AXIAL_CELLS - 1), np.ones(AXIAL_CELLS - 1)],
+        [-2.0 * np.ones(axial_cells), np.ones(axial_cells - 1), np.ones(axial_cells - 1)],
         [0, 1, -1],
     )
     axial = axial.tolil()
     axial[0, 1] = 2.0  # symmetric about the middle of the bushing
     weight = stretch(gamma) * film(gamma) ** 3 / dz**2
-    matrix = kron(identity(AXIAL_CELLS), around) + kron(axial.tocsr(), diags(weight))
+    matrix = kron(identity(axial_cells), around) + kron(axial.tocsr(), diags(weight))
     return inverse_sommerfeld_angle(gamma, eps), stretch(gamma), matrix.tocsc()
 
 
-def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, FloatArray, FloatArray]:
+def reynolds_solutions(
+    eps: float, half_length: float, grid: tuple[int, int] | None = None
+) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Full-film solutions ``Pi_w`` (``beta = 0``) and ``Pi_s`` (``beta = pi/2``) on the grid.
 
     Parameters
@@ -144,6 +152,8 @@ def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, Floa
         Eccentricity ratio [-].
     half_length : float
         ``L / (2R)`` [-].
+    grid : tuple of int
+        Angle nodes and axial cells [-] (:func:`film_system`).
 
     Returns
     -------
@@ -151,27 +161,37 @@ def reynolds_solutions(eps: float, half_length: float) -> tuple[FloatArray, Floa
         ``theta`` of the angle nodes [rad], and ``Pi_w``, ``Pi_s`` of shape
         ``(AXIAL_CELLS + 1, ANGLE_NODES)`` from the middle (row 0) to the end [-].
     """
-    theta, stretch, matrix = film_system(eps, half_length)
+    angle_nodes, axial_cells = grid or (ANGLE_NODES, AXIAL_CELLS)
+    theta, stretch, matrix = film_system(eps, half_length, grid)
     solver = splu(matrix)
     fields = []
     for source in (-np.sin(theta), np.cos(theta)):
-        solution = solver.solve(np.tile(stretch * source, AXIAL_CELLS))
-        field = np.zeros((AXIAL_CELLS + 1, ANGLE_NODES))
-        field[:-1] = solution.reshape(AXIAL_CELLS, ANGLE_NODES)
+        solution = solver.solve(np.tile(stretch * source, axial_cells))
+        field = np.zeros((axial_cells + 1, angle_nodes))
+        field[:-1] = solution.reshape(axial_cells, angle_nodes)
         fields.append(field)
     return theta, fields[0], fields[1]
 
 
-def tabulated_forces(eps: float, half_length: float, directions: FloatArray) -> FloatArray:
-    """``G_r, G_t`` of the positive film for every direction ``beta``, shape ``(2, n)`` [-]."""
-    theta, wedge, squeeze = reynolds_solutions(eps, half_length)
-    step = 2.0 * np.pi / ANGLE_NODES
-    stretch = np.sqrt(1.0 - eps * eps) / (1.0 - eps * np.cos(step * np.arange(ANGLE_NODES)))
+def tabulated_forces(
+    eps: float,
+    half_length: float,
+    directions: FloatArray,
+    grid: tuple[int, int] | None = None,
+) -> FloatArray:
+    """``G_r, G_t`` of the positive film for every direction ``beta``, shape ``(2, n)`` [-].
+
+    ``grid``: angle nodes and axial cells (:func:`film_system`; the usual if None) [-].
+    """
+    angle_nodes, axial_cells = grid or (ANGLE_NODES, AXIAL_CELLS)
+    theta, wedge, squeeze = reynolds_solutions(eps, half_length, grid)
+    step = 2.0 * np.pi / angle_nodes
+    stretch = np.sqrt(1.0 - eps * eps) / (1.0 - eps * np.cos(step * np.arange(angle_nodes)))
     pressure = (
         np.cos(directions)[:, None, None] * wedge + np.sin(directions)[:, None, None] * squeeze
     )
     positive = np.maximum(pressure, 0.0) * stretch * step
-    axial = np.linspace(0.0, half_length, AXIAL_CELLS + 1)
+    axial = np.linspace(0.0, half_length, axial_cells + 1)
     over_angle = np.stack([positive @ np.cos(theta), positive @ np.sin(theta)])
     return 2.0 * simpson(over_angle, x=axial, axis=-1)
 
