@@ -249,25 +249,16 @@ def test_the_secant_jacobian_of_an_affine_cycle_map_is_its_own():
     assert secant_jacobian(along[:3], along[1:]) is None
 
 
-def paper_pin_cycle() -> tuple[OrbitSolver, tuple, np.ndarray]:
-    """The paper's Table 3 rod-slider pin, finite length, ISO VG 68 at 60 degC (lambda ~ 0.2):
-    its solver, the arguments of :func:`periodic_orbit` and the first guess."""
+def paper_pin_cycle(overrides: list[str]) -> tuple[OrbitSolver, tuple, np.ndarray]:
+    """The paper's Table 3 rod-slider pin with the film of ``overrides``: its solver, the
+    arguments of :func:`periodic_orbit` and the first guess."""
     from pathlib import Path
 
     from jointwear import Simulation, load_config
     from jointwear.contact.lubricated import film_speeds
 
     config = Path(__file__).resolve().parents[2] / "examples/paper/table3_winkler_120rpm.toml"
-    simulation = Simulation(
-        load_config(
-            config,
-            overrides=[
-                "lubrication.model=finite-length",
-                "lubrication.lubricant=iso-vg-68",
-                "lubrication.temperature=60 degC",
-            ],
-        )
-    )
+    simulation = Simulation(load_config(config, overrides=overrides))
     lubrication, cycle = simulation.solver.lubrication, simulation.load_cycle
     rate, _ = film_speeds(cycle)
     arguments = (
@@ -282,12 +273,15 @@ def paper_pin_cycle() -> tuple[OrbitSolver, tuple, np.ndarray]:
 
 
 def test_the_secant_search_finds_the_plain_root_finders_orbit(monkeypatch):
-    """The finite-length pin in the mixed regime: the orbit from the plain cycles'
-    secant Jacobian, stopped where a cycle closes within a twentieth of the tolerance,
-    is the one the root finder finds with its forward differences and its own step
-    tolerance, within the orbit's tolerance at every step, in fewer cycles; and one
-    more cycle from its start, integrated afresh, closes within the tolerance."""
-    solver, arguments, guess = paper_pin_cycle()
+    """A short-bearing pin whose plain cycles contract slowly (0.03 Pa s: the root
+    finder runs): the orbit from the plain cycles' secant Jacobian, stopped where a cycle
+    closes within a twentieth of the tolerance, is the one the root finder finds with its
+    forward differences and its own step tolerance, within the orbit's tolerance at every
+    step, in fewer cycles; and one more cycle from its start, integrated afresh, closes
+    within the tolerance."""
+    solver, arguments, guess = paper_pin_cycle(
+        ["lubrication.model=short-bearing", "lubrication.viscosity=0.03 Pa*s"]
+    )
     fast = periodic_orbit(*arguments, guess)
     with monkeypatch.context() as patch:
         patch.setattr(orbit_module, "SECANT_CONDITION", 0.0)
@@ -295,7 +289,6 @@ def test_the_secant_search_finds_the_plain_root_finders_orbit(monkeypatch):
         plain = periodic_orbit(*arguments, guess)
     floor = solver.roughness / solver.clearance
     allowed = 1e-3 * max(1.0 - fast.eccentricity_ratio.max(), floor)
-    assert 1.0 - fast.eccentricity_ratio.max() < floor  # within the roughness: the strict case
     shift = np.hypot(
         fast.eccentricity_x - plain.eccentricity_x, fast.eccentricity_y - plain.eccentricity_y
     )
