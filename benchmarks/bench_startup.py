@@ -16,26 +16,27 @@ Every process starts from bytecode, as an installed package does (``benchlib.env
 The processes share a memo of quantity texts of their own (``jointwear.quantity_memo``, in
 the run's temporary folder), filled by the warm-up runs: a run of the paper's config then
 imports no pint, and no dask where dask is installed. The row ``no memo`` runs with the
-memo turned off (``JOINTWEAR_CACHE_DIR=''``), as a config's first run reads its texts.
+memo turned off (``JOINTWEAR_CACHE_DIR=''``): every text read by pint. The row ``first
+run, units read before`` starts each run from a memo of the paper's units alone (its
+texts dropped, copied in first): a config's first run in units read before.
 
-Measured in one run per install and baseline, ``--repeat 7``, on the shared 2-core
-machine (load average 2-6), ratio = median of the run-by-run ratios; "before" is the
-``no memo`` row (every text read by pint, as before the memo):
+Measured in one run per install, ``--baseline fd952ba --repeat 7``, on the shared 2-core
+machine under heavy load (load average 6-8), ratio = median of the run-by-run ratios:
 
 ==========================================  ===============  ===============
 one revolution, paper case                  no dask          dask installed
 ==========================================  ===============  ===============
-plain runs against fd952ba, before          1.00             1.18
-plain runs against fd952ba, now             0.69-0.76        0.76-0.79
-``--out DIR --no-plots`` against fd952ba    0.96             1.41
-plain runs against 502034c                  0.72-0.76        0.65-0.68
-nlcp run, median wall now / fd952ba         0.692 / 0.902 s  1.185 / 1.404 s
+plain runs (memo of the texts)              0.68-0.83        0.78-0.85
+``--out DIR --no-plots``                    0.54             0.55
+first run, units read before                0.64             0.76
+no memo                                     0.96             1.22
+nlcp run, median wall now / fd952ba         1.260 / 1.438 s  1.378 / 1.696 s
 ==========================================  ===============  ===============
 
-(fd952ba hid dask from pint and xarray by editing ``sys.modules``; 502034c is the code
-just before the memo.) A ``--out`` run where dask is installed stays at 1.41: xarray
-itself imports ``dask.array`` when it builds a Dataset, ``distributed`` when it writes
-netCDF and pint (with ``dask.base``) when it builds an index. docs/performance.md,
+(fd952ba hid dask from pint and xarray by editing ``sys.modules``.) A ``--out`` run
+writes a single joint's result.nc with h5netcdf from the plain arrays
+(``jointwear.results.netcdf_file``): no xarray, pandas or dask. With the memo off, pint
+imports ``dask.base`` where dask is installed: the one row above 1.05. docs/performance.md,
 *Start-up*, has every row.
 """
 
@@ -64,9 +65,13 @@ from benchlib import (
 sys.path.insert(0, str(SRC))
 from jointwear.contact.solver import COMPILED_KERNEL_SOLVES
 from jointwear.quantity_memo import ENVIRONMENT as MEMO
+from jointwear.quantity_memo import FILE_NAME
 
 MODELS = ("nlcp", "winkler", "asymmetric-winkler", "hertz")
-HEAVY = ("pint", "numba", "xarray", "pandas", "dask", "dask.array", "distributed", "matplotlib")
+HEAVY = (
+    "pint", "numba", "xarray", "pandas", "dask", "dask.array", "distributed", "h5py",
+    "matplotlib",
+)  # fmt: skip
 #: target of a one-revolution run, whole process [s]
 TARGET = 0.8
 
@@ -97,6 +102,30 @@ def heavy_modules(command: list[str], env: dict[str, str]) -> str:
         )  # fmt: skip
         loaded = set(json.loads(report.read_text())) if report.exists() else set()
     return ", ".join(m for m in HEAVY if m in loaded) or "none"
+
+
+def units_memo(out: Path) -> None:
+    """A memo of the units of the paper's config and none of its texts, in ``out``.
+
+    Filled by a run of the paper's config into a memo folder of its own; its texts are
+    then dropped, as if the units had been read in other texts.
+    """
+    folder = out / "memo-of-units"
+    subprocess.run(run_command(), env=environment(**{MEMO: str(folder)}), capture_output=True)
+    data = json.loads((folder / FILE_NAME).read_text())
+    if not data["units"]:
+        raise SystemExit("the run remembered no units")
+    (out / "units-only.json").write_text(json.dumps({**data, "texts": {}}))
+
+
+def first_run_script(out: Path) -> str:
+    """A run of the paper's config from the memo of its units alone (:func:`units_memo`)."""
+    return (
+        f"import shutil, pathlib\nfolder = pathlib.Path({str(out / 'units-memo')!r})\n"
+        f"folder.mkdir(exist_ok=True)\n"
+        f"shutil.copyfile({str(out / 'units-only.json')!r}, folder / {FILE_NAME!r})\n"
+        f"from jointwear.cli import main\nmain({run_command()[3:]!r})"
+    )
 
 
 def main() -> None:
@@ -140,13 +169,23 @@ def main() -> None:
     memo = {MEMO: str(out / "memo")}
     no_memo = f"run, nlcp, no memo ({MEMO}='')"
     cases[no_memo] = run_command()
+    # a config's first run where its units were read before (in other texts): every run
+    # starts from a memo of the paper's units alone, copied in first (~1 ms)
+    units_only = "run, nlcp, first run, units read before"
+    cases[units_only] = [sys.executable, "-c", first_run_script(out)]
     baseline = checkout(args.baseline) if args.baseline else None
     commands = {}
+    units_memo(out)
     for name, command in cases.items():
         memo_env = {MEMO: ""} if name == no_memo else memo
+        if name == units_only:
+            memo_env = {MEMO: str(out / "units-memo")}
         commands[name] = (command, environment(**memo_env))
         if baseline is not None:
-            commands[f"{name} [baseline]"] = (command, environment(baseline, **memo_env))
+            # a memo folder of its own: a memo of other code is read as empty and replaced,
+            # so two codes taking turns on one memo would each find the other's
+            own = {MEMO: str(out / "memo-baseline")} if memo_env is memo else memo_env
+            commands[f"{name} [baseline]"] = (command, environment(baseline, **own))
     commands[f"run, nlcp, {above} revolutions every 1, JOINTWEAR_NO_NUMBA=1"] = (
         at_threshold,
         environment(JOINTWEAR_NO_NUMBA="1", **memo),

@@ -17,7 +17,7 @@ import pytest
 
 from jointwear import quantity_memo
 from jointwear.errors import ConfigError
-from jointwear.units import to_si
+from jointwear.units import to_si, to_si_unit
 
 SRC = Path(__file__).resolve().parents[1] / "src"
 PAPER = Path(__file__).resolve().parent / "data" / "paper_joint.toml"
@@ -98,10 +98,90 @@ def test_refused_texts_are_not_remembered_and_keep_their_messages():
 
 def test_a_text_remembered_for_one_kind_is_converted_by_pint_for_another():
     assert to_si("3 mm", "length") == pytest.approx(3e-3)
-    assert quantity_memo.has_unit("3 mm")
+    # (the text itself, or its unit where pint read "mm" in another text before)
+    assert quantity_memo.has_unit("3 mm") or quantity_memo.knows_unit("mm")
     with pytest.raises(ConfigError, match="has dimension"):
         to_si("3 mm", "mass", "k")
     # the rate's radian power is part of what was asked: rpm in rad/s and in Hz differ
     assert to_si("60 rpm", "angular_velocity") == pytest.approx(2 * 3.141592653589793)
     assert to_si("60 rpm", "frequency") == pytest.approx(1.0)
     assert to_si("60 rpm", "angular_velocity") == pytest.approx(2 * 3.141592653589793)
+
+
+#: numbers written as a config might write them, read by pint and by the memo of units
+NUMBERS = [
+    "70", "7.45", "-3", "+2.5", "0.05", ".5", "5.", "1e-3", "2E7", "5.05e-13", "120",
+    "0.1", "0.3", "1.1", "3.3333333333333335", "123456789012345678901", "9.81", "-0.0",
+    "6.02214076e23", "1e-300",
+]  # fmt: skip
+#: (unit, how it is converted): to_si with a kind, or to_si_unit with an SI unit
+UNITS = [
+    ("mm", "length"), ("um", "length"), ("inch", "length"), ("rpm", "angular_velocity"),
+    ("rpm", "frequency"), ("Hz", "angular_velocity"), ("cycle/min", "frequency"),
+    ("deg/s", "angular_velocity"), ("deg", "angle"), ("GPa", "pressure"), ("MPa", "pressure"),
+    ("m^2/N", "wear_coefficient"), ("kg/m^3", "density"), ("lbf", "force"),
+    ("N/m", "stiffness"), ("m/s^2", "acceleration"), ("N/mm**1.5", "unit:N/m**1.5"),
+]  # fmt: skip
+
+CONVERT = (
+    "import json, sys\n"
+    "from jointwear.units import to_si, to_si_unit\n"
+    "def convert(text, how):\n"
+    "    return to_si_unit(text, how[5:]) if how.startswith('unit:') else to_si(text, how)\n"
+    "texts = json.loads(sys.argv[1])\n"
+    "values = [convert(text, how) for text, how in texts]\n"
+    "print(json.dumps({'values': [repr(v) for v in values], 'pint': 'pint' in sys.modules}))\n"
+)
+
+
+def convert_all(texts: list[tuple[str, str]], memo: Path | str) -> dict:
+    path = os.pathsep.join([str(SRC), os.environ.get("PYTHONPATH", "")])
+    env = {**os.environ, "PYTHONPATH": path, quantity_memo.ENVIRONMENT: str(memo)}
+    done = subprocess.run(
+        [sys.executable, "-c", CONVERT, json.dumps(texts)],
+        env=env, capture_output=True, text=True, timeout=120,
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+def test_new_numbers_in_units_read_before_convert_without_pint_to_pints_bits(tmp_path):
+    # each unit read once, in a text of another number (pint reads it, the memo keeps it)
+    primed = convert_all([(f"1.5 {unit}", how) for unit, how in UNITS], tmp_path)
+    assert primed["pint"]
+    texts = [(f"{number} {unit}", how) for unit, how in UNITS for number in NUMBERS]
+    memo = convert_all(texts, tmp_path)
+    assert not memo["pint"]
+    # pint alone, with no memo: the same bits (repr of a float reads back exactly)
+    assert memo["values"] == convert_all(texts, "")["values"]
+    # texts of other shapes go to pint, whatever it makes of them ("007 mm" is 0 m)
+    odd = [("007 mm", "length"), ("1_000 mm", "length"), ("1e5mm", "length"),
+           ("2 mm * 3", "length"), ("5 mm / 2", "length"), ("1.5 1/min", "frequency")]  # fmt: skip
+    assert convert_all(odd, tmp_path)["values"] == convert_all(odd, "")["values"]
+
+
+def test_a_unit_read_before_keeps_pints_refusals_and_messages():
+    assert to_si("70 mm", "length") == pytest.approx(0.07)
+    assert quantity_memo.knows_unit("mm")
+    # another dimension, a literal pint cannot read, a number beyond any value, too many
+    # digits: pint's answers, with their messages
+    with pytest.raises(ConfigError, match="joint.clearance: '75 mm' has dimension"):
+        to_si("75 mm", "mass", "joint.clearance")
+    with pytest.raises(ConfigError, match="cannot read '0x10 mm' as a quantity"):
+        to_si("0x10 mm", "length", "joint.clearance")
+    with pytest.raises(ConfigError, match="must be finite, got '1e400 mm'"):
+        to_si("1e400 mm", "length", "joint.clearance")
+    with pytest.raises(ConfigError, match="'1e104 mm' is beyond any physical value"):
+        to_si("1e104 mm", "length", "joint.clearance")
+    with pytest.raises(ConfigError, match="a number of 41 digits"):
+        to_si("1" * 41 + " mm", "length", "joint.clearance")
+    # a number in a unit is no bare number, whatever its size
+    assert to_si("1500 mm", "length", "joint.pin_radius", bare_limit=1.0) == pytest.approx(1.5)
+
+
+def test_a_unit_with_an_offset_is_not_kept():
+    with pytest.raises(ConfigError):
+        to_si_unit("20 degC", "K", "lubrication.temperature")
+    assert to_si_unit("20 kelvin", "K") == 20.0
+    assert quantity_memo.knows_unit("kelvin")
+    assert not quantity_memo.knows_unit("degC")

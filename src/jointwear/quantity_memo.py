@@ -7,6 +7,13 @@ is remembered here with the SI magnitude pint gave, so that a process that reads
 texts read before imports no pint. The memo holds pint's answers, nothing computed
 otherwise: a text not in it, and every text that is refused, goes to pint.
 
+Besides whole texts, the memo keeps the unit of a text of one number and a unit
+(``"70 mm"``: ``mm``) with pint's factor into the SI unit (:func:`recall_unit`), where
+pint's answer for that text was the number times that factor, bit for bit
+(:mod:`jointwear.units` checks it before it remembers one): a new number in a unit read
+before (``"75 mm"``) is then converted without pint, as pint converts it (the number
+times its cached factor). Units with an offset (``degC``) are not kept.
+
 The memo is one JSON file in the user's cache folder (:func:`folder`; the environment
 variable :data:`ENVIRONMENT` names another folder, an empty value turns the memo off).
 It is stamped with what the answers depend on: the source of :mod:`jointwear.units`
@@ -27,7 +34,18 @@ from functools import cache
 from importlib.util import find_spec
 from pathlib import Path
 
-__all__ = ["ENVIRONMENT", "MAX_TEXTS", "folder", "has_unit", "recall", "remember", "stamp"]
+__all__ = [
+    "ENVIRONMENT",
+    "MAX_TEXTS",
+    "folder",
+    "has_unit",
+    "knows_unit",
+    "recall",
+    "recall_unit",
+    "remember",
+    "remember_unit",
+    "stamp",
+]
 
 #: environment variable naming the memo's folder (empty: no memo)
 ENVIRONMENT = "JOINTWEAR_CACHE_DIR"
@@ -70,19 +88,26 @@ def stamp() -> str:
 
 
 @cache
+def _memo() -> dict[str, dict]:
+    """The memo of this process: ``texts`` (text -> {target: SI magnitude}) and ``units``
+    (unit text -> {target: [factor, turn factor]})."""
+    where = folder()
+    data = None
+    if where is not None:
+        try:
+            data = json.loads((where / FILE_NAME).read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            data = None
+    if not isinstance(data, dict) or data.get("stamp") != stamp():
+        data = {}
+    return {
+        part: data[part] if isinstance(data.get(part), dict) else {} for part in ("texts", "units")
+    }
+
+
 def _texts() -> dict[str, dict[str, float]]:
     """The remembered texts of this process: text -> {target: SI magnitude}."""
-    where = folder()
-    if where is None:
-        return {}
-    try:
-        data = json.loads((where / FILE_NAME).read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return {}
-    if not isinstance(data, dict) or data.get("stamp") != stamp():
-        return {}
-    texts = data.get("texts")
-    return texts if isinstance(texts, dict) else {}
+    return _memo()["texts"]
 
 
 def recall(text: str, target: str) -> float | None:
@@ -108,6 +133,32 @@ def recall(text: str, target: str) -> float | None:
     return float(value) if math.isfinite(value) else None
 
 
+def recall_unit(unit: str, target: str) -> tuple[float, float] | None:
+    """pint's factor of ``unit`` into ``target``, and the turn factor of a rate, if kept.
+
+    Parameters
+    ----------
+    unit : str
+        The unit text of a quantity text of one number and a unit, e.g. ``"mm"``.
+    target : str
+        The conversion (see :func:`recall`).
+
+    Returns
+    -------
+    tuple of float or None
+        ``(factor, turns)``: the SI magnitude of a number ``x`` in ``unit`` is
+        ``x * factor * turns`` [SI unit of ``target``].
+    """
+    known = _memo()["units"].get(unit)
+    pair = known.get(target) if isinstance(known, dict) else None
+    if not isinstance(pair, list) or len(pair) != 2:
+        return None
+    if any(isinstance(x, bool) or not isinstance(x, int | float) for x in pair):
+        return None
+    factor, turns = float(pair[0]), float(pair[1])
+    return (factor, turns) if math.isfinite(factor) and math.isfinite(turns) else None
+
+
 def has_unit(text: str) -> bool:
     """Whether pint read ``text`` before as a quantity with a unit (not a bare number).
 
@@ -117,6 +168,18 @@ def has_unit(text: str) -> bool:
         The quantity text as given.
     """
     known = _texts().get(text)
+    return isinstance(known, dict) and bool(known)
+
+
+def knows_unit(unit: str) -> bool:
+    """Whether pint read ``unit`` before as the unit of a quantity text (not unitless).
+
+    Parameters
+    ----------
+    unit : str
+        The unit text, e.g. ``"mm"``.
+    """
+    known = _memo()["units"].get(unit)
     return isinstance(known, dict) and bool(known)
 
 
@@ -132,19 +195,45 @@ def remember(text: str, target: str, magnitude: float) -> None:
     magnitude : float
         pint's answer [SI unit of ``target``].
     """
+    _keep("texts", text, target, magnitude)
+
+
+def remember_unit(unit: str, target: str, factor: float, turns: float) -> None:
+    """Keep pint's factor of ``unit`` into ``target`` for later processes.
+
+    Only for a unit whose quantity texts pint converts as the number times ``factor``
+    (:mod:`jointwear.units` checks it).
+
+    Parameters
+    ----------
+    unit : str
+        The unit text.
+    target : str
+        The conversion (see :func:`recall`).
+    factor : float
+        pint's magnitude of one ``unit`` in ``target`` [SI unit of ``target``].
+    turns : float
+        The factor of a rate between turns and radians (1 if none) [-].
+    """
+    _keep("units", unit, target, [factor, turns])
+
+
+def _keep(part: str, text: str, target: str, answer: float | list[float]) -> None:
+    """Add an answer to the memo and write it (no error if the folder is not writable)."""
     where = folder()
     if where is None:
         return
     with _lock:
-        texts = _texts()
-        if not isinstance(texts.get(text), dict):
-            texts[text] = {}
-        texts[text][target] = magnitude
-        while len(texts) > MAX_TEXTS:
-            del texts[next(iter(texts))]
+        memo = _memo()
+        entries = memo[part]
+        if not isinstance(entries.get(text), dict):
+            entries[text] = {}
+        entries[text][target] = answer
+        while len(entries) > MAX_TEXTS:
+            del entries[next(iter(entries))]
         try:
             where.mkdir(parents=True, exist_ok=True)
-            _write(where, {"stamp": stamp(), "texts": texts})
+            _write(where, {"stamp": stamp(), **memo})
         except (OSError, ValueError):
             pass
 

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import io
 import math
+import re
 import tokenize
 from functools import cache
 from typing import TYPE_CHECKING, Any
@@ -150,6 +151,33 @@ BARE_LIMITS: dict[str, tuple[float, str]] = {
 }
 
 
+#: a quantity text of one number and a unit after a space (``"70 mm"``, ``"-2e7 N/m**1.5"``):
+#: a decimal literal as Python's tokenizer (and so pint) reads it, the unit from a letter on
+_NUMBER_AND_UNIT = re.compile(
+    r"(?P<number>[+-]?(?:(?:0|[1-9][0-9]*)(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)"
+    r"\s+(?P<unit>[A-Za-z_].*)",
+    re.DOTALL,
+)
+
+
+def _number_and_unit(text: str) -> tuple[str, str] | None:
+    """The number and the unit of a text of one number and a unit, None for other texts."""
+    text = text.strip()
+    match = _NUMBER_AND_UNIT.fullmatch(text)
+    if match is None or len(text) > MAX_EXPRESSION:
+        return None
+    number = match["number"]
+    if sum(c.isdigit() for c in number) > MAX_DIGITS:
+        return None
+    return number, match["unit"]
+
+
+def _has_known_unit(text: str) -> bool:
+    """Whether ``text`` is a number in a unit pint read before (a quantity with a unit)."""
+    parts = _number_and_unit(text)
+    return parts is not None and quantity_memo.knows_unit(parts[1])
+
+
 @cache
 def _unit(text: str) -> pint.Unit:
     return registry().Unit(text)
@@ -208,7 +236,7 @@ def bare_number(value: Any) -> float | None:
     if isinstance(value, int | float):
         number = float(value) if abs(value) <= MAX_MAGNITUDE else math.inf
     elif isinstance(value, str):
-        if quantity_memo.has_unit(value):  # pint read it with a unit before
+        if quantity_memo.has_unit(value) or _has_known_unit(value):  # pint read its unit before
             return None
         try:
             quantity = parse_quantity(value)
@@ -502,6 +530,8 @@ def _magnitude(value: Any, target: str, expected: str, key: str, angle_power: in
         raise ConfigError(f"{key}: expected a number or a quantity string, got {shown(value)}")
     conversion = f"{target}|{'' if angle_power is None else angle_power}"
     known = quantity_memo.recall(value, conversion)
+    if known is None:
+        known = _known_unit_magnitude(value, conversion)
     if known is not None:
         return known
     quantity = parse_quantity(value, key)
@@ -510,30 +540,70 @@ def _magnitude(value: Any, target: str, expected: str, key: str, angle_power: in
     if quantity.unitless:
         # a bare number written as text ("7.5e-3") is SI, as a number would be
         return float(quantity.magnitude)
-    magnitude = _pint_magnitude(value, quantity, _unit(target), expected, key, angle_power)
+    unit = _unit(target)
+    magnitude, turns = _pint_magnitude(value, quantity, unit, expected, key, angle_power)
     if math.isfinite(magnitude) and abs(magnitude) <= MAX_MAGNITUDE:
         quantity_memo.remember(value, conversion, magnitude)
+        _remember_unit(value, quantity, unit, conversion, turns, magnitude)
     return magnitude
+
+
+def _known_unit_magnitude(value: str, conversion: str) -> float | None:
+    """The SI magnitude of a number in a unit pint read before for ``conversion``: the
+    number times pint's factor (and the turn factor of a rate), as pint computes it."""
+    parts = _number_and_unit(value)
+    scale = None if parts is None else quantity_memo.recall_unit(parts[1], conversion)
+    if parts is None or scale is None:
+        return None
+    factor, turns = scale
+    magnitude = float(parts[0]) * factor * turns
+    return magnitude if math.isfinite(magnitude) and abs(magnitude) <= MAX_MAGNITUDE else None
+
+
+def _remember_unit(
+    value: str, quantity: Any, unit: pint.Unit, conversion: str, turns: float, magnitude: float
+) -> None:
+    """Keep the unit of a text of one number and a unit with pint's factor into ``unit``,
+    where pint read the text as that number in that unit (no offset, no scale) and its
+    answer was the number times the factor (and ``turns``), bit for bit."""
+    parts = _number_and_unit(value)
+    if parts is None:
+        return
+    number, text = float(parts[0]), parts[1]
+    units = registry()
+    try:
+        own = units.Unit(text)
+        if quantity.units != own or quantity.magnitude != number:
+            return
+        if units.Quantity(0.0, own).to(unit).magnitude != 0.0:  # an offset (degC)
+            return
+        factor = float(units.Quantity(1, own).to(unit).magnitude)
+    except Exception:  # (pint reads the unit alone otherwise: nothing kept)
+        return
+    if number * factor * turns == magnitude:
+        quantity_memo.remember_unit(text, conversion, factor, turns)
 
 
 def _pint_magnitude(
     value: str, quantity: Any, unit: pint.Unit, expected: str, key: str, angle_power: int | None
-) -> float:
-    """pint's SI magnitude of a quantity with a unit (see :func:`_magnitude`)."""
+) -> tuple[float, float]:
+    """pint's SI magnitude of a quantity with a unit (see :func:`_magnitude`), and the
+    factor between turns and radians it holds (1 but for a rate of the other kind)."""
     if not quantity.check(unit.dimensionality):
         raise ConfigError(
             f"{key}: {shown(value)} has dimension {quantity.dimensionality}, expected {expected}"
         )
     magnitude = float(quantity.to(unit).magnitude)
     if angle_power is None:
-        return magnitude
+        return magnitude, 1.0
     given = _radian_power(quantity.units)
     if given not in (0, 1):
         raise ConfigError(
             f"{key}: {shown(value)} is not a rate of turns or of an angle, expected {expected}"
         )
     # rpm -> Hz: pint's 2π rad/min per revolution counted as 2π cycles/min; divide by 2π
-    return magnitude * _TURN ** (angle_power - given)
+    turns = _TURN ** (angle_power - given)
+    return magnitude * turns, turns
 
 
 def format_quantity(value: float, unit: str, digits: int = 6) -> str:

@@ -19,7 +19,9 @@ import numpy as np
 
 from jointwear.errors import DataError
 from jointwear.io import atomic_write, check_input
+from jointwear.results.contents import ResultContents
 from jointwear.results.joints import joint_datasets
+from jointwear.results.netcdf_file import contents_netcdf, writes_plainly
 from jointwear.tribology.metrics import PIN_METRICS, WEAR_METRICS
 
 if TYPE_CHECKING:
@@ -56,12 +58,29 @@ def _local_scheduler() -> contextlib.AbstractContextManager[Any]:
     return dask.config.set(scheduler="synchronous")
 
 
-def write_netcdf(dataset: xr.Dataset, path: str | Path) -> None:
-    """Write a result Dataset to netCDF-4 (h5netcdf) atomically."""
+def write_netcdf(dataset: xr.Dataset | ResultContents, path: str | Path) -> None:
+    """Write a result to netCDF-4 (h5netcdf) atomically.
+
+    A single joint's contents of plain numbers are written with h5netcdf as xarray
+    writes their Dataset (:mod:`jointwear.results.netcdf_file`), without importing
+    xarray; a Dataset, and other contents, with xarray.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset or ResultContents
+        The result.
+    path : path-like
+        The file.
+    """
     # serialised in memory, then written as plain bytes: a full disk fails in an ordinary
     # write (no HDF5 file handle is left open to be closed again at exit)
-    with _local_scheduler():
-        data = dataset.to_netcdf(engine="h5netcdf", invalid_netcdf=False)
+    if isinstance(dataset, ResultContents) and writes_plainly(dataset):
+        data: bytes | memoryview = contents_netcdf(dataset)
+    else:
+        if isinstance(dataset, ResultContents):
+            dataset = dataset.to_dataset()
+        with _local_scheduler():
+            data = dataset.to_netcdf(engine="h5netcdf", invalid_netcdf=False)
     with atomic_write(path, "wb") as handle:
         handle.write(data)
 
@@ -165,8 +184,11 @@ def config_of(dataset: xr.Dataset) -> Config:
     return config_from_dict(data, defaults=False)
 
 
-def write_metrics_csv(dataset: xr.Dataset, path: str | Path) -> None:
-    """Per-update metrics as CSV, units in the header; a ``joint`` column for several joints."""
+def write_metrics_csv(dataset: xr.Dataset | ResultContents, path: str | Path) -> None:
+    """Per-update metrics as CSV, units in the header; a ``joint`` column for several joints.
+
+    ``dataset`` is a result Dataset, or a single joint's :class:`ResultContents`.
+    """
     joints = joint_datasets(dataset)
     several = len(joints) > 1
     with atomic_write(path, newline="", encoding="utf-8") as handle:

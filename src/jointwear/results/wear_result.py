@@ -123,6 +123,14 @@ class WearResult:
             self._dataset = self._contents.to_dataset()
         return self._dataset
 
+    @property
+    def data(self) -> Any:
+        """The whole result read like a Dataset, as it is held: a single joint's plain
+        arrays (:class:`jointwear.results.ResultContents`) until :attr:`dataset` is
+        built, else the Dataset. Enough for the files of a run (netCDF, CSV) without
+        xarray."""
+        return self._contents if self._dataset is None else self._dataset
+
     def joint_data(self, joint: str | None = None) -> Any:
         """The results of one joint (default: the most worn one), read like a Dataset.
 
@@ -207,8 +215,12 @@ class WearResult:
         return plot_wear_result(self, kind, **kwargs)
 
     def to_netcdf(self, path: str | Path) -> None:
-        """Write the dataset as netCDF (h5netcdf), atomically."""
-        write_netcdf(self.dataset, path)
+        """Write the dataset as netCDF (h5netcdf), atomically.
+
+        A single joint's result not yet built as a Dataset is written from its plain
+        arrays (:func:`jointwear.results.write_netcdf`): the same file, without xarray.
+        """
+        write_netcdf(self.data, path)
 
 
 def read_wear_result(path: str | Path) -> WearResult:

@@ -325,12 +325,12 @@ def write_outputs(
     from jointwear.results import write_metrics_csv
 
     # the result file already holds the config as TOML text: written, not made again
-    config_text = result.dataset.attrs.get("config")
+    config_text = result.data.attrs.get("config")
     if not isinstance(config_text, str):
         config_text = result.config.to_toml()
     with staged_output(out, files=RUN_FILES, dirs=("plots",)) as staging:
         result.to_netcdf(staging / "result.nc")
-        write_metrics_csv(result.dataset, staging / "metrics.csv")
+        write_metrics_csv(result.data, staging / "metrics.csv")
         (staging / "config.toml").write_text(
             "# fully resolved configuration, SI units\n" + config_text, encoding="utf-8"
         )
