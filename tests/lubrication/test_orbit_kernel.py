@@ -199,3 +199,59 @@ def test_newton_on_the_wall_table_finds_the_bracketed_direction(kernel, model):
         assert newton == pytest.approx(bracketed, abs=1e-11)
     # (most random loads make the pin leave the wall)
     assert on_the_table > 20
+
+
+def direction_arguments(model: str) -> tuple[np.ndarray, tuple]:
+    """The kernel's memory of the last root and the arguments of ``direction_of_motion``
+    after ``eps, target, memory`` (``film_at``'s: all but the last)."""
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, model)
+    joint, _, memory, tables, nodes = solver.kernel_arguments()
+    _, _, _, _, ratio, code, log_gap_max = joint
+    return memory, (int(code), ratio, log_gap_max, *tables, nodes)
+
+
+@pytest.mark.parametrize("model", ["long", "finite"])
+def test_newtons_force_factor_is_the_one_at_its_root(kernel, model):
+    """Newton's method may stop one iteration early, its ``G`` moved along the tangent
+    to the root (the quadratic convergence puts the next step below round-off): ``G``
+    is still the film's at the root returned, in the table and on the wall table."""
+    memory, arguments = direction_arguments(model)
+    rng = np.random.default_rng(19)
+    found = 0
+    for _ in range(400):
+        eps = 1.0 - 10.0 ** -rng.uniform(0.1, 7.0)
+        target = rng.uniform(-np.pi, np.pi)
+        memory[0] = math.nan
+        bracketed = kernel.direction_of_motion(eps, target, memory, *arguments)
+        film = kernel.film_at(eps, *arguments[:-1])
+        newton, g_r, g_t = kernel._newton(bracketed + rng.uniform(-0.05, 0.05), target, film)
+        if math.isnan(newton):
+            continue
+        found += 1
+        expected = np.array(kernel.shape_along(film, newton))
+        scale = 1e-12 * abs(expected).max()
+        np.testing.assert_allclose([g_r, g_t], expected, rtol=1e-10, atol=scale)
+    assert found > 100  # (the long bearing leaves the wall, its closed form, for many)
+
+
+def test_newton_on_the_wall_table_follows_a_squeezing_pins_root():
+    """Close to the wall a pin squeezing the film has ``psi`` near pi / 2 for most
+    ``beta``: a root that turns by a tenth of a radian in ``psi`` (between two calls of
+    the integration) turns by radians in ``beta``. Newton's method on ``psi`` follows it
+    (on ``beta`` it strayed and the scan over all directions took over)."""
+    kernel = compiled_kernel()
+    arguments = direction_arguments("long")[1]
+    eps = 1.0 - 1e-4
+    root_q = math.sqrt(1.0 - eps * eps)
+    film = kernel.film_at(eps, *arguments[:-1])
+    followed = 0
+    for inner in np.linspace(1.2, 1.95, 16):
+        beta = math.atan2(root_q * math.sin(inner), math.cos(inner))
+        g_r, g_t = kernel.shape_along(film, beta)
+        target = math.atan2(g_t, g_r)
+        shifted = inner + 0.15
+        start = math.atan2(root_q * math.sin(shifted), math.cos(shifted))
+        newton = kernel._newton(start, target, film)[0]
+        assert math.remainder(newton - beta, 2 * math.pi) == pytest.approx(0.0, abs=1e-11)
+        followed += abs(math.remainder(start - beta, 2 * math.pi)) > 1.0
+    assert followed > 0  # some of these starts lie more than a radian from the root

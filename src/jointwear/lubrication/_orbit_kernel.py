@@ -7,8 +7,9 @@ bicubic B-spline of :func:`jointwear.lubrication.orbit.shape_table`, evaluated a
 FITPACK's ``bisplev`` does), the direction of motion whose film force balances the
 load (bracketed as :meth:`OrbitSolver.direction_of_motion` does, refined with the
 algorithm of :func:`scipy.optimize.brentq`, which numba cannot call; for the tabulated
-models first by Newton's method from the last root, with the spline's derivative:
-some four force evaluations instead of some eleven, the same root to 1e-13), the
+models first by Newton's method from the last root, with the spline's derivative, on
+the wall tables along their own inner direction: some three force evaluations instead
+of some eleven, the same root to 1e-13), the
 Greenwood--Tripp asperity force from its cubic spline, the centre's velocity and the
 right-hand side in the stretched coordinate. The cycle is integrated with the
 Dormand--Prince 5(4) pair and its continuous extension (the coefficients of
@@ -46,6 +47,9 @@ _ROUND_OFF = 1e-12
 _STEPS = 200_000
 #: Newton steps of the direction of motion before the bracketing search takes over
 _NEWTON_STEPS = 8
+#: a Newton step below this [rad] whose successor, estimated from the quadratic
+#: convergence, is below the root's tolerance ends the iteration (:func:`_newton`)
+_SETTLED_STEP = 1e-7
 
 # Dormand-Prince 5(4) (nodes, stages, weights, error weights, continuous extension):
 # scipy's own RK45 tables, so that the compiled loop takes scipy's steps
@@ -321,38 +325,29 @@ def _newton(start, target, film):
 
     From ``start`` (the last root: the state moves little between calls), with the
     mismatch's slope ``(G_r G_t' - G_t G_r') / |G|^2`` from the splines' derivatives
-    along ``beta`` (on a wall table through the inner direction: :func:`_wall_slope`);
-    done when a step is below the tolerance of :func:`_brent`. Returns the root and
-    ``G`` at the iterate before the last step (it moved less than 1e-13 rad); NaN
-    where the slope is not positive, the iterate strays a radian from the start, the
-    long bearing's iterate leaves the wall (its closed form there) or it does not
-    settle: the bracketing search takes over.
+    along ``beta`` (on a wall table: :func:`_wall_newton`); done when a step is below
+    the tolerance of :func:`_brent`, or when it is below ``_SETTLED_STEP`` and the next
+    one, ``|s_k|^3 / |s_{k-1}|^2`` by the quadratic convergence, is (one iteration of
+    some four saved). Returns the root and ``G`` at the iterate before the last step
+    (it moved less than 1e-13 rad), or there moved along its tangent to the root
+    (``G - s_k G'``: an error of order ``s_k^2``); NaN where the slope is not positive,
+    the iterate strays a radian from the start or it does not settle: the bracketing
+    search takes over.
     """
     model, _, _, scale, span_x, wx, ty, radial, tangential = film
+    if model != TABULATED:
+        return _wall_newton(start, target, film)
     columns = ty.size - 4
-    beta = start
+    beta, last = start, 0.0
     for _ in range(_NEWTON_STEPS):
-        if model == TABULATED:
-            y, turn, size, size_slope = _wrap(beta), 1.0, 1.0, 0.0
-        else:
-            y, turn, size, size_slope = _wall_slope(beta, scale)
-            if model == LONG and -math.pi + _LEAVING < y < -_LEAVING:
-                return math.nan, 0.0, 0.0
-        y = min(max(y, ty[3]), ty[ty.size - 4])
+        y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
         span_y = _interval(ty, y, 3, ty.size - 5)
         wy = _basis(ty, y, span_y)
         dy = _basis_slope(ty, y, span_y)
-        g_r = size * _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
-        g_t = size * _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
-        d_r = size * turn * _bicubic_sum(radial, span_x, span_y, columns, wx, dy)
-        d_t = size * turn * _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
-        if model != TABULATED:
-            # G = m' (V_r / q^1.5, V_t / q): the common factor m' / q cancels in the
-            # angle, which sees V_r / sqrt(q) against V_t
-            root = math.sqrt(scale)
-            d_r = (d_r + size_slope / size * g_r) / root
-            d_t = d_t + size_slope / size * g_t
-            g_r = g_r / root
+        g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
+        g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
+        d_r = _bicubic_sum(radial, span_x, span_y, columns, wx, dy)
+        d_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
         slope = (g_r * d_t - g_t * d_r) / (g_r * g_r + g_t * g_t)
         if not slope > 0.0:
             return math.nan, 0.0, 0.0
@@ -361,29 +356,69 @@ def _newton(start, target, film):
         beta -= step
         if abs(beta - start) > 1.0:
             return math.nan, 0.0, 0.0
-        if abs(step) <= 0.5 * (1e-13 + 1e-15 * abs(beta)):
+        tolerance = 0.5 * (1e-13 + 1e-15 * abs(beta))
+        if abs(step) <= tolerance:
             return beta, g_r, g_t
+        # quadratic convergence: the next step ~ (step / last step^2) step^2; where it
+        # is below the tolerance, G moved along the tangent to beta (an error ~ step^2)
+        # instead of one more iteration for a step of round-off
+        if abs(step) <= _SETTLED_STEP and abs(step) ** 3 <= tolerance * last * last:
+            return beta, g_r - step * d_r / scale, g_t - step * d_t / scale
+        last = abs(step)
     return math.nan, 0.0, 0.0
 
 
 @njit(cache=True)
-def _wall_slope(beta, scale):
-    """The inner direction ``psi`` of ``beta``, ``dpsi/dbeta``, ``m'`` and ``dm'/dbeta``.
+def _wall_newton(start, target, film):
+    """:func:`_newton` on a wall table, iterating on the inner direction ``psi`` [rad].
 
-    ``tan psi = tan beta / sqrt(q)``, ``m' = sqrt(q cos^2 beta + sin^2 beta)`` with
-    ``q = 1 - eps^2`` (``mobility.wall_direction``): ``dpsi/dbeta = sqrt(q) / m'^2``,
-    ``dm'/dbeta = (1 - q) sin beta cos beta / m'``.
+    The table's own coordinate: ``G = m' (V_r / q^1.5, V_t / q)`` points along
+    ``(V_r(psi) / sqrt(q), V_t(psi))`` (``q = 1 - eps^2``; ``m'`` cancels in the
+    angle), so the mismatch's slope along ``psi`` is the splines' derivative alone,
+    and a root that ``beta = atan2(sqrt(q) sin psi, cos psi)`` moves by radians where
+    ``q`` is small (the pin squeezing the film: ``psi`` near ``pi / 2`` for most
+    ``beta``) moves little along ``psi``. Done when the step of ``beta`` is below the
+    tolerance of :func:`_brent`, or below ``_SETTLED_STEP`` with the next one, by the
+    quadratic convergence, below it (``V`` moved along its tangent to the root). NaN
+    where the slope is not positive, ``psi`` strays a radian from the start's, the long
+    bearing's iterate leaves the wall (its closed form there) or it does not settle.
     """
+    model, _, _, scale, span_x, wx, ty, radial, tangential = film
+    columns = ty.size - 4
     root = math.sqrt(scale)
-    cos_b, sin_b = math.cos(beta), math.sin(beta)
-    wedge = root * cos_b
-    size = math.hypot(wedge, sin_b)
-    return (
-        math.atan2(sin_b, wedge),
-        root / (size * size),
-        size,
-        (1.0 - scale) * sin_b * cos_b / size,
-    )
+    inner = math.atan2(math.sin(start), root * math.cos(start))
+    first, beta, last = inner, start, 0.0
+    for _ in range(_NEWTON_STEPS):
+        if model == LONG and -math.pi + _LEAVING < inner < -_LEAVING:
+            return math.nan, 0.0, 0.0
+        y = min(max(inner, ty[3]), ty[ty.size - 4])
+        span_y = _interval(ty, y, 3, ty.size - 5)
+        wy = _basis(ty, y, span_y)
+        dy = _basis_slope(ty, y, span_y)
+        v_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy) / root
+        v_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
+        d_r = _bicubic_sum(radial, span_x, span_y, columns, wx, dy) / root
+        d_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, dy)
+        slope = (v_r * d_t - v_t * d_r) / (v_r * v_r + v_t * v_t)
+        if not slope > 0.0:
+            return math.nan, 0.0, 0.0
+        step = _wrap(math.atan2(v_t, v_r) - target) / slope
+        inner = _wrap(inner - step)
+        if abs(_wrap(inner - first)) > 1.0:
+            return math.nan, 0.0, 0.0
+        moved = beta
+        beta = start + _wrap(math.atan2(root * math.sin(inner), math.cos(inner)) - start)
+        moved = abs(beta - moved)
+        tolerance = 0.5 * (1e-13 + 1e-15 * abs(beta))
+        settled = moved <= tolerance
+        if not settled and moved <= _SETTLED_STEP and last > 0.0:
+            settled = moved * (step / last) ** 2 <= tolerance
+            v_r, v_t = v_r - step * d_r, v_t - step * d_t
+        if settled:
+            size = math.hypot(root * math.cos(beta), math.sin(beta))
+            return beta, size * v_r / scale, size * v_t / scale
+        last = abs(step)
+    return math.nan, 0.0, 0.0
 
 
 @njit(cache=True)
