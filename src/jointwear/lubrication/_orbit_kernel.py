@@ -574,6 +574,10 @@ def right_hand_side(t, qx, qy, inputs, joint, asperity, memory, tables, nodes):
     x, y = qx / norm, qy / norm
     vx, vy = velocity(x, y, load_x, load_y, speed, joint, asperity, memory, tables, nodes)
     gap = 1.0 - math.hypot(x, y)
+    if not gap > 0.0:
+        # a trial stage so far out that the gap rounds to nil: NaN rejects the step, as
+        # the Python path's inf does (a pin leaving the wall fast can overshoot so)
+        return math.nan, math.nan
     radial = (x * vx + y * vy) / gap**2
     return vx / gap + radial * x, vy / gap + radial * y
 
