@@ -398,7 +398,7 @@ def leaving_values(length_to_diameter: float) -> tuple[FloatArray, FloatArray, F
     Where the pin leaves the wall (:data:`LEAVING_WALL`) beyond ``eps = 0.995``:
     ``W, T`` of :func:`to_leaving` over ``s = -log10(1 - eps)`` (the wall table's
     nodes) and ``u`` (:func:`leaving_direction`), both bounded.
-    Solved on :data:`WALL_GRID` with the grid of :func:`leaving_crowding` (about 2 s
+    Solved on :data:`WALL_GRID` with the grid of :func:`leaving_crowding` (about 1.5 s
     once per ``L/D``) from ``eps = 0.995`` on: the usual grid and directions of
     :func:`force_table` are some 1-30 % off there (``docs/lubrication.md``), a step the
     force takes across 0.995 where the pin leaves the wall.
