@@ -20,6 +20,7 @@ from jointwear.lubrication.orbit import (
     CycleMap,
     OrbitSolver,
     compiled_kernel,
+    leaving_shape_table,
     periodic_orbit,
 )
 
@@ -255,3 +256,22 @@ def test_newton_on_the_wall_table_follows_a_squeezing_pins_root():
         assert math.remainder(newton - beta, 2 * math.pi) == pytest.approx(0.0, abs=1e-11)
         followed += abs(math.remainder(start - beta, 2 * math.pi)) > 1.0
     assert followed > 0  # some of these starts lie more than a radian from the root
+
+
+@pytest.mark.parametrize("model", ["finite", "finite-reynolds"])
+def test_the_compiled_force_where_the_pin_leaves_the_wall_is_the_pythons(kernel, model):
+    """tan(beta) < -3 sqrt(1 - eps^2) beyond eps = 0.995: the finite bearing's leaving
+    table (half-Sommerfeld's film; Reynolds' stays on its wall table) gives the same
+    force factor in both paths, and a table of its own: the leaving table's values
+    are on the wall table's knots along s."""
+    solver = OrbitSolver(RADIUS, LENGTH, CLEARANCE, 0.1, ROUGHNESS, MODULUS, model)
+    steady = solver.steady_shape()
+    tables = solver.kernel_arguments()[3]
+    if model == "finite":  # the leaving table shares the wall table's knots along s
+        scaled, _ = leaving_shape_table(solver.ratio)
+        np.testing.assert_array_equal(scaled.tck[0], tables[4])
+    rng = np.random.default_rng(19)
+    for _ in range(200):
+        eps, beta = 1.0 - 10.0 ** -rng.uniform(2.3, 8.0), rng.uniform(-np.pi, 0.0)
+        expected = solver.scalar_shape(eps, beta)
+        np.testing.assert_allclose(steady(eps, beta), expected, rtol=1e-12, atol=1e-14)

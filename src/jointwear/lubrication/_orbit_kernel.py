@@ -35,8 +35,10 @@ from jointwear.mechanism.impact.compiled_film import long_bearing
 DONE, TOO_MANY_STEPS, STEP_TOO_SMALL = 0, 1, 2
 #: model codes (WALL: the finite bearing beyond its table's end, on the wall's table;
 #: LONG: the long bearing, tabulated up to the table's end, on its wall table beyond
-#: and in closed form where the pin leaves the wall)
-SHORT, TABULATED, WALL, LONG = 0, 1, 2, 3
+#: and in closed form where the pin leaves the wall; FINITE: the finite bearing with
+#: half-Sommerfeld's film, tabulated up to the table's end, beyond it (LEAVING) on its
+#: wall table and on its leaving table where the pin leaves the wall)
+SHORT, TABULATED, WALL, LONG, FINITE, LEAVING = 0, 1, 2, 3, 4, 5
 #: the long bearing's closed form where the wall's inner direction psi lies in
 #: (-pi + _LEAVING, -_LEAVING): the pin leaves the wall (orbit.LEAVING_WALL)
 _LEAVING = math.atan(3.0)
@@ -169,14 +171,16 @@ short_shape = njit(cache=True)(short_shape_scalar)
 
 
 @njit(cache=True)
-def shape(eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt):
+def shape(eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa):
     """``G(eps, beta)`` of the film model (``orbit.OrbitSolver.scalar_shape``) [-]."""
-    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
+    film = film_at(
+        eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa
+    )
     return shape_along(film, beta)
 
 
 @njit(cache=True)
-def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt):
+def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa):
     """What :func:`shape_along` needs at ``eps``, evaluated once for all directions.
 
     The tabulated models' log-gap coordinate, their ``(1 - eps^2)^2.5`` and the knot
@@ -185,21 +189,26 @@ def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt):
     (the same operations as :func:`bicubic` for each component, so the same values
     bit for bit). Beyond the table's end (``eps > 1 - 10^-log_gap_max``) the long
     bearing in closed form, the finite one from the wall's table (``wtx, wty, wrr,
-    wtt``: ``orbit.wall_shape_table``) with ``1 - eps^2``.
+    wtt``: ``orbit.wall_shape_table``) with ``1 - eps^2``, and the finite bearing's
+    leaving table (``lty, lww, laa``: ``ty``, ``W`` and the angle of
+    ``orbit.leaving_shape_table``, on the wall table's knots along ``s``) where the pin
+    leaves the wall.
     """
+    leaving = (lty, lww, laa)
     if model == SHORT:
-        return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, rr, tt
+        return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, rr, tt, leaving
     if eps > 1.0 - 10.0**-log_gap_max:
-        code = LONG if model == LONG else WALL
+        code = LONG if model == LONG else (LEAVING if model == FINITE else WALL)
         x = min(max(-math.log10(max(1.0 - eps, 1e-300)), wtx[3]), wtx[wtx.size - 4])
         span_x = _interval(wtx, x, 3, wtx.size - 5)
-        return code, eps, ratio, 1.0 - eps * eps, span_x, _basis(wtx, x, span_x), wty, wrr, wtt
+        basis = _basis(wtx, x, span_x)
+        return code, eps, ratio, 1.0 - eps * eps, span_x, basis, wty, wrr, wtt, leaving
     model = TABULATED
     log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
     x = min(max(log_gap, tx[3]), tx[tx.size - 4])
     span_x = _interval(tx, x, 3, tx.size - 5)
     scale = (1.0 - eps * eps) ** 2.5
-    return model, eps, ratio, scale, span_x, _basis(tx, x, span_x), ty, rr, tt
+    return model, eps, ratio, scale, span_x, _basis(tx, x, span_x), ty, rr, tt, leaving
 
 
 @njit(cache=True)
@@ -244,15 +253,18 @@ def shape_along(film, beta):
     ``G = m' (V_r / (1 - eps^2)^1.5, V_t / (1 - eps^2))``
     (``mobility.to_wall``).
     """
-    model, eps, ratio, scale, span_x, wx, ty, radial, tangential = film
+    model, eps, ratio, scale, span_x, wx, ty, radial, tangential, leaving = film
     if model == SHORT:
         return short_shape(eps, beta, ratio)
-    if model != TABULATED:  # WALL or LONG
+    if model != TABULATED:  # WALL, LONG or LEAVING
         root = math.sqrt(scale)
         wedge, squeeze = root * math.cos(beta), math.sin(beta)
         inner = math.atan2(squeeze, wedge)
-        if model == LONG and -math.pi + _LEAVING < inner < -_LEAVING:
-            return _long_shape(eps, beta, ratio)
+        if -math.pi + _LEAVING < inner < -_LEAVING:
+            if model == LONG:
+                return _long_shape(eps, beta, ratio)
+            if model == LEAVING:
+                return _leaving_shape(beta, root, squeeze, span_x, wx, leaving)
         y = min(max(inner, ty[3]), ty[ty.size - 4])
         size = math.hypot(wedge, squeeze)
         span_y = _interval(ty, y, 3, ty.size - 5)
@@ -268,6 +280,24 @@ def shape_along(film, beta):
     g_r = _bicubic_sum(radial, span_x, span_y, columns, wx, wy)
     g_t = _bicubic_sum(tangential, span_x, span_y, columns, wx, wy)
     return g_r / scale, g_t / scale
+
+
+@njit(cache=True)
+def _leaving_shape(beta, root, squeeze, span_x, wx, leaving):
+    """``G`` of the finite bearing's leaving table (``orbit.wall_shape_scalar``) [-].
+
+    At ``u = asinh(cot beta) / asinh(1 / (3 sqrt(1 - eps^2)))``,
+    ``G = exp(W) (cos T / sin^2 beta, sin T / |sin beta|)`` (``mobility.from_leaving``).
+    """
+    ty, scaled, angle = leaving
+    motion = math.asinh(math.cos(beta) / squeeze) / math.asinh(1.0 / (3.0 * root))
+    y = min(max(motion, ty[3]), ty[ty.size - 4])
+    span_y = _interval(ty, y, 3, ty.size - 5)
+    wy = _basis(ty, y, span_y)
+    columns = ty.size - 4
+    size = math.exp(_bicubic_sum(scaled, span_x, span_y, columns, wx, wy)) / (squeeze * squeeze)
+    direction = _bicubic_sum(angle, span_x, span_y, columns, wx, wy)
+    return size * math.cos(direction), -size * squeeze * math.sin(direction)
 
 
 @njit(cache=True)
@@ -331,10 +361,11 @@ def _newton(start, target, film):
     some four saved). Returns the root and ``G`` at the iterate before the last step
     (it moved less than 1e-13 rad), or there moved along its tangent to the root
     (``G - s_k G'``: an error of order ``s_k^2``); NaN where the slope is not positive,
-    the iterate strays a radian from the start or it does not settle: the bracketing
-    search takes over.
+    the iterate strays a radian from the start, the long or finite bearing's iterate
+    leaves the wall (its closed form or leaving table there) or it does not settle: the
+    bracketing search takes over.
     """
-    model, _, _, scale, span_x, wx, ty, radial, tangential = film
+    model, _, _, scale, span_x, wx, ty, radial, tangential, _ = film
     if model != TABULATED:
         return _wall_newton(start, target, film)
     columns = ty.size - 4
@@ -381,15 +412,16 @@ def _wall_newton(start, target, film):
     tolerance of :func:`_brent`, or below ``_SETTLED_STEP`` with the next one, by the
     quadratic convergence, below it (``V`` moved along its tangent to the root). NaN
     where the slope is not positive, ``psi`` strays a radian from the start's, the long
-    bearing's iterate leaves the wall (its closed form there) or it does not settle.
+    or finite bearing's iterate leaves the wall (its closed form or leaving table
+    there) or it does not settle.
     """
-    model, _, _, scale, span_x, wx, ty, radial, tangential = film
+    model, _, _, scale, span_x, wx, ty, radial, tangential, _ = film
     columns = ty.size - 4
     root = math.sqrt(scale)
     inner = math.atan2(math.sin(start), root * math.cos(start))
     first, beta, last = inner, start, 0.0
     for _ in range(_NEWTON_STEPS):
-        if model == LONG and -math.pi + _LEAVING < inner < -_LEAVING:
+        if model in (LONG, LEAVING) and -math.pi + _LEAVING < inner < -_LEAVING:
             return math.nan, 0.0, 0.0
         y = min(max(inner, ty[3]), ty[ty.size - 4])
         span_y = _interval(ty, y, 3, ty.size - 5)
@@ -423,13 +455,32 @@ def _wall_newton(start, target, film):
 
 @njit(cache=True)
 def direction_of_motion(
-    eps, target, memory, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, nodes
+    eps,
+    target,
+    memory,
+    model,
+    ratio,
+    log_gap_max,
+    tx,
+    ty,
+    rr,
+    tt,
+    wtx,
+    wty,
+    wrr,
+    wtt,
+    lty,
+    lww,
+    laa,
+    nodes,
 ):
     """``beta`` whose film force points at ``target`` (``OrbitSolver.direction_of_motion``).
 
     ``memory[0]`` holds the last root (NaN: none); returns NaN where none is found.
     """
-    film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
+    film = film_at(
+        eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa
+    )
     return direction_along(film, target, memory, nodes)[0]
 
 
@@ -515,13 +566,14 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
 
     ``joint = (clearance, roughness, cutoff, mobility_scale, ratio, model, log_gap_max)``,
     ``asperity = (breaks, coefficients)`` of the force's spline over the gap,
-    ``tables = (tx, ty, radial, tangential)`` of the tabulated models and the same of
-    their wall tables (``orbit.OrbitSolver.kernel_arguments``). Returns NaN
-    where no direction of motion is found.
+    ``tables = (tx, ty, radial, tangential)`` of the tabulated models, the same of
+    their wall tables and the finite bearing's leaving table ``(ty, W, angle)``
+    (``orbit.OrbitSolver.kernel_arguments``). Returns NaN where no direction of motion
+    is found.
     """
     clearance, roughness, cutoff, scale, ratio, model_code, log_gap_max = joint
     model = int(model_code)
-    tx, ty, rr, tt, wtx, wty, wrr, wtt = tables
+    tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa = tables
     eps, phi = math.hypot(x, y), math.atan2(y, x)
     eps = min(max(eps, 1e-6), _LARGEST)
     cos_phi, sin_phi = math.cos(phi), math.sin(phi)
@@ -532,7 +584,9 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
     radial = tangential = 0.0
     if carried > 0.0:
         target = math.atan2(film_y, film_x) - phi + math.pi
-        film = film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt)
+        film = film_at(
+            eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa
+        )
         beta, g_r, g_t = direction_along(film, target, memory, nodes)
         if math.isnan(beta):
             return math.nan, math.nan
@@ -557,6 +611,10 @@ def right_hand_side(t, qx, qy, inputs, joint, asperity, memory, tables, nodes):
     x, y = qx / norm, qy / norm
     vx, vy = velocity(x, y, load_x, load_y, speed, joint, asperity, memory, tables, nodes)
     gap = 1.0 - math.hypot(x, y)
+    if not gap > 0.0:
+        # a trial stage so far out that the gap rounds to nil: NaN rejects the step, as
+        # the Python path's inf does (a pin leaving the wall fast can overshoot so)
+        return math.nan, math.nan
     radial = (x * vx + y * vy) / gap**2
     return vx / gap + radial * x, vy / gap + radial * y
 

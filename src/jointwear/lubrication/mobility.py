@@ -58,6 +58,7 @@ References
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from functools import cache, partial
 from typing import NamedTuple
@@ -106,6 +107,16 @@ WALL_GRID = (480, 64)
 #: over this much of s beyond the table's end the wall table passes from the usual grid
 #: (force_table's) to WALL_GRID
 WALL_BLEND = 0.6
+#: the wall's inner direction psi (:func:`wall_direction`) beyond which, within
+#: (-pi + LEAVING_WALL, -LEAVING_WALL), the pin leaves the wall: tan(beta) <
+#: -3 sqrt(1 - eps^2), where the film's force is of order one and the wall table in psi
+#: does not resolve it; the finite bearing's leaving table (:func:`leaving_table`) there
+LEAVING_WALL = math.atan(3.0)
+#: directions u of the leaving table over [-1, 1] (:func:`leaving_direction`)
+LEAVING_DIRECTION_NODES = 41
+#: the leaving table's grid crowds its nodes as a film of gap 1000 (1 - eps) would, but
+#: no more than one of eps = 0.9 (:func:`leaving_crowding`)
+LEAVING_CROWDING = 1000.0
 #: eccentricity below which the mobility uses this value (the direction of e is undefined)
 SMALLEST_ECCENTRICITY = 1e-6
 
@@ -275,17 +286,194 @@ def wall_table(
     return periodic_interpolant(log_gap, inner, values)
 
 
+def leaving_crowding(eps: float) -> float:
+    """The Sommerfeld-angle eccentricity of the leaving table's grid [-].
+
+    A grid uniform in Sommerfeld's angle of ``eps`` itself (:func:`film_system
+    <jointwear.lubrication.reynolds.film_system>`) leaves a node or two on the wide side
+    of a film close to the wall, where the pressure of a pin leaving the wall lies:
+    ``min(eps, max(0.9, 1 - 1000 (1 - eps)))`` keeps some 20 nodes per radian there and
+    still crowds them at the smallest film (the forces within 1e-3 of a grid four times
+    finer, measured at ``1 - eps`` = 1.2e-5).
+
+    Parameters
+    ----------
+    eps : float
+        Eccentricity ratio [-].
+    """
+    return min(eps, max(0.9, 1.0 - LEAVING_CROWDING * (1.0 - eps)))
+
+
+def leaving_edge(eps: ArrayLike) -> FloatArray:
+    """``asinh(1 / (3 sqrt(1 - eps^2)))``: ``|asinh(cot beta)|`` at the leaving region's edge [-].
+
+    Parameters
+    ----------
+    eps : array_like
+        Eccentricity ratio [-].
+    """
+    return np.arcsinh(1.0 / (3.0 * np.sqrt(1.0 - np.asarray(eps, float) ** 2)))
+
+
+def leaving_direction(eps: ArrayLike, direction: ArrayLike) -> FloatArray:
+    """The leaving table's direction ``u = asinh(cot beta) / leaving_edge(eps)`` [-].
+
+    Where the pin leaves the wall (``sin beta < 0``, ``|cot beta| < 1/(3 sqrt(1 -
+    eps^2))``: :data:`LEAVING_WALL`) ``u`` runs from -1 (``tan beta = -3 sqrt(1 -
+    eps^2)``) to 1 (``beta`` as close to ``-pi``): linear in ``beta`` about ``-pi/2``,
+    where the film's force tends to a finite limit at fixed ``beta`` as ``eps -> 1``,
+    and logarithmic in ``cot beta`` towards the edges, where it grows like
+    ``(1 - eps^2)^-1`` within ``sqrt(1 - eps^2)`` of a pure wedge.
+
+    Parameters
+    ----------
+    eps : array_like
+        Eccentricity ratio [-].
+    direction : array_like
+        ``beta`` [rad].
+    """
+    return np.arcsinh(np.cos(direction) / np.sin(direction)) / leaving_edge(eps)
+
+
+def leaving_motion(eps: ArrayLike, leaving: ArrayLike) -> FloatArray:
+    """``beta`` of the leaving table's direction ``u`` (inverse of :func:`leaving_direction`) [rad].
+
+    Parameters
+    ----------
+    eps : array_like
+        Eccentricity ratio [-].
+    leaving : array_like
+        ``u`` in [-1, 1] [-].
+    """
+    return np.arctan2(-1.0, -np.sinh(np.asarray(leaving, float) * leaving_edge(eps)))
+
+
+def to_leaving(shape: FloatArray, direction: ArrayLike) -> FloatArray:
+    """The leaving table's bounded values ``(W, T)`` of ``G``, shape ``(2, ...)`` [-, rad].
+
+    .. math:: G_r = \\frac{e^W \\cos T}{\\sin^2\\beta}, \\qquad
+              G_t = \\frac{e^W \\sin T}{|\\sin\\beta|} :
+
+    at fixed ``beta`` the force of a pin leaving the wall tends to a finite limit as
+    ``eps -> 1``; towards the edges, at a fixed inner direction ``psi``
+    (:func:`wall_direction`), it grows like the wall's ``(1 - eps^2)^-1`` (radial) and
+    ``(1 - eps^2)^-1/2`` (tangential), as ``1 / sin^2 beta`` and ``1 / |sin beta|`` do
+    there. The angle ``T`` is unwrapped by the caller.
+
+    Parameters
+    ----------
+    shape : ndarray
+        ``G_r, G_t`` [-].
+    direction : array_like
+        ``beta`` [rad].
+    """
+    across = np.abs(np.sin(direction))
+    return np.stack(
+        [
+            np.log(np.hypot(shape[0], shape[1] / across) * across**2),
+            np.arctan2(shape[1] / across, shape[0]),
+        ]
+    )
+
+
+def from_leaving(values: FloatArray, direction: ArrayLike) -> FloatArray:
+    """``G`` of the leaving table's values ``(W, T)`` (:func:`to_leaving`), ``(2, ...)`` [-].
+
+    Parameters
+    ----------
+    values : ndarray
+        ``W`` and ``T`` [-, rad].
+    direction : array_like
+        ``beta`` [rad].
+    """
+    across = np.abs(np.sin(direction))
+    size = np.exp(values[0]) / across**2
+    return np.stack([size * np.cos(values[1]), size * across * np.sin(values[1])])
+
+
+@cache
+def leaving_values(length_to_diameter: float) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """The leaving table's nodes ``(s, u)`` and values, half-Sommerfeld's film [-].
+
+    Where the pin leaves the wall (:data:`LEAVING_WALL`) beyond ``eps = 0.995``:
+    ``W, T`` of :func:`to_leaving` over ``s = -log10(1 - eps)`` (the wall table's
+    nodes) and ``u`` (:func:`leaving_direction`), both bounded.
+    Solved on :data:`WALL_GRID` with the grid of :func:`leaving_crowding` (about 1.5 s
+    once per ``L/D``) from ``eps = 0.995`` on: the usual grid and directions of
+    :func:`force_table` are some 1-30 % off there (``docs/lubrication.md``), a step the
+    force takes across 0.995 where the pin leaves the wall.
+
+    Parameters
+    ----------
+    length_to_diameter : float
+        ``L / D`` [-].
+
+    Returns
+    -------
+    tuple of ndarray
+        ``s`` [-], ``u`` [-] and the values ``[s, u, (W, T)]`` [-, rad].
+    """
+    log_gap = np.linspace(LOG_GAP_MAX, WALL_LOG_GAP_MAX, WALL_LOG_GAP_NODES)
+    leaving = np.linspace(-1.0, 1.0, LEAVING_DIRECTION_NODES)
+    values = np.empty((WALL_LOG_GAP_NODES, LEAVING_DIRECTION_NODES, 2))
+    for k, s in enumerate(log_gap):
+        eps = 1.0 - 10.0**-s
+        direction = leaving_motion(eps, leaving)
+        shape = tabulated_forces(
+            eps, length_to_diameter, direction, WALL_GRID, leaving_crowding(eps)
+        )
+        scaled, angle = to_leaving(shape, direction)
+        angle = np.unwrap(angle)
+        # one branch of the angle for all rows: the middle direction's in (-pi, pi]
+        angle -= 2.0 * np.pi * np.round(angle[LEAVING_DIRECTION_NODES // 2] / (2.0 * np.pi))
+        values[k, :, 0], values[k, :, 1] = scaled, angle
+    return log_gap, leaving, values
+
+
+@cache
+def leaving_table(length_to_diameter: float) -> RegularGridInterpolator:
+    """Cubic interpolant of :func:`leaving_values` over ``(s, u)`` [-].
+
+    Parameters
+    ----------
+    length_to_diameter : float
+        ``L / D`` [-].
+    """
+    log_gap, leaving, values = leaving_values(length_to_diameter)
+    return RegularGridInterpolator((log_gap, leaving), values, method="cubic")
+
+
+def leaving_the_wall(inner: ArrayLike) -> NDArray[np.bool_]:
+    """Whether the wall's inner direction ``psi`` is one of a pin leaving the wall [-].
+
+    Parameters
+    ----------
+    inner : array_like
+        ``psi`` (:func:`wall_direction`) [rad].
+    """
+    inner = np.asarray(inner, float)
+    return (-np.pi + LEAVING_WALL < inner) & (inner < -LEAVING_WALL)
+
+
 def wall_finite(
     eps: FloatArray, direction: FloatArray, ratio: float, cavitation: Cavitation
 ) -> FloatArray:
     """``G(eps, beta; L/D)`` of the finite bearing beyond ``eps = 0.995``, shape ``(2, ...)`` [-].
 
-    From :func:`wall_table`, its values held beyond ``1 - 1e-5`` (:func:`to_wall`).
+    From :func:`wall_table`, its values held beyond ``1 - 1e-5`` (:func:`to_wall`);
+    half-Sommerfeld's film from :func:`leaving_table` where the pin leaves the wall
+    (:func:`leaving_the_wall`), held beyond ``1 - 1e-5`` in ``W, T`` at the same ``u``.
     """
     inner, size = wall_direction(eps, direction)
     log_gap = np.clip(-np.log10(np.maximum(1.0 - eps, 1e-300)), LOG_GAP_MAX, WALL_LOG_GAP_MAX)
     values = wall_table(ratio, cavitation)(np.stack([log_gap, inner], axis=-1))
-    return from_wall(values.T, eps, size)
+    out = from_wall(values.T, eps, size)
+    leaving = leaving_the_wall(inner) if cavitation == "half-Sommerfeld" else False
+    if np.any(leaving):
+        motion = leaving_direction(eps[leaving], direction[leaving])
+        scaled = leaving_table(ratio)(np.stack([log_gap[leaving], motion], axis=-1))
+        out[:, leaving] = from_leaving(scaled.T, direction[leaving])
+    return out
 
 
 def finite_bearing_force(

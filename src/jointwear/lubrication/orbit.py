@@ -86,6 +86,7 @@ from jointwear.lubrication.film import long_shape_near_wall, short_shape_scalar
 from jointwear.lubrication.mobility import (
     DIRECTION_NODES,
     FINITE_CAVITATION,
+    LEAVING_WALL,
     LOG_GAP_MAX,
     LOG_GAP_NODES,
     TABLE_EDGE,
@@ -93,7 +94,11 @@ from jointwear.lubrication.mobility import (
     WALL_LOG_GAP_MAX,
     WALL_LOG_GAP_NODES,
     dimensionless_force,
+    from_leaving,
     from_wall,
+    leaving_direction,
+    leaving_the_wall,
+    leaving_values,
     to_wall,
     wall_direction,
     wall_motion,
@@ -146,11 +151,6 @@ WALL_STEP = 0.05
 #: on the wall a cycle keeps most of a displacement along it: it shrinks by less than
 #: this share (a film that holds the pin steers it back much more)
 WALL_CONTRACTION = 0.5
-#: close to the wall the long bearing is its closed form where the wall's inner
-#: direction psi (mobility.wall_direction) lies in (-pi + LEAVING_WALL, -LEAVING_WALL):
-#: the pin leaves the wall, tan(beta) < -3 sqrt(1 - eps^2), and its film's force is of
-#: order one, which the wall table in psi does not resolve; its wall table elsewhere
-LEAVING_WALL = math.atan(3.0)
 #: the compiled kernel (:mod:`jointwear.lubrication._orbit_kernel`), imported on first use
 _KERNEL: Any = None
 
@@ -327,6 +327,29 @@ def wall_shape_table(model: str, ratio: float) -> RectBivariateSpline:
     )
 
 
+@cache
+def leaving_shape_table(ratio: float) -> RectBivariateSpline:
+    """Spline of the finite bearing's leaving table over ``(s, u)`` [-].
+
+    Where the pin leaves the wall beyond ``eps = 0.995``
+    (:data:`~jointwear.lubrication.mobility.LEAVING_WALL`): ``W, T``
+    (:func:`jointwear.lubrication.mobility.to_leaving`) of
+    :func:`jointwear.lubrication.mobility.leaving_values` at
+    its nodes, on the wall table's ``s`` nodes (so the same knots along ``s`` as
+    :func:`wall_shape_table`). One spline per value, as :func:`shape_table`.
+
+    Parameters
+    ----------
+    ratio : float
+        ``L / D`` [-].
+    """
+    log_gap, leaving, values = leaving_values(ratio)
+    return (
+        RectBivariateSpline(log_gap, leaving, values[..., 0]),
+        RectBivariateSpline(log_gap, leaving, values[..., 1]),
+    )
+
+
 def wrap_to_pi(angle: ArrayLike) -> FloatArray:
     """``angle`` wrapped to ``[-pi, pi)`` [rad]."""
     return np.remainder(np.asarray(angle, float) + np.pi, 2.0 * np.pi) - np.pi
@@ -355,11 +378,18 @@ def long_shape_scalar(eps: float, beta: float, ratio: float) -> tuple[float, flo
 def wall_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tuple[float, float]]:
     """``G(eps, beta)`` beyond ``eps = 0.995`` for one state, from :func:`wall_shape_table` [-].
 
-    The operations of the compiled kernel's ``shape_along`` for the wall's table; the
-    long bearing in closed form where the pin leaves the wall (:data:`LEAVING_WALL`).
+    The operations of the compiled kernel's ``shape_along`` for the wall's table; where
+    the pin leaves the wall (:data:`~jointwear.lubrication.mobility.LEAVING_WALL`) the
+    long bearing in closed form, the finite one (half-Sommerfeld) from
+    :func:`leaving_shape_table`.
     """
     knots = [(*spline.tck, *spline.degrees) for spline in wall_shape_table(model, ratio)]
     long = model == "long"
+    leaving = (
+        [(*spline.tck, *spline.degrees) for spline in leaving_shape_table(ratio)]
+        if model == "finite"
+        else None
+    )
 
     def shape(eps: float, beta: float) -> tuple[float, float]:
         log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), LOG_GAP_MAX), WALL_LOG_GAP_MAX)
@@ -367,8 +397,15 @@ def wall_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tupl
         root = math.sqrt(one_minus)
         wedge, squeeze = root * math.cos(beta), math.sin(beta)
         inner = math.atan2(squeeze, wedge)
-        if long and -math.pi + LEAVING_WALL < inner < -LEAVING_WALL:
-            return long_shape_scalar(eps, beta, ratio)
+        if -math.pi + LEAVING_WALL < inner < -LEAVING_WALL:
+            if long:
+                return long_shape_scalar(eps, beta, ratio)
+            if leaving is not None:
+                edge = math.asinh(1.0 / (3.0 * root))
+                motion = math.asinh(math.cos(beta) / squeeze) / edge
+                scaled, angle = (float(bisplev(log_gap, motion, tck)) for tck in leaving)
+                size = math.exp(scaled) / (squeeze * squeeze)
+                return size * math.cos(angle), -size * squeeze * math.sin(angle)
         size = math.hypot(wedge, squeeze)
         radial, tangential = (float(bisplev(log_gap, inner, tck)) for tck in knots)
         return size * radial / (one_minus * root), size * tangential / one_minus
@@ -431,18 +468,24 @@ def wall_shape(model: str, ratio: float, eps: FloatArray, beta: FloatArray) -> F
     """``G(eps, beta)`` beyond ``eps = 0.995``, shape ``(2, n)`` [-].
 
     From :func:`wall_shape_table` (the scaling of
-    :func:`jointwear.lubrication.mobility.to_wall`); the long bearing in closed form
-    where the pin leaves the wall (:data:`LEAVING_WALL`).
+    :func:`jointwear.lubrication.mobility.to_wall`); where the pin leaves the wall
+    (:data:`~jointwear.lubrication.mobility.LEAVING_WALL`) the long bearing in closed
+    form, the finite one (half-Sommerfeld) from :func:`leaving_shape_table`.
     """
     wall_radial, wall_tangential = wall_shape_table(model, ratio)
     inner, size = wall_direction(eps, beta)
     log_gap = np.clip(-np.log10(np.maximum(1.0 - eps, 1e-300)), LOG_GAP_MAX, WALL_LOG_GAP_MAX)
     values = np.stack([wall_radial.ev(log_gap, inner), wall_tangential.ev(log_gap, inner)])
     out = from_wall(values, eps, size)
+    leaving = leaving_the_wall(inner)
     if model == "long":
-        leaving = (-np.pi + LEAVING_WALL < inner) & (inner < -LEAVING_WALL)
         for k in np.flatnonzero(leaving):
             out[:, k] = long_shape_scalar(float(eps[k]), float(beta[k]), ratio)
+    elif model == "finite" and np.any(leaving):
+        motion = leaving_direction(eps[leaving], beta[leaving])
+        scaled, angle = leaving_shape_table(ratio)
+        at = (log_gap[leaving], motion)
+        out[:, leaving] = from_leaving(np.stack([scaled.ev(*at), angle.ev(*at)]), beta[leaving])
     return out
 
 
@@ -526,9 +569,10 @@ class OrbitSolver:
         """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity.
 
         ``tables``: knots and coefficients of :func:`shape_table` and of
-        :func:`wall_shape_table` (``tx, ty, radial, tangential`` each).
+        :func:`wall_shape_table` (``tx, ty, radial, tangential`` each), and the
+        finite bearing's :func:`leaving_shape_table` (``ty, W, angle``).
         """
-        codes = {"short": 0.0, "long": 3.0, "finite": 1.0, "finite-reynolds": 1.0}
+        codes = {"short": 0.0, "long": 3.0, "finite": 4.0, "finite-reynolds": 1.0}
         joint = (
             self.clearance,
             self.roughness,
@@ -540,14 +584,19 @@ class OrbitSolver:
         )
         spline = self.asperity_spline
         asperity = (np.ascontiguousarray(spline.x), np.ascontiguousarray(spline.c[:, :, None]))
+        unused = np.zeros(8)
         if self.model == "short":
-            unused = np.zeros(8)
-            tables = (unused,) * 8
+            tables = (unused,) * 11
         else:
             radial, tangential = shape_table(self.model, self.ratio)
             tables = (*radial.tck, tangential.tck[2])
             radial, tangential = wall_shape_table(self.model, self.ratio)
             tables += (*radial.tck, tangential.tck[2])
+            if self.model == "finite":  # the leaving table: the wall table's s knots
+                scaled, angle = leaving_shape_table(self.ratio)
+                tables += (scaled.tck[1], scaled.tck[2], angle.tck[2])
+            else:
+                tables += (unused,) * 3
         tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
         return joint, asperity, self.memory, tables, DIRECTION_NODES
 

@@ -89,7 +89,10 @@ def inverse_sommerfeld_angle(gamma: FloatArray, eps: float) -> FloatArray:
 
 
 def film_system(
-    eps: float, half_length: float, grid: tuple[int, int] | None = None
+    eps: float,
+    half_length: float,
+    grid: tuple[int, int] | None = None,
+    crowding: float | None = None,
 ) -> tuple[FloatArray, FloatArray, csc_matrix]:
     """The finite-difference Reynolds operator of the bushing's half on the grid.
 
@@ -106,6 +109,10 @@ def film_system(
     grid : tuple of int
         Angle nodes and axial cells [-] (a finer grid for films close to the wall);
         ``ANGLE_NODES`` and ``AXIAL_CELLS`` if None.
+    crowding : float
+        The eccentricity of the Sommerfeld angle the grid is uniform in [-]: ``eps`` if
+        None; a smaller one crowds fewer nodes at the smallest film and leaves more on
+        the wide side (the film of a pin leaving the wall, whose pressure lies there).
 
     Returns
     -------
@@ -117,13 +124,14 @@ def film_system(
     angle_nodes, axial_cells = grid or (ANGLE_NODES, AXIAL_CELLS)
     step = 2.0 * np.pi / angle_nodes
     gamma = step * np.arange(angle_nodes)
-    root = np.sqrt(1.0 - eps * eps)
+    mapped = eps if crowding is None else crowding
+    root = np.sqrt(1.0 - mapped * mapped)
 
     def stretch(g: FloatArray) -> FloatArray:  # d theta / d gamma
-        return root / (1.0 - eps * np.cos(g))
+        return root / (1.0 - mapped * np.cos(g))
 
     def film(g: FloatArray) -> FloatArray:
-        return 1.0 + eps * np.cos(inverse_sommerfeld_angle(g, eps))
+        return 1.0 + eps * np.cos(inverse_sommerfeld_angle(g, mapped))
 
     mid = gamma + 0.5 * step
     flux = film(mid) ** 3 / stretch(mid) / step**2  # at gamma_{i+1/2}
@@ -138,11 +146,14 @@ def film_system(
     axial[0, 1] = 2.0  # symmetric about the middle of the bushing
     weight = stretch(gamma) * film(gamma) ** 3 / dz**2
     matrix = kron(identity(axial_cells), around) + kron(axial.tocsr(), diags(weight))
-    return inverse_sommerfeld_angle(gamma, eps), stretch(gamma), matrix.tocsc()
+    return inverse_sommerfeld_angle(gamma, mapped), stretch(gamma), matrix.tocsc()
 
 
 def reynolds_solutions(
-    eps: float, half_length: float, grid: tuple[int, int] | None = None
+    eps: float,
+    half_length: float,
+    grid: tuple[int, int] | None = None,
+    crowding: float | None = None,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Full-film solutions ``Pi_w`` (``beta = 0``) and ``Pi_s`` (``beta = pi/2``) on the grid.
 
@@ -154,6 +165,8 @@ def reynolds_solutions(
         ``L / (2R)`` [-].
     grid : tuple of int
         Angle nodes and axial cells [-] (:func:`film_system`).
+    crowding : float
+        The grid's Sommerfeld-angle eccentricity [-] (:func:`film_system`).
 
     Returns
     -------
@@ -162,7 +175,7 @@ def reynolds_solutions(
         ``(AXIAL_CELLS + 1, ANGLE_NODES)`` from the middle (row 0) to the end [-].
     """
     angle_nodes, axial_cells = grid or (ANGLE_NODES, AXIAL_CELLS)
-    theta, stretch, matrix = film_system(eps, half_length, grid)
+    theta, stretch, matrix = film_system(eps, half_length, grid, crowding)
     solver = splu(matrix)
     fields = []
     for source in (-np.sin(theta), np.cos(theta)):
@@ -178,15 +191,18 @@ def tabulated_forces(
     half_length: float,
     directions: FloatArray,
     grid: tuple[int, int] | None = None,
+    crowding: float | None = None,
 ) -> FloatArray:
     """``G_r, G_t`` of the positive film for every direction ``beta``, shape ``(2, n)`` [-].
 
-    ``grid``: angle nodes and axial cells (:func:`film_system`; the usual if None) [-].
+    ``grid``: angle nodes and axial cells, ``crowding``: the Sommerfeld-angle
+    eccentricity of the grid (:func:`film_system`; the usual grid if None) [-].
     """
     angle_nodes, axial_cells = grid or (ANGLE_NODES, AXIAL_CELLS)
-    theta, wedge, squeeze = reynolds_solutions(eps, half_length, grid)
+    theta, wedge, squeeze = reynolds_solutions(eps, half_length, grid, crowding)
     step = 2.0 * np.pi / angle_nodes
-    stretch = np.sqrt(1.0 - eps * eps) / (1.0 - eps * np.cos(step * np.arange(angle_nodes)))
+    mapped = eps if crowding is None else crowding
+    stretch = np.sqrt(1.0 - mapped**2) / (1.0 - mapped * np.cos(step * np.arange(angle_nodes)))
     pressure = (
         np.cos(directions)[:, None, None] * wedge + np.sin(directions)[:, None, None] * squeeze
     )
