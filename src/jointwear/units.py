@@ -530,8 +530,9 @@ def _magnitude(value: Any, target: str, expected: str, key: str, angle_power: in
         raise ConfigError(f"{key}: expected a number or a quantity string, got {shown(value)}")
     conversion = f"{target}|{'' if angle_power is None else angle_power}"
     known = quantity_memo.recall(value, conversion)
-    if known is None:
-        known = _known_unit_magnitude(value, conversion)
+    parts = None if known is not None else _number_and_unit(value)
+    if parts is not None:
+        known = _known_unit_magnitude(parts, conversion)
     if known is not None:
         return known
     quantity = parse_quantity(value, key)
@@ -544,16 +545,16 @@ def _magnitude(value: Any, target: str, expected: str, key: str, angle_power: in
     magnitude, turns = _pint_magnitude(value, quantity, unit, expected, key, angle_power)
     if math.isfinite(magnitude) and abs(magnitude) <= MAX_MAGNITUDE:
         quantity_memo.remember(value, conversion, magnitude)
-        _remember_unit(value, quantity, unit, conversion, turns, magnitude)
+        if parts is not None:
+            _remember_unit(parts, quantity, unit, conversion, turns, magnitude)
     return magnitude
 
 
-def _known_unit_magnitude(value: str, conversion: str) -> float | None:
+def _known_unit_magnitude(parts: tuple[str, str], conversion: str) -> float | None:
     """The SI magnitude of a number in a unit pint read before for ``conversion``: the
     number times pint's factor (and the turn factor of a rate), as pint computes it."""
-    parts = _number_and_unit(value)
-    scale = None if parts is None else quantity_memo.recall_unit(parts[1], conversion)
-    if parts is None or scale is None:
+    scale = quantity_memo.recall_unit(parts[1], conversion)
+    if scale is None:
         return None
     factor, turns = scale
     magnitude = float(parts[0]) * factor * turns
@@ -561,14 +562,17 @@ def _known_unit_magnitude(value: str, conversion: str) -> float | None:
 
 
 def _remember_unit(
-    value: str, quantity: Any, unit: pint.Unit, conversion: str, turns: float, magnitude: float
+    parts: tuple[str, str],
+    quantity: Any,
+    unit: pint.Unit,
+    conversion: str,
+    turns: float,
+    magnitude: float,
 ) -> None:
-    """Keep the unit of a text of one number and a unit with pint's factor into ``unit``,
-    where pint read the text as that number in that unit (no offset, no scale) and its
-    answer was the number times the factor (and ``turns``), bit for bit."""
-    parts = _number_and_unit(value)
-    if parts is None:
-        return
+    """Keep the unit of a text of one number and a unit (``parts``, from
+    :func:`_number_and_unit`) with pint's factor into ``unit``, where pint read the text
+    as that number in that unit (no offset, no scale) and its answer was the number
+    times the factor (and ``turns``), bit for bit."""
     number, text = float(parts[0]), parts[1]
     units = registry()
     try:
