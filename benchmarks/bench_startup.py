@@ -107,11 +107,19 @@ def heavy_modules(command: list[str], env: dict[str, str]) -> str:
 def units_memo(out: Path) -> None:
     """A memo of the units of the paper's config and none of its texts, in ``out``.
 
-    Filled by a run of the paper's config into a memo folder of its own; its texts are
-    then dropped, as if the units had been read in other texts.
+    Filled by a run of the paper's config into a memo folder of its own (without the
+    package's seed); its texts are then dropped, as if the units had been read in other
+    texts.
     """
     folder = out / "memo-of-units"
-    subprocess.run(run_command(), env=environment(**{MEMO: str(folder)}), capture_output=True)
+    # without the package's seed, which would leave pint nothing to read
+    script = (
+        "from jointwear import quantity_memo\nquantity_memo.SEED = None\n"
+        f"from jointwear.cli import main\nmain({run_command()[3:]!r})"
+    )
+    subprocess.run(
+        [sys.executable, "-c", script], env=environment(**{MEMO: str(folder)}), capture_output=True
+    )
     data = json.loads((folder / FILE_NAME).read_text())
     if not data["units"]:
         raise SystemExit("the run remembered no units")
@@ -124,6 +132,15 @@ def first_run_script(out: Path) -> str:
         f"import shutil, pathlib\nfolder = pathlib.Path({str(out / 'units-memo')!r})\n"
         f"folder.mkdir(exist_ok=True)\n"
         f"shutil.copyfile({str(out / 'units-only.json')!r}, folder / {FILE_NAME!r})\n"
+        f"from jointwear.cli import main\nmain({run_command()[3:]!r})"
+    )
+
+
+def fresh_install_script(out: Path) -> str:
+    """A run of the paper's config from an empty memo folder, as after a fresh install:
+    the memo begins from the package's seed (removed first, ~1 ms)."""
+    return (
+        f"import shutil\nshutil.rmtree({str(out / 'fresh-memo')!r}, ignore_errors=True)\n"
         f"from jointwear.cli import main\nmain({run_command()[3:]!r})"
     )
 
@@ -173,6 +190,9 @@ def main() -> None:
     # starts from a memo of the paper's units alone, copied in first (~1 ms)
     units_only = "run, nlcp, first run, units read before"
     cases[units_only] = [sys.executable, "-c", first_run_script(out)]
+    # a fresh install's first run: an empty memo folder, which begins from the seed
+    fresh = "run, nlcp, fresh install (empty memo folder)"
+    cases[fresh] = [sys.executable, "-c", fresh_install_script(out)]
     baseline = checkout(args.baseline) if args.baseline else None
     commands = {}
     units_memo(out)
@@ -180,6 +200,8 @@ def main() -> None:
         memo_env = {MEMO: ""} if name == no_memo else memo
         if name == units_only:
             memo_env = {MEMO: str(out / "units-memo")}
+        if name == fresh:
+            memo_env = {MEMO: str(out / "fresh-memo")}
         commands[name] = (command, environment(**memo_env))
         if baseline is not None:
             # a memo folder of its own: a memo of other code is read as empty and replaced,

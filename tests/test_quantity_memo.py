@@ -23,10 +23,16 @@ SRC = Path(__file__).resolve().parents[1] / "src"
 PAPER = Path(__file__).resolve().parent / "data" / "paper_joint.toml"
 
 
-def fresh_process(code: str, memo: Path | str) -> dict:
-    """The JSON ``code`` prints, run in a fresh interpreter whose memo folder is ``memo``."""
+#: a fresh interpreter's memo begins empty, not from the package's seed
+NO_SEED = "from jointwear import quantity_memo\nquantity_memo.SEED = None\n"
+
+
+def fresh_process(code: str, memo: Path | str, seed: bool = False) -> dict:
+    """The JSON ``code`` prints, run in a fresh interpreter whose memo folder is ``memo``
+    (beginning from the package's seed if ``seed``)."""
     path = os.pathsep.join([str(SRC), os.environ.get("PYTHONPATH", "")])
     env = {**os.environ, "PYTHONPATH": path, quantity_memo.ENVIRONMENT: str(memo)}
+    code = code if seed else NO_SEED + code
     done = subprocess.run(
         [sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=120
     )
@@ -53,8 +59,9 @@ def test_a_config_read_before_is_read_again_without_pint(tmp_path):
 
 
 def test_no_folder_no_memo(tmp_path):
-    assert fresh_process(LOAD, "")["pint"]
-    assert fresh_process(LOAD, "")["pint"]
+    # and no seed: with the memo turned off every text goes to pint
+    assert fresh_process(LOAD, "", seed=True)["pint"]
+    assert fresh_process(LOAD, "", seed=True)["pint"]
 
 
 def test_a_memo_of_other_code_or_another_pint_is_not_read(tmp_path):
@@ -185,3 +192,41 @@ def test_a_unit_with_an_offset_is_not_kept():
     assert to_si_unit("20 kelvin", "K") == 20.0
     assert quantity_memo.knows_unit("kelvin")
     assert not quantity_memo.knows_unit("degC")
+
+
+SEED = json.loads(quantity_memo.SEED.read_text(encoding="utf-8"))
+STALE = "the seed is stale: regenerate it with `python -m tests.units_seed`"
+
+
+def test_the_seed_is_made_for_this_units_module():
+    assert SEED["stamp"]["units"] == quantity_memo.seed_stamp()["units"], STALE
+
+
+def test_the_seed_holds_pints_answers_bit_for_bit():
+    from tests.units_seed import read_units
+
+    now = read_units()
+    for unit, targets in SEED["units"].items():
+        for target, answer in targets.items():
+            # JSON keeps a float's shortest repr, which reads back exactly
+            assert now["units"][unit][target] == answer, (unit, target)
+    if now["stamp"] == SEED["stamp"]:
+        assert now == SEED, STALE
+
+
+def test_a_fresh_install_reads_the_paper_without_pint(tmp_path):
+    if quantity_memo.seed_stamp() != SEED["stamp"]:
+        pytest.skip(f"the seed was made by pint {SEED['stamp']['pint']}; {STALE}")
+    seeded = fresh_process(LOAD, tmp_path / "new", seed=True)
+    assert not seeded["pint"]
+    assert seeded["config"] == fresh_process(LOAD, "")["config"]
+
+
+def test_a_seed_of_another_pint_is_not_used(tmp_path):
+    other = {**SEED, "stamp": {**SEED["stamp"], "pint": "0.1"}}
+    (tmp_path / "seed.json").write_text(json.dumps(other))
+    code = (
+        "import pathlib\nfrom jointwear import quantity_memo\n"
+        f"quantity_memo.SEED = pathlib.Path({str(tmp_path / 'seed.json')!r})\n"
+    )
+    assert fresh_process(code + LOAD, tmp_path / "memo", seed=True)["pint"]

@@ -20,6 +20,16 @@ It is stamped with what the answers depend on: the source of :mod:`jointwear.uni
 (the package's definitions and its rules for angles and turns) and pint's installed
 files; a file of another stamp is read as empty and replaced. A folder that cannot be
 read or written is no error: the texts then go to pint, as without a memo.
+
+A memo begins (no file yet, or a file of another stamp) from the package's *seed*
+(:data:`SEED`): pint's factors for the units of the package's example configs and
+parameter sets, as a memo of those units would hold them, made by pint itself. It is
+used only where the installed pint is the one that made it (its version and its
+definition files, compared byte for byte by digest) and the units module is the one it
+was made for; otherwise the memo begins empty. So a fresh install's first run in these
+units imports no pint (nor the ``dask.base`` that pint imports where dask is
+installed). With the memo turned off (an empty :data:`ENVIRONMENT`) there is no seed
+either: every text goes to pint.
 """
 
 from __future__ import annotations
@@ -37,6 +47,7 @@ from pathlib import Path
 __all__ = [
     "ENVIRONMENT",
     "MAX_TEXTS",
+    "SEED",
     "folder",
     "has_unit",
     "knows_unit",
@@ -44,6 +55,7 @@ __all__ = [
     "recall_unit",
     "remember",
     "remember_unit",
+    "seed_stamp",
     "stamp",
 ]
 
@@ -55,6 +67,11 @@ MAX_TEXTS = 4096
 FILE_NAME = "quantities.json"
 #: the source whose rules the answers follow
 UNITS_SOURCE = Path(__file__).with_name("units.py")
+#: the seed of a new memo: pint's factors for the units of the package's own configs
+#: (None: no seed)
+SEED: Path | None = Path(__file__).with_name("data") / "units_seed.json"
+#: pint's definition files whose content the seed's answers depend on
+PINT_DEFINITIONS = ("default_en.txt", "constants_en.txt")
 
 _lock = threading.Lock()
 
@@ -87,6 +104,40 @@ def stamp() -> str:
     return digest.hexdigest()[:32]
 
 
+def seed_stamp() -> dict[str, str]:
+    """What the seed's answers depend on, by content: the units module's source, pint's
+    version and pint's definition files (nothing of where they are installed)."""
+    from importlib import metadata
+
+    spec = find_spec("pint")
+    if spec is None or not spec.origin:
+        return {}
+    try:
+        version = metadata.version("pint")
+        definitions = hashlib.sha256()
+        for name in PINT_DEFINITIONS:
+            definitions.update((Path(spec.origin).parent / name).read_bytes())
+    except (OSError, metadata.PackageNotFoundError):
+        return {}
+    units = hashlib.sha256(UNITS_SOURCE.read_bytes()).hexdigest()[:32]
+    return {"units": units, "pint": version, "definitions": definitions.hexdigest()[:32]}
+
+
+def _seed_units() -> dict[str, dict]:
+    """The seed's units (unit text -> {target: [factor, turn factor]}) where it was made
+    by the installed pint for this units module, else none."""
+    if SEED is None:
+        return {}
+    try:
+        seed = json.loads(SEED.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    if not isinstance(seed, dict) or not isinstance(seed.get("units"), dict):
+        return {}
+    stamp_now = seed_stamp()
+    return seed["units"] if stamp_now and seed.get("stamp") == stamp_now else {}
+
+
 @cache
 def _memo() -> dict[str, dict]:
     """The memo of this process: ``texts`` (text -> {target: SI magnitude}) and ``units``
@@ -98,7 +149,9 @@ def _memo() -> dict[str, dict]:
             data = json.loads((where / FILE_NAME).read_text(encoding="utf-8"))
         except (OSError, ValueError):
             data = None
-    if not isinstance(data, dict) or data.get("stamp") != stamp():
+    if where is not None and (not isinstance(data, dict) or data.get("stamp") != stamp()):
+        data = {"units": _seed_units()}
+    elif not isinstance(data, dict):
         data = {}
     return {
         part: data[part] if isinstance(data.get(part), dict) else {} for part in ("texts", "units")
