@@ -15,28 +15,31 @@ Every process starts from bytecode, as an installed package does (``benchlib.env
 
 The processes share a memo of quantity texts of their own (``jointwear.quantity_memo``, in
 the run's temporary folder), filled by the warm-up runs: a run of the paper's config then
-imports no pint, and no dask where dask is installed. The row ``no memo`` runs with the
-memo turned off (``JOINTWEAR_CACHE_DIR=''``): every text read by pint. The row ``first
-run, units read before`` starts each run from a memo of the paper's units alone (its
-texts dropped, copied in first): a config's first run in units read before.
+imports no pint, and no dask where dask is installed. The row ``fresh install`` starts each
+run from an empty memo folder (removed first), as a fresh install's first run does: the
+memo begins from the package's seed of pint's factors for the examples' units. The row
+``first run, units read before`` starts each run from a memo of the paper's units alone
+(made without the seed, its texts dropped, copied in first). The row ``no memo`` runs with
+the memo turned off (``JOINTWEAR_CACHE_DIR=''``, no seed either): every text read by pint,
+which imports ``dask.base`` where dask is installed.
 
-Measured in one run per install, ``--baseline fd952ba --repeat 7``, on the shared 2-core
-machine under heavy load (load average 6-8), ratio = median of the run-by-run ratios:
+Measured ``--baseline fd952ba --repeat 7`` with dask installed, on the shared 2-core
+machine (load average 3.5-8), ratio = median of the run-by-run ratios:
 
-==========================================  ===============  ===============
-one revolution, paper case                  no dask          dask installed
-==========================================  ===============  ===============
-plain runs (memo of the texts)              0.68-0.83        0.78-0.85
-``--out DIR --no-plots``                    0.54             0.55
-first run, units read before                0.64             0.76
-no memo                                     0.96             1.22
-nlcp run, median wall now / fd952ba         1.260 / 1.438 s  1.378 / 1.696 s
-==========================================  ===============  ===============
+==========================================  ===============
+one revolution, paper case                  dask installed
+==========================================  ===============
+plain runs (memo of the texts)              0.76-0.82
+``--out DIR --no-plots``                    0.55
+fresh install (empty memo folder)           0.78
+first run, units read before                0.81
+no memo (turned off: pint and dask.base)    1.22
+nlcp run, median wall now / fd952ba         0.941 / 1.309 s
+==========================================  ===============
 
 (fd952ba hid dask from pint and xarray by editing ``sys.modules``.) A ``--out`` run
 writes a single joint's result.nc with h5netcdf from the plain arrays
-(``jointwear.results.netcdf_file``): no xarray, pandas or dask. With the memo off, pint
-imports ``dask.base`` where dask is installed: the one row above 1.05. docs/performance.md,
+(``jointwear.results.netcdf_file``): no xarray, pandas or dask. docs/performance.md,
 *Start-up*, has every row.
 """
 
