@@ -202,14 +202,16 @@ class Orbit:
     periodicity_error: float
 
 
-def scalar_spline(spline: CubicSpline) -> Callable[[float], NDArray[np.float64]]:
+def scalar_spline(
+    breaks: FloatArray, coefficients: FloatArray
+) -> Callable[[float], NDArray[np.float64]]:
     """A cubic spline evaluated at one point without scipy's call overhead.
 
-    Horner's rule on the spline's coefficients (``spline.c[power, interval, ...]``),
-    the interval found with :func:`bisect.bisect_right`; outside the breakpoints the
-    end polynomials extend, as :class:`scipy.interpolate.CubicSpline` does.
+    Horner's rule on the spline's coefficients (``c[power, interval, ...]`` of a
+    :class:`scipy.interpolate.CubicSpline` with ``breaks``), the interval found with
+    :func:`bisect.bisect_right`; outside the breakpoints the end polynomials extend, as
+    :class:`scipy.interpolate.CubicSpline` does.
     """
-    breaks, coefficients = spline.x, spline.c
     last = breaks.size - 2
 
     def value(x: float) -> NDArray[np.float64]:
@@ -348,6 +350,37 @@ def leaving_shape_table(ratio: float) -> RectBivariateSpline:
         RectBivariateSpline(log_gap, leaving, values[..., 0]),
         RectBivariateSpline(log_gap, leaving, values[..., 1]),
     )
+
+
+@cache
+def kernel_tables(model: str, ratio: float) -> tuple[FloatArray, ...]:
+    """The compiled kernel's ``tables`` of a film model at one ``L/D``, once per process.
+
+    Knots and coefficients of :func:`shape_table` and of :func:`wall_shape_table`
+    (``tx, ty, radial, tangential`` each), and the finite bearing's
+    :func:`leaving_shape_table` (``ty, W, angle``); placeholders where the model has
+    none (the short bearing in closed form).
+
+    Parameters
+    ----------
+    model : str
+        ``"short"``, ``"long"``, ``"finite"`` or ``"finite-reynolds"``.
+    ratio : float
+        ``L / D`` [-].
+    """
+    unused = np.zeros(8)
+    if model == "short":
+        return (unused,) * 11
+    radial, tangential = shape_table(model, ratio)
+    tables = (*radial.tck, tangential.tck[2])
+    radial, tangential = wall_shape_table(model, ratio)
+    tables += (*radial.tck, tangential.tck[2])
+    if model == "finite":  # the leaving table: the wall table's s knots
+        scaled, angle = leaving_shape_table(ratio)
+        tables += (scaled.tck[1], scaled.tck[2], angle.tck[2])
+    else:
+        tables += (unused,) * 3
+    return tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
 
 
 def wrap_to_pi(angle: ArrayLike) -> FloatArray:
@@ -558,12 +591,14 @@ class OrbitSolver:
         )
         # a cubic spline: a stiff integrator needs a smooth force (linear pieces stall it)
         self.asperity_spline = CubicSpline(self.gaps, forces)
-        self.asperity_at = scalar_spline(self.asperity_spline)
+        self.asperity_at = scalar_spline(self.asperity_spline.x, self.asperity_spline.c)
         self.cutoff = cutoff
         self.roughness = roughness
         #: the compiled kernel's last direction of motion and the target direction of
         #: the film's force it was found for (NaN: none yet) [rad]
         self.memory = np.array([math.nan, math.nan])
+        #: the asperity spline's breaks and coefficients for the compiled kernel
+        self.kernel_asperity: tuple[FloatArray, FloatArray] | None = None
 
     def kernel_arguments(self) -> tuple[Any, ...]:
         """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity.
@@ -582,23 +617,14 @@ class OrbitSolver:
             codes[self.model],
             float(LOG_GAP_MAX),
         )
-        spline = self.asperity_spline
-        asperity = (np.ascontiguousarray(spline.x), np.ascontiguousarray(spline.c[:, :, None]))
-        unused = np.zeros(8)
-        if self.model == "short":
-            tables = (unused,) * 11
-        else:
-            radial, tangential = shape_table(self.model, self.ratio)
-            tables = (*radial.tck, tangential.tck[2])
-            radial, tangential = wall_shape_table(self.model, self.ratio)
-            tables += (*radial.tck, tangential.tck[2])
-            if self.model == "finite":  # the leaving table: the wall table's s knots
-                scaled, angle = leaving_shape_table(self.ratio)
-                tables += (scaled.tck[1], scaled.tck[2], angle.tck[2])
-            else:
-                tables += (unused,) * 3
-        tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
-        return joint, asperity, self.memory, tables, DIRECTION_NODES
+        if self.kernel_asperity is None:
+            spline = self.asperity_spline
+            self.kernel_asperity = (
+                np.ascontiguousarray(spline.x),
+                np.ascontiguousarray(spline.c[:, :, None]),
+            )
+        tables = kernel_tables(self.model, self.ratio)
+        return joint, self.kernel_asperity, self.memory, tables, DIRECTION_NODES
 
     def steady_shape(self) -> Callable[[float, float], tuple[float, float]]:
         """:attr:`scalar_shape`, by the compiled kernel where it runs [-].
@@ -814,19 +840,21 @@ class CycleMap:
         compiled: bool = True,
     ) -> None:
         times = np.asarray(time, float)
-        samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
         self.ends = np.append(times, times[0] + period)
-        # a periodic cubic spline: the integrator sees no kink at every sample
-        spline = CubicSpline(
-            self.ends,
-            np.concatenate([samples, samples[:, :1]], axis=1),
-            axis=1,
-            bc_type="periodic",
-        )
-        self.inputs_at = scalar_spline(spline)
-        self.inputs = (np.ascontiguousarray(self.ends), np.ascontiguousarray(spline.c))
+        samples = np.empty((3, self.ends.size))
+        samples[0, :-1], samples[1, :-1], samples[2, :-1] = load_x, load_y, mean_speed
+        samples[:, -1] = samples[:, 0]
         self.solver = solver
         self.kernel = compiled_kernel() if compiled else None
+        # a periodic cubic spline: the integrator sees no kink at every sample (the
+        # compiled kernel's coefficients are scipy's, without its checks of the input)
+        if self.kernel is not None and self.ends.size > 3:
+            coefficients = self.kernel.periodic_spline(self.ends, samples)
+        else:
+            spline = CubicSpline(self.ends, samples, axis=1, bc_type="periodic")
+            coefficients = np.ascontiguousarray(spline.c)
+        self.inputs_at = scalar_spline(self.ends, coefficients)
+        self.inputs = (self.ends, coefficients)
         self.arguments = solver.kernel_arguments() if self.kernel is not None else ()
         #: right-hand side evaluations of the last cycle (compiled path)
         self.evaluations = 0
