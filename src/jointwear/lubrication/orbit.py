@@ -955,6 +955,48 @@ def secant_jacobian(starts: list[FloatArray], ends: list[FloatArray]) -> FloatAr
     return np.linalg.solve(steps.T, changes.T).T
 
 
+def closing_cycle(
+    cycle: CycleMap,
+    start: FloatArray,
+    predicted: float,
+    allowed: float,
+    mismatch: Callable[[FloatArray], tuple[float, float]],
+) -> FloatArray | None:
+    """The cycle from ``start`` at the proof's tolerance, where it proves the orbit [-].
+
+    A search that contracts so fast that its next cycle will close within ``SETTLED``
+    of the tolerance (``predicted``: the last mismatch times the last contraction)
+    would integrate that cycle and then the proof's from the same start
+    (:func:`searched`): the proof's cycle alone, integrated to ``INTEGRATION_RTOL``,
+    is returned where it closes. None where the search's tolerance is already the
+    proof's, where the next cycle is not predicted to close, or where it does not
+    close (the search goes on from ``start`` as before).
+
+    Parameters
+    ----------
+    cycle : CycleMap
+        The cycle map.
+    start : ndarray, shape (2,)
+        The next cycle's start, stretched coordinate [-].
+    predicted : float
+        The next cycle's mismatch ``|e(T) - e(0)| / c`` as predicted [-].
+    allowed : float
+        The tolerance of the mismatch [-].
+    mismatch : callable
+        ``path -> (|e(T) - e(0)| / c, allowed)`` [-].
+    """
+    searching = cycle.rtol
+    if searching == INTEGRATION_RTOL or not predicted <= SETTLED * allowed:
+        return None
+    cycle.rtol = INTEGRATION_RTOL
+    path = cycle(start)
+    error, allowed = mismatch(path)
+    if error <= allowed:
+        return path
+    cycle.rtol = searching
+    return None
+
+
 def fixed_point(
     cycle: CycleMap,
     path: FloatArray,
@@ -990,6 +1032,11 @@ def fixed_point(
         error, allowed = mismatch(path)
         if error <= allowed or error > FAST_CONTRACTION * previous:
             break
+        # (no contraction measured after the first cycle: nothing predicted)
+        predicted = error * error / previous if cycles > 1 else math.nan
+        proved = closing_cycle(cycle, path[:, -1], predicted, allowed, mismatch)
+        if proved is not None:
+            return proved
         previous = error
         path = cycle(path[:, -1])
         starts.append(path[:, 0])
