@@ -1277,13 +1277,23 @@ def periodic_orbit(
     # the gap matters against the roughness: a pin on its asperities needs no finer
     floor = GAP_FLOOR * solver.roughness / solver.clearance
 
+    last: list[Any] = [None, (math.nan, math.nan)]
+
     def mismatch(path: FloatArray) -> tuple[float, float]:
         """``|e(T) - e(0)| / c`` and the tolerance it must meet [-]."""
-        # the least gap 1 - eps = 1 / (1 + |q|) at the largest |q|: no need to unstretch
-        # the whole path, called once per cycle integrated
-        gap = max(1.0 / (1.0 + float(np.hypot(path[0], path[1]).max())), floor)
-        ends = unstretched(path[:, [0, -1]])
-        return float(np.hypot(*(ends[:, 1] - ends[:, 0]))), tolerance * gap
+        # asked several times of a cycle: the last cycle's answer kept
+        if path is last[0]:
+            return last[1]
+        # the least gap 1 - eps = 1 / (1 + |q|) at the largest |q| (found by |q|^2: a
+        # hypot per sample costs more than the rest): no need to unstretch the whole
+        # path; its ends unstretched as scalars
+        far = int(np.argmax(path[0] * path[0] + path[1] * path[1]))
+        gap = max(1.0 / (1.0 + math.hypot(path[0, far], path[1, far])), floor)
+        x0, y0, x1, y1 = path[0, 0], path[1, 0], path[0, -1], path[1, -1]
+        norm0, norm1 = 1.0 + math.hypot(x0, y0), 1.0 + math.hypot(x1, y1)
+        error = math.hypot(x1 / norm1 - x0 / norm0, y1 / norm1 - y0 / norm0)
+        last[:] = path, (float(error), tolerance * gap)
+        return last[1]
 
     start = np.asarray(start, float)
     # where the asperities cannot hold the pin at any step, a pin started on the wall or
