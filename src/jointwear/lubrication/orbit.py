@@ -778,7 +778,8 @@ def unstretched(stretched_state: ArrayLike) -> FloatArray:
 
 
 class Settled(Exception):
-    """A start of the root finder whose cycle closes within ``SETTLED`` of the tolerance.
+    """A start of the root finder whose cycle closes within ``SETTLED`` of the tolerance,
+    or whose cycle at the proof's tolerance closes within it (:func:`closing_cycle`).
 
     Parameters
     ----------
@@ -923,9 +924,14 @@ def residual(cycle: CycleMap, initial: FloatArray) -> FloatArray:
     PinOnWall
         Where the start's gap ``1 - eps = 1 / (1 + |q|)`` is below ``cycle.wall_gap``.
     """
-    if 1.0 / (1.0 + float(np.hypot(initial[0], initial[1]))) < cycle.wall_gap:
+    if not off_wall(cycle, initial):
         raise PinOnWall(np.array(initial, float))
     return cycle(initial)[:, -1] - initial
+
+
+def off_wall(cycle: CycleMap, initial: FloatArray) -> bool:
+    """Whether the start's gap ``1 - eps = 1 / (1 + |q|)`` is ``cycle.wall_gap`` or more."""
+    return 1.0 / (1.0 + float(np.hypot(initial[0], initial[1]))) >= cycle.wall_gap
 
 
 def secant_jacobian(starts: list[FloatArray], ends: list[FloatArray]) -> FloatArray | None:
@@ -956,21 +962,16 @@ def secant_jacobian(starts: list[FloatArray], ends: list[FloatArray]) -> FloatAr
 
 
 def closing_cycle(
-    cycle: CycleMap,
-    start: FloatArray,
-    predicted: float,
-    allowed: float,
-    mismatch: Callable[[FloatArray], tuple[float, float]],
+    cycle: CycleMap, start: FloatArray, mismatch: Callable[[FloatArray], tuple[float, float]]
 ) -> FloatArray | None:
-    """The cycle from ``start`` at the proof's tolerance, where it proves the orbit [-].
+    """The cycle from ``start`` at the proof's tolerance, where it closes [-].
 
-    A search that contracts so fast that its next cycle will close within ``SETTLED``
-    of the tolerance (``predicted``: the last mismatch times the last contraction)
-    would integrate that cycle and then the proof's from the same start
-    (:func:`searched`): the proof's cycle alone, integrated to ``INTEGRATION_RTOL``,
-    is returned where it closes. None where the search's tolerance is already the
-    proof's, where the next cycle is not predicted to close, or where it does not
-    close (the search goes on from ``start`` as before).
+    A search whose next cycle will close would integrate it and then the proof's cycle
+    from the same start (:func:`searched`): the proof's cycle alone, integrated to
+    ``INTEGRATION_RTOL``, is returned where it closes within the tolerance (the
+    proof's test). None where the search's tolerance is already the proof's or where
+    the cycle does not close; the search then goes on from ``start`` as before, at its
+    own tolerance.
 
     Parameters
     ----------
@@ -978,15 +979,11 @@ def closing_cycle(
         The cycle map.
     start : ndarray, shape (2,)
         The next cycle's start, stretched coordinate [-].
-    predicted : float
-        The next cycle's mismatch ``|e(T) - e(0)| / c`` as predicted [-].
-    allowed : float
-        The tolerance of the mismatch [-].
     mismatch : callable
         ``path -> (|e(T) - e(0)| / c, allowed)`` [-].
     """
     searching = cycle.rtol
-    if searching == INTEGRATION_RTOL or not predicted <= SETTLED * allowed:
+    if searching == INTEGRATION_RTOL:
         return None
     cycle.rtol = INTEGRATION_RTOL
     path = cycle(start)
@@ -1012,8 +1009,12 @@ def fixed_point(
     the root finder asks again elsewhere, forward differences
     (:func:`scipy.optimize.approx_fprime`, MINPACK's step). It stops at the first start
     whose cycle closes within ``SETTLED`` of the tolerance (:class:`Settled`): its
-    further steps would move the start by the integration's error only. Returns the
-    path of the last cycle integrated, periodic or not (the caller checks ``mismatch``).
+    further steps would move the start by the integration's error only. Where the
+    search will close with its next cycle (plain repetition contracting that fast, or
+    the root finder's last start within the tolerance), that cycle is integrated at the
+    proof's tolerance (:func:`closing_cycle`) and ends the search where it closes.
+    Returns the path of the last cycle integrated, periodic or not (the caller checks
+    ``mismatch``).
 
     Parameters
     ----------
@@ -1032,11 +1033,13 @@ def fixed_point(
         error, allowed = mismatch(path)
         if error <= allowed or error > FAST_CONTRACTION * previous:
             break
-        # (no contraction measured after the first cycle: nothing predicted)
-        predicted = error * error / previous if cycles > 1 else math.nan
-        proved = closing_cycle(cycle, path[:, -1], predicted, allowed, mismatch)
-        if proved is not None:
-            return proved
+        # contracting so fast that the next cycle will close within SETTLED of the
+        # tolerance (the last mismatch times the last contraction; none measured after
+        # the first cycle): that cycle at the proof's tolerance
+        if cycles > 1 and error * error / previous <= SETTLED * allowed:
+            proved = closing_cycle(cycle, path[:, -1], mismatch)
+            if proved is not None:
+                return proved
         previous = error
         path = cycle(path[:, -1])
         starts.append(path[:, 0])
@@ -1052,6 +1055,15 @@ def fixed_point(
     secant = secant_jacobian(starts, ends)
 
     def function(initial: FloatArray) -> FloatArray:
+        # a root finder whose last start closed within the tolerance proposes one that
+        # closes better: its cycle at the proof's tolerance, kept where it closes
+        error, allowed = mismatch(cycle.path)
+        if (
+            error <= allowed
+            and off_wall(cycle, initial)
+            and closing_cycle(cycle, initial, mismatch) is not None
+        ):
+            raise Settled(initial)
         value = residual(cycle, initial)
         error, allowed = mismatch(cycle.path)
         if error <= SETTLED * allowed:
