@@ -281,8 +281,6 @@ def paper_pin_cycle(overrides: list[str]) -> tuple[OrbitSolver, tuple, np.ndarra
             "lubrication.lubricant=iso-vg-68",
             "lubrication.temperature=60 degC",
         ],
-        # the root finder's last start within the tolerance
-        ["lubrication.model=short-bearing", "lubrication.viscosity=0.3 Pa*s"],
     ],
 )
 def test_a_search_about_to_close_ends_with_the_proofs_cycle(monkeypatch, overrides):

@@ -778,8 +778,7 @@ def unstretched(stretched_state: ArrayLike) -> FloatArray:
 
 
 class Settled(Exception):
-    """A start of the root finder whose cycle closes within ``SETTLED`` of the tolerance,
-    or whose cycle at the proof's tolerance closes within it (:func:`closing_cycle`).
+    """A start of the root finder whose cycle closes within ``SETTLED`` of the tolerance.
 
     Parameters
     ----------
@@ -924,14 +923,9 @@ def residual(cycle: CycleMap, initial: FloatArray) -> FloatArray:
     PinOnWall
         Where the start's gap ``1 - eps = 1 / (1 + |q|)`` is below ``cycle.wall_gap``.
     """
-    if not off_wall(cycle, initial):
+    if 1.0 / (1.0 + float(np.hypot(initial[0], initial[1]))) < cycle.wall_gap:
         raise PinOnWall(np.array(initial, float))
     return cycle(initial)[:, -1] - initial
-
-
-def off_wall(cycle: CycleMap, initial: FloatArray) -> bool:
-    """Whether the start's gap ``1 - eps = 1 / (1 + |q|)`` is ``cycle.wall_gap`` or more."""
-    return 1.0 / (1.0 + float(np.hypot(initial[0], initial[1]))) >= cycle.wall_gap
 
 
 def secant_jacobian(starts: list[FloatArray], ends: list[FloatArray]) -> FloatArray | None:
@@ -1009,10 +1003,10 @@ def fixed_point(
     the root finder asks again elsewhere, forward differences
     (:func:`scipy.optimize.approx_fprime`, MINPACK's step). It stops at the first start
     whose cycle closes within ``SETTLED`` of the tolerance (:class:`Settled`): its
-    further steps would move the start by the integration's error only. Where the
-    search will close with its next cycle (plain repetition contracting that fast, or
-    the root finder's last start within the tolerance), that cycle is integrated at the
-    proof's tolerance (:func:`closing_cycle`) and ends the search where it closes.
+    further steps would move the start by the integration's error only. Where plain
+    repetition contracts so fast that its next cycle will close, that cycle is
+    integrated at the proof's tolerance (:func:`closing_cycle`) and ends the search
+    where it closes.
     Returns the path of the last cycle integrated, periodic or not (the caller checks
     ``mismatch``).
 
@@ -1055,15 +1049,6 @@ def fixed_point(
     secant = secant_jacobian(starts, ends)
 
     def function(initial: FloatArray) -> FloatArray:
-        # a root finder whose last start closed within the tolerance proposes one that
-        # closes better: its cycle at the proof's tolerance, kept where it closes
-        error, allowed = mismatch(cycle.path)
-        if (
-            error <= allowed
-            and off_wall(cycle, initial)
-            and closing_cycle(cycle, initial, mismatch) is not None
-        ):
-            raise Settled(initial)
         value = residual(cycle, initial)
         error, allowed = mismatch(cycle.path)
         if error <= SETTLED * allowed:
