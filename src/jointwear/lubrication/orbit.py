@@ -1297,7 +1297,7 @@ def periodic_orbit(
     # carried onto it by the root finder is posed again there (wall_orbit); kept if its
     # cycle closes
     wall = WALL_FILM_PARAMETER * solver.roughness / solver.clearance
-    capacity = -float(solver.asperity_force(1.0))
+    capacity = -float(solver.asperity_at(0.0))  # (asperity_force(1.0), the gap nil)
     cycle.wall_gap = wall if capacity < float(np.min(np.hypot(load_x, load_y))) else 0.0
     try:
         path = searched(cycle, start, mismatch, tolerance)
