@@ -15,9 +15,12 @@ of as many revolutions, and the ratio is that of the two CPU medians (a changing
 changes both alike); the last column is the number of cycles the orbit search integrated.
 The load average is printed at the start and the end.
 Target: a lubricated revolution within 2x of a dry one; the last measurement and where the
-time goes are in docs/lubrication.md (*Speed*). Last measured (25 repeats, two runs, load 3-4),
-one revolution's CPU ratio to the dry one: short bearing 0.3 Pa s 1.80-1.83, 0.03 Pa s
-1.73-1.78, finite length (ISO VG 68 at 60 degC) 2.07-2.10, long bearing (0.3 Pa s) 1.96-2.00.
+time goes are in docs/lubrication.md (*Speed*). Last measured (21 repeats, two runs taking
+turns with two of the code before, load 5.0-5.2), one revolution's CPU ratio to the dry one:
+short bearing 0.3 Pa s 1.60-1.62, 0.03 Pa s 1.56-1.61, finite length (ISO VG 68 at 60 degC)
+1.64-1.67 (3 cycles), long bearing (0.3 Pa s) 1.67-1.69 (10 cycles); ten revolutions 0.44-0.45
+(short) and 1.35-1.36 (finite). The code before in the same period: 1.66-1.83, 1.71-1.87,
+2.00-2.25, 1.88-1.95; 0.52-0.54 and 1.48-1.52.
 
 Run: ``python benchmarks/bench_lubrication.py [--repeats N] [--python-repeats N]``
 """

@@ -272,11 +272,46 @@ def paper_pin_cycle(overrides: list[str]) -> tuple[OrbitSolver, tuple, np.ndarra
     return lubrication.solver, arguments, lubrication.first_guess(cycle)
 
 
+@pytest.mark.parametrize(
+    "overrides",
+    [
+        # plain cycles that contract by 1e-4 a cycle: the next one is bound to close
+        [
+            "lubrication.model=finite-length",
+            "lubrication.lubricant=iso-vg-68",
+            "lubrication.temperature=60 degC",
+        ],
+    ],
+)
+def test_a_search_about_to_close_ends_with_the_proofs_cycle(monkeypatch, overrides):
+    """Where the search's next cycle will close, that cycle integrated at the proof's
+    tolerance ends it: the orbit is the one of the search that integrates that cycle at
+    its own tolerance and then the proof's, within the orbit's tolerance, in fewer
+    cycles; and it closes within the tolerance when integrated afresh."""
+    solver, arguments, guess = paper_pin_cycle(overrides)
+    fast = periodic_orbit(*arguments, guess)
+    with monkeypatch.context() as patch:
+        patch.setattr(orbit_module, "closing_cycle", lambda *_: None)
+        searched_on = periodic_orbit(*arguments, guess)
+    floor = solver.roughness / solver.clearance
+    allowed = 1e-3 * max(1.0 - fast.eccentricity_ratio.max(), floor)
+    shift = np.hypot(
+        fast.eccentricity_x - searched_on.eccentricity_x,
+        fast.eccentricity_y - searched_on.eccentricity_y,
+    )
+    assert shift.max() < allowed
+    assert fast.cycles < searched_on.cycles
+    start = np.array([fast.eccentricity_x[0], fast.eccentricity_y[0]])
+    end = unstretched(CycleMap(*arguments)(stretched(start))[:, -1])
+    assert np.hypot(*(end - start)) < allowed
+
+
 def test_the_secant_search_finds_the_plain_root_finders_orbit(monkeypatch):
     """A short-bearing pin whose plain cycles contract slowly (0.03 Pa s: the root
     finder runs): the orbit from the plain cycles' secant Jacobian, stopped where a cycle
     closes within a twentieth of the tolerance, is the one the root finder finds with its
-    forward differences and its own step tolerance, within the orbit's tolerance at every
+    forward differences and its own step tolerance (no cycle at the proof's tolerance
+    before it stops), within the orbit's tolerance at every
     step, in fewer cycles; and one more cycle from its start, integrated afresh, closes
     within the tolerance."""
     solver, arguments, guess = paper_pin_cycle(
@@ -286,6 +321,7 @@ def test_the_secant_search_finds_the_plain_root_finders_orbit(monkeypatch):
     with monkeypatch.context() as patch:
         patch.setattr(orbit_module, "SECANT_CONDITION", 0.0)
         patch.setattr(orbit_module, "SETTLED", 0.0)
+        patch.setattr(orbit_module, "closing_cycle", lambda *_: None)
         plain = periodic_orbit(*arguments, guess)
     floor = solver.roughness / solver.clearance
     allowed = 1e-3 * max(1.0 - fast.eccentricity_ratio.max(), floor)

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 import pytest
-from scipy.interpolate import bisplev
+from scipy.interpolate import CubicSpline, bisplev
 
 from jointwear.lubrication.orbit import (
     LEAVING_WALL,
@@ -71,6 +71,19 @@ def test_the_compiled_bicubic_spline_is_fitpacks(kernel):
     for x, y in rng.uniform([-0.5, -3.5], [3.5, 3.5], size=(100, 2)):
         expected = bisplev(x, y, (tx, ty, radial, 3, 3))
         assert kernel.bicubic(tx, ty, radial, x, y) == pytest.approx(expected, rel=1e-13, abs=1e-15)
+
+
+@pytest.mark.parametrize("samples", [4, 5, 9, 361])
+def test_the_compiled_periodic_spline_is_scipys(kernel, samples):
+    # uneven breaks and channels of different sizes, as a load cycle's (N, N, rad/s)
+    rng = np.random.default_rng(samples)
+    breaks = np.cumsum(rng.uniform(0.5, 1.5, samples))
+    values = rng.normal(size=(3, samples)) * np.array([[3e4], [1e3], [20.0]])
+    values[:, -1] = values[:, 0]
+    expected = CubicSpline(breaks, values, axis=1, bc_type="periodic").c
+    coefficients = kernel.periodic_spline(breaks, values)
+    scale = np.abs(expected).max(axis=(0, 1))
+    assert np.all(np.abs(coefficients - expected).max(axis=(0, 1)) <= 1e-13 * scale)
 
 
 def test_the_compiled_spline_slope_along_the_direction_is_fitpacks(kernel):

@@ -195,7 +195,8 @@ class LubricatedContact:
         #: the cycle and its orbit last solved (one per load cycle)
         self._kept: tuple[Any, Orbit, FilmRecord] | None = None
         #: the cycle, the node count and the asperity pressure along its orbit last found
-        self._pressure: tuple[Any, int, FloatArray] | None = None
+        #: (the flat indices of the nodes and steps it is not nil at, and its values)
+        self._pressure: tuple[Any, int, NDArray[np.intp], FloatArray] | None = None
 
     def first_guess(self, cycle: LoadCycle) -> FloatArray:
         """The film's steady equilibrium under the first step's load, at most 0.9 off
@@ -289,8 +290,16 @@ class LubricatedContact:
         as the contour wears).
         """
         kept = self._pressure
-        if kept is not None and kept[0] is cycle and kept[1] == nodes:
-            return kept[2].copy()
+        if kept is None or kept[0] is not cycle or kept[1] != nodes:
+            kept = (cycle, nodes, *self._touched(cycle, nodes))
+            self._pressure = kept
+        pressure = np.zeros((cycle.steps, nodes))
+        pressure.reshape(-1)[kept[2]] = kept[3]
+        return pressure
+
+    def _touched(self, cycle: LoadCycle, nodes: int) -> tuple[NDArray[np.intp], FloatArray]:
+        """The flat indices of the (step, node) pairs the asperities touch and their
+        pressure [Pa]."""
         orbit, _ = self.orbit(cycle)
         angles = 2.0 * np.pi * np.arange(nodes) / nodes
         # the pressure only at the nodes the asperities reach, a few per cent along an
@@ -307,13 +316,8 @@ class LubricatedContact:
         film = self.clearance * (1.0 - offset)
         within = film / self.roughness < FIT_OMEGA
         within &= (cycle.load > 0.0)[:, None]
-        rows = np.broadcast_to(np.arange(columns.shape[0])[:, None], columns.shape)
-        pressure = np.zeros((columns.shape[0], nodes))
-        pressure[rows[within], columns[within]] = asperity_pressure(
-            film[within], self.roughness, self.modulus, **self.asperity
-        )
-        self._pressure = (cycle, nodes, pressure)
-        return pressure.copy()
+        flat = (columns + nodes * np.arange(columns.shape[0])[:, None])[within]
+        return flat, asperity_pressure(film[within], self.roughness, self.modulus, **self.asperity)
 
     def centre(self, cycle: LoadCycle) -> FloatArray:
         """The pin centre's offset from the bushing centre at every step [m], (M, 2)."""

@@ -441,7 +441,9 @@ class ContactSolver:
         pressure = lubrication.asperity_pressure(cycle, contour.radius.size)
         record = lubrication.record(cycle)
         bulk = np.flatnonzero(record.bulk_load_fraction * cycle.load > 0.0)
-        if bulk.size:
+        if bulk.size == steps:  # (no copy of the rows in and out)
+            pressure += self._bulk_pressure(contour, cycle, bulk, facing)
+        elif bulk.size:
             pressure[bulk] += self._bulk_pressure(contour, cycle, bulk, facing)
         touching = np.count_nonzero(pressure > 0.0, axis=1)
         half_angle = 0.5 * touching * contour.dtheta

@@ -550,6 +550,92 @@ def direction_along(film, target, memory, nodes):
 
 
 @njit(cache=True)
+def _tridiagonal(lower, diagonal, upper, rhs):
+    """``rhs`` overwritten by the solution of a diagonally dominant tridiagonal system.
+
+    ``lower[i] = a[i + 1, i]``, ``upper[i] = a[i, i + 1]``; the elimination of LAPACK's
+    ``gtsv`` (what :func:`scipy.linalg.solve_banded` calls) where no row is swapped, as
+    none is in a diagonally dominant system; ``rhs`` has one column per channel.
+    """
+    d = diagonal.copy()
+    n = d.size
+    for i in range(n - 1):
+        factor = lower[i] / d[i]
+        d[i + 1] -= factor * upper[i]
+        for j in range(rhs.shape[1]):
+            rhs[i + 1, j] -= factor * rhs[i, j]
+    for j in range(rhs.shape[1]):
+        rhs[n - 1, j] /= d[n - 1]
+        for i in range(n - 2, -1, -1):
+            rhs[i, j] = (rhs[i, j] - upper[i] * rhs[i + 1, j]) / d[i]
+
+
+@njit(cache=True)
+def periodic_spline(breaks, values):
+    """``c[power, interval, channel]`` of the periodic cubic spline through ``values``.
+
+    :class:`scipy.interpolate.CubicSpline` with ``bc_type="periodic"`` (``values`` of
+    shape ``(channels, n)``, ``values[:, -1] == values[:, 0]``, at least four
+    breaks), its cyclic tridiagonal system for the slopes ``s`` solved as scipy solves
+    it: the system without its last row and column twice (:func:`_tridiagonal`), then
+    that row,
+
+    .. math:: \\Delta x_i s_{i-1} + 2(\\Delta x_{i-1} + \\Delta x_i) s_i
+        + \\Delta x_{i-1} s_{i+1} = 3(\\Delta x_i m_{i-1} + \\Delta x_{i-1} m_i),
+
+    ``m_i`` the slope of interval ``i``, and the Hermite cubic of each interval. The
+    same coefficients to round-off, without scipy's checks of the input (some
+    0.6 ms a cycle's load of 360 samples).
+    """
+    n = breaks.size
+    channels = values.shape[0]
+    dx = np.diff(breaks)
+    slope = np.empty((n - 1, channels))
+    for j in range(channels):
+        for i in range(n - 1):
+            slope[i, j] = (values[j, i + 1] - values[j, i]) / dx[i]
+    m = n - 2
+    diagonal = np.empty(m)
+    upper = np.empty(m - 1)
+    lower = np.empty(m - 1)
+    diagonal[0] = 2.0 * (dx[-1] + dx[0])
+    upper[0] = dx[-1]
+    for i in range(1, m):
+        diagonal[i] = 2.0 * (dx[i - 1] + dx[i])
+        lower[i - 1] = dx[i]
+        if i < m - 1:
+            upper[i] = dx[i - 1]
+    first = np.empty((m, channels))
+    for j in range(channels):
+        first[0, j] = 3.0 * (dx[0] * slope[-1, j] + dx[-1] * slope[0, j])
+        for i in range(1, m):
+            first[i, j] = 3.0 * (dx[i] * slope[i - 1, j] + dx[i - 1] * slope[i, j])
+    second = np.zeros((m, 1))
+    second[0, 0] = -dx[0]
+    second[-1, 0] = -dx[-3]
+    _tridiagonal(lower, diagonal, upper, first)
+    _tridiagonal(lower, diagonal, upper, second)
+    slopes = np.empty((n, channels))
+    corner = 2.0 * (dx[-1] + dx[-2]) + dx[-2] * second[0, 0] + dx[-1] * second[-1, 0]
+    for j in range(channels):
+        last = 3.0 * (dx[-1] * slope[-2, j] + dx[-2] * slope[-1, j])
+        s_last = (last - dx[-2] * first[0, j] - dx[-1] * first[-1, j]) / corner
+        for i in range(m):
+            slopes[i, j] = first[i, j] + s_last * second[i, 0]
+        slopes[m, j] = s_last
+        slopes[n - 1, j] = slopes[0, j]
+    c = np.empty((4, n - 1, channels))
+    for j in range(channels):
+        for i in range(n - 1):
+            t = (slopes[i, j] + slopes[i + 1, j] - 2.0 * slope[i, j]) / dx[i]
+            c[0, i, j] = t / dx[i]
+            c[1, i, j] = (slope[i, j] - slopes[i, j]) / dx[i] - t
+            c[2, i, j] = slopes[i, j]
+            c[3, i, j] = values[j, i]
+    return c
+
+
+@njit(cache=True)
 def _spline(breaks, coefficients, x, channel):
     """A cubic spline (``c[power, interval, channel]``) at ``x``, its ends extended."""
     k = _interval(breaks, x, 0, breaks.size - 2)

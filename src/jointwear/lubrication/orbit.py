@@ -202,14 +202,16 @@ class Orbit:
     periodicity_error: float
 
 
-def scalar_spline(spline: CubicSpline) -> Callable[[float], NDArray[np.float64]]:
+def scalar_spline(
+    breaks: FloatArray, coefficients: FloatArray
+) -> Callable[[float], NDArray[np.float64]]:
     """A cubic spline evaluated at one point without scipy's call overhead.
 
-    Horner's rule on the spline's coefficients (``spline.c[power, interval, ...]``),
-    the interval found with :func:`bisect.bisect_right`; outside the breakpoints the
-    end polynomials extend, as :class:`scipy.interpolate.CubicSpline` does.
+    Horner's rule on the spline's coefficients (``c[power, interval, ...]`` of a
+    :class:`scipy.interpolate.CubicSpline` with ``breaks``), the interval found with
+    :func:`bisect.bisect_right`; outside the breakpoints the end polynomials extend, as
+    :class:`scipy.interpolate.CubicSpline` does.
     """
-    breaks, coefficients = spline.x, spline.c
     last = breaks.size - 2
 
     def value(x: float) -> NDArray[np.float64]:
@@ -348,6 +350,37 @@ def leaving_shape_table(ratio: float) -> RectBivariateSpline:
         RectBivariateSpline(log_gap, leaving, values[..., 0]),
         RectBivariateSpline(log_gap, leaving, values[..., 1]),
     )
+
+
+@cache
+def kernel_tables(model: str, ratio: float) -> tuple[FloatArray, ...]:
+    """The compiled kernel's ``tables`` of a film model at one ``L/D``, once per process.
+
+    Knots and coefficients of :func:`shape_table` and of :func:`wall_shape_table`
+    (``tx, ty, radial, tangential`` each), and the finite bearing's
+    :func:`leaving_shape_table` (``ty, W, angle``); placeholders where the model has
+    none (the short bearing in closed form).
+
+    Parameters
+    ----------
+    model : str
+        ``"short"``, ``"long"``, ``"finite"`` or ``"finite-reynolds"``.
+    ratio : float
+        ``L / D`` [-].
+    """
+    unused = np.zeros(8)
+    if model == "short":
+        return (unused,) * 11
+    radial, tangential = shape_table(model, ratio)
+    tables = (*radial.tck, tangential.tck[2])
+    radial, tangential = wall_shape_table(model, ratio)
+    tables += (*radial.tck, tangential.tck[2])
+    if model == "finite":  # the leaving table: the wall table's s knots
+        scaled, angle = leaving_shape_table(ratio)
+        tables += (scaled.tck[1], scaled.tck[2], angle.tck[2])
+    else:
+        tables += (unused,) * 3
+    return tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
 
 
 def wrap_to_pi(angle: ArrayLike) -> FloatArray:
@@ -558,12 +591,14 @@ class OrbitSolver:
         )
         # a cubic spline: a stiff integrator needs a smooth force (linear pieces stall it)
         self.asperity_spline = CubicSpline(self.gaps, forces)
-        self.asperity_at = scalar_spline(self.asperity_spline)
+        self.asperity_at = scalar_spline(self.asperity_spline.x, self.asperity_spline.c)
         self.cutoff = cutoff
         self.roughness = roughness
         #: the compiled kernel's last direction of motion and the target direction of
         #: the film's force it was found for (NaN: none yet) [rad]
         self.memory = np.array([math.nan, math.nan])
+        #: the asperity spline's breaks and coefficients for the compiled kernel
+        self.kernel_asperity: tuple[FloatArray, FloatArray] | None = None
 
     def kernel_arguments(self) -> tuple[Any, ...]:
         """``(joint, asperity, memory, tables, nodes)`` of the compiled kernel's velocity.
@@ -582,23 +617,14 @@ class OrbitSolver:
             codes[self.model],
             float(LOG_GAP_MAX),
         )
-        spline = self.asperity_spline
-        asperity = (np.ascontiguousarray(spline.x), np.ascontiguousarray(spline.c[:, :, None]))
-        unused = np.zeros(8)
-        if self.model == "short":
-            tables = (unused,) * 11
-        else:
-            radial, tangential = shape_table(self.model, self.ratio)
-            tables = (*radial.tck, tangential.tck[2])
-            radial, tangential = wall_shape_table(self.model, self.ratio)
-            tables += (*radial.tck, tangential.tck[2])
-            if self.model == "finite":  # the leaving table: the wall table's s knots
-                scaled, angle = leaving_shape_table(self.ratio)
-                tables += (scaled.tck[1], scaled.tck[2], angle.tck[2])
-            else:
-                tables += (unused,) * 3
-        tables = tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
-        return joint, asperity, self.memory, tables, DIRECTION_NODES
+        if self.kernel_asperity is None:
+            spline = self.asperity_spline
+            self.kernel_asperity = (
+                np.ascontiguousarray(spline.x),
+                np.ascontiguousarray(spline.c[:, :, None]),
+            )
+        tables = kernel_tables(self.model, self.ratio)
+        return joint, self.kernel_asperity, self.memory, tables, DIRECTION_NODES
 
     def steady_shape(self) -> Callable[[float, float], tuple[float, float]]:
         """:attr:`scalar_shape`, by the compiled kernel where it runs [-].
@@ -814,19 +840,21 @@ class CycleMap:
         compiled: bool = True,
     ) -> None:
         times = np.asarray(time, float)
-        samples = np.stack([np.asarray(a, float) for a in (load_x, load_y, mean_speed)])
         self.ends = np.append(times, times[0] + period)
-        # a periodic cubic spline: the integrator sees no kink at every sample
-        spline = CubicSpline(
-            self.ends,
-            np.concatenate([samples, samples[:, :1]], axis=1),
-            axis=1,
-            bc_type="periodic",
-        )
-        self.inputs_at = scalar_spline(spline)
-        self.inputs = (np.ascontiguousarray(self.ends), np.ascontiguousarray(spline.c))
+        samples = np.empty((3, self.ends.size))
+        samples[0, :-1], samples[1, :-1], samples[2, :-1] = load_x, load_y, mean_speed
+        samples[:, -1] = samples[:, 0]
         self.solver = solver
         self.kernel = compiled_kernel() if compiled else None
+        # a periodic cubic spline: the integrator sees no kink at every sample (the
+        # compiled kernel's coefficients are scipy's, without its checks of the input)
+        if self.kernel is not None and self.ends.size > 3:
+            coefficients = self.kernel.periodic_spline(self.ends, samples)
+        else:
+            spline = CubicSpline(self.ends, samples, axis=1, bc_type="periodic")
+            coefficients = np.ascontiguousarray(spline.c)
+        self.inputs_at = scalar_spline(self.ends, coefficients)
+        self.inputs = (self.ends, coefficients)
         self.arguments = solver.kernel_arguments() if self.kernel is not None else ()
         #: right-hand side evaluations of the last cycle (compiled path)
         self.evaluations = 0
@@ -927,6 +955,39 @@ def secant_jacobian(starts: list[FloatArray], ends: list[FloatArray]) -> FloatAr
     return np.linalg.solve(steps.T, changes.T).T
 
 
+def closing_cycle(
+    cycle: CycleMap, start: FloatArray, mismatch: Callable[[FloatArray], tuple[float, float]]
+) -> FloatArray | None:
+    """The cycle from ``start`` at the proof's tolerance, where it closes [-].
+
+    A search whose next cycle will close would integrate it and then the proof's cycle
+    from the same start (:func:`searched`): the proof's cycle alone, integrated to
+    ``INTEGRATION_RTOL``, is returned where it closes within the tolerance (the
+    proof's test). None where the search's tolerance is already the proof's or where
+    the cycle does not close; the search then goes on from ``start`` as before, at its
+    own tolerance.
+
+    Parameters
+    ----------
+    cycle : CycleMap
+        The cycle map.
+    start : ndarray, shape (2,)
+        The next cycle's start, stretched coordinate [-].
+    mismatch : callable
+        ``path -> (|e(T) - e(0)| / c, allowed)`` [-].
+    """
+    searching = cycle.rtol
+    if searching == INTEGRATION_RTOL:
+        return None
+    cycle.rtol = INTEGRATION_RTOL
+    path = cycle(start)
+    error, allowed = mismatch(path)
+    if error <= allowed:
+        return path
+    cycle.rtol = searching
+    return None
+
+
 def fixed_point(
     cycle: CycleMap,
     path: FloatArray,
@@ -942,8 +1003,12 @@ def fixed_point(
     the root finder asks again elsewhere, forward differences
     (:func:`scipy.optimize.approx_fprime`, MINPACK's step). It stops at the first start
     whose cycle closes within ``SETTLED`` of the tolerance (:class:`Settled`): its
-    further steps would move the start by the integration's error only. Returns the
-    path of the last cycle integrated, periodic or not (the caller checks ``mismatch``).
+    further steps would move the start by the integration's error only. Where plain
+    repetition contracts so fast that its next cycle will close, that cycle is
+    integrated at the proof's tolerance (:func:`closing_cycle`) and ends the search
+    where it closes.
+    Returns the path of the last cycle integrated, periodic or not (the caller checks
+    ``mismatch``).
 
     Parameters
     ----------
@@ -962,6 +1027,13 @@ def fixed_point(
         error, allowed = mismatch(path)
         if error <= allowed or error > FAST_CONTRACTION * previous:
             break
+        # contracting so fast that the next cycle will close within SETTLED of the
+        # tolerance (the last mismatch times the last contraction; none measured after
+        # the first cycle): that cycle at the proof's tolerance
+        if cycles > 1 and error * error / previous <= SETTLED * allowed:
+            proved = closing_cycle(cycle, path[:, -1], mismatch)
+            if proved is not None:
+                return proved
         previous = error
         path = cycle(path[:, -1])
         starts.append(path[:, 0])
@@ -1202,20 +1274,30 @@ def periodic_orbit(
     # the gap matters against the roughness: a pin on its asperities needs no finer
     floor = GAP_FLOOR * solver.roughness / solver.clearance
 
+    last: list[Any] = [None, (math.nan, math.nan)]
+
     def mismatch(path: FloatArray) -> tuple[float, float]:
         """``|e(T) - e(0)| / c`` and the tolerance it must meet [-]."""
-        # the least gap 1 - eps = 1 / (1 + |q|) at the largest |q|: no need to unstretch
-        # the whole path, called once per cycle integrated
-        gap = max(1.0 / (1.0 + float(np.hypot(path[0], path[1]).max())), floor)
-        ends = unstretched(path[:, [0, -1]])
-        return float(np.hypot(*(ends[:, 1] - ends[:, 0]))), tolerance * gap
+        # asked several times of a cycle: the last cycle's answer kept
+        if path is last[0]:
+            return last[1]
+        # the least gap 1 - eps = 1 / (1 + |q|) at the largest |q| (found by |q|^2: a
+        # hypot per sample costs more than the rest): no need to unstretch the whole
+        # path; its ends unstretched as scalars
+        far = int(np.argmax(path[0] * path[0] + path[1] * path[1]))
+        gap = max(1.0 / (1.0 + math.hypot(path[0, far], path[1, far])), floor)
+        x0, y0, x1, y1 = path[0, 0], path[1, 0], path[0, -1], path[1, -1]
+        norm0, norm1 = 1.0 + math.hypot(x0, y0), 1.0 + math.hypot(x1, y1)
+        error = math.hypot(x1 / norm1 - x0 / norm0, y1 / norm1 - y0 / norm0)
+        last[:] = path, (float(error), tolerance * gap)
+        return last[1]
 
     start = np.asarray(start, float)
     # where the asperities cannot hold the pin at any step, a pin started on the wall or
     # carried onto it by the root finder is posed again there (wall_orbit); kept if its
     # cycle closes
     wall = WALL_FILM_PARAMETER * solver.roughness / solver.clearance
-    capacity = -float(solver.asperity_force(1.0))
+    capacity = -float(solver.asperity_at(0.0))  # (asperity_force(1.0), the gap nil)
     cycle.wall_gap = wall if capacity < float(np.min(np.hypot(load_x, load_y))) else 0.0
     try:
         path = searched(cycle, start, mismatch, tolerance)
