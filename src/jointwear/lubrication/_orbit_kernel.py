@@ -385,12 +385,6 @@ def _newton(start, target, film):
     beta, last = start, 0.0
     root = math.sqrt(1.0 - eps * eps)
     for _ in range(_NEWTON_STEPS):
-        # on the leaving table the bracketing search takes over
-        if (
-            model == TABLE_LEAVING
-            and -math.pi + _LEAVING < math.atan2(math.sin(beta), root * math.cos(beta)) < -_LEAVING
-        ):
-            return math.nan, 0.0, 0.0
         y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
         span_y = _interval(ty, y, 3, ty.size - 5)
         wy = _basis(ty, y, span_y)
@@ -406,6 +400,12 @@ def _newton(start, target, film):
         step = _wrap(math.atan2(g_t, g_r) - target) / slope
         beta -= step
         if abs(beta - start) > 1.0:
+            return math.nan, 0.0, 0.0
+        # an iterate on the leaving table: the bracketing search takes over
+        if (
+            model == TABLE_LEAVING
+            and -math.pi + _LEAVING < math.atan2(math.sin(beta), root * math.cos(beta)) < -_LEAVING
+        ):
             return math.nan, 0.0, 0.0
         tolerance = 0.5 * (1e-13 + 1e-15 * abs(beta))
         if abs(step) <= tolerance:

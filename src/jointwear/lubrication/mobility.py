@@ -25,8 +25,10 @@ second-order stencil on a grid uniform in Sommerfeld's angle, which crowds the n
 the smallest film), tabulates ``G`` over the eccentricity and ``beta`` once per ``L/D``
 (cached) and interpolates it with cubic splines: thousands of states per call, any
 ``L/D``. Up to ``eps = 0.995``; beyond, up to ``1 - 1e-5``, a wall table in the variables
-in which the film near the wall is bounded (:func:`to_wall`, :func:`wall_table`). Its
-accuracy against closed forms is in ``docs/lubrication.md``.
+in which the film near the wall is bounded (:func:`to_wall`, :func:`wall_table`); where
+the pin leaves the wall, from ``eps = 0.9`` on, a leaving table on a finer grid
+(:func:`to_leaving`, :func:`leaving_table`). Its accuracy against closed forms is in
+``docs/lubrication.md``.
 
 Booker's mobility method inverts the force law: given the load on the pin, it returns
 the velocity of the pin's centre. In a frame turning at the mean surface speed
