@@ -76,12 +76,21 @@ def test_the_interpolated_table_matches_direct_solutions():
     rng = np.random.default_rng(1)
     eps, beta = rng.uniform(0, 0.99, 40), rng.uniform(-np.pi, np.pi, 40)
     table = mobility_module.dimensionless_finite(eps, beta, np.full(40, 1.0))
+    # where the pin leaves the wall beyond eps = 0.9 the leaving table's finer grid
+    inner = mobility_module.wall_direction(eps, beta)[0]
+    leaving = (eps > mobility_module.LEAVING_START) & mobility_module.leaving_the_wall(inner)
     direct = np.array(
         [
-            mobility_module.tabulated_forces(e, 1.0, np.array([b]))[:, 0]
-            for e, b in zip(eps, beta, strict=True)
+            mobility_module.tabulated_forces(
+                e,
+                1.0,
+                np.array([b]),
+                *((mobility_module.WALL_GRID, mobility_module.leaving_crowding(e)) if on else ()),
+            )[:, 0]
+            for e, b, on in zip(eps, beta, leaving, strict=True)
         ]
     ).T
+    assert np.any(leaving)
     assert np.max(np.abs(table - direct) / np.hypot(*direct)) < 5e-3
 
 

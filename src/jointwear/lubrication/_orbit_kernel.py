@@ -35,10 +35,11 @@ from jointwear.mechanism.impact.compiled_film import long_bearing
 DONE, TOO_MANY_STEPS, STEP_TOO_SMALL = 0, 1, 2
 #: model codes (WALL: the finite bearing beyond its table's end, on the wall's table;
 #: LONG: the long bearing, tabulated up to the table's end, on its wall table beyond
-#: and in closed form where the pin leaves the wall; FINITE: the finite bearing with
-#: half-Sommerfeld's film, tabulated up to the table's end, beyond it (LEAVING) on its
-#: wall table and on its leaving table where the pin leaves the wall)
-SHORT, TABULATED, WALL, LONG, FINITE, LEAVING = 0, 1, 2, 3, 4, 5
+#: and in closed form where the pin leaves the wall; FINITE: the finite bearing,
+#: tabulated up to the table's end, beyond it (LEAVING) on its wall table; from the
+#: leaving table's start on (TABLE_LEAVING below the table's end) on its leaving table
+#: where the pin leaves the wall)
+SHORT, TABULATED, WALL, LONG, FINITE, LEAVING, TABLE_LEAVING = 0, 1, 2, 3, 4, 5, 6
 #: the long bearing's closed form where the wall's inner direction psi lies in
 #: (-pi + _LEAVING, -_LEAVING): the pin leaves the wall (orbit.LEAVING_WALL)
 _LEAVING = math.atan(3.0)
@@ -171,16 +172,18 @@ short_shape = njit(cache=True)(short_shape_scalar)
 
 
 @njit(cache=True)
-def shape(eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa):
+def shape(
+    eps, beta, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, ltx, lty, lww, laa
+):
     """``G(eps, beta)`` of the film model (``orbit.OrbitSolver.scalar_shape``) [-]."""
     film = film_at(
-        eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa
+        eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, ltx, lty, lww, laa
     )
     return shape_along(film, beta)
 
 
 @njit(cache=True)
-def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa):
+def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, ltx, lty, lww, laa):
     """What :func:`shape_along` needs at ``eps``, evaluated once for all directions.
 
     The tabulated models' log-gap coordinate, their ``(1 - eps^2)^2.5`` and the knot
@@ -190,11 +193,11 @@ def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, 
     bit for bit). Beyond the table's end (``eps > 1 - 10^-log_gap_max``) the long
     bearing in closed form, the finite one from the wall's table (``wtx, wty, wrr,
     wtt``: ``orbit.wall_shape_table``) with ``1 - eps^2``, and the finite bearing's
-    leaving table (``lty, lww, laa``: ``ty``, ``W`` and the angle of
-    ``orbit.leaving_shape_table``, on the wall table's knots along ``s``) where the pin
-    leaves the wall.
+    leaving table (``ltx, lty, lww, laa``: ``tx``, ``ty``, ``W`` and the angle of
+    ``orbit.leaving_shape_table``) where the pin leaves the wall, from its first ``s``
+    on (``TABLE_LEAVING`` below the table's end).
     """
-    leaving = (lty, lww, laa)
+    leaving = (ltx, lty, lww, laa)
     if model == SHORT:
         return model, eps, ratio, 1.0, 0, (0.0, 0.0, 0.0, 0.0), ty, rr, tt, leaving
     if eps > 1.0 - 10.0**-log_gap_max:
@@ -203,7 +206,7 @@ def film_at(eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, 
         span_x = _interval(wtx, x, 3, wtx.size - 5)
         basis = _basis(wtx, x, span_x)
         return code, eps, ratio, 1.0 - eps * eps, span_x, basis, wty, wrr, wtt, leaving
-    model = TABULATED
+    model = TABLE_LEAVING if model == FINITE and eps > 1.0 - 10.0 ** -ltx[3] else TABULATED
     log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), log_gap_max)
     x = min(max(log_gap, tx[3]), tx[tx.size - 4])
     span_x = _interval(tx, x, 3, tx.size - 5)
@@ -256,7 +259,13 @@ def shape_along(film, beta):
     model, eps, ratio, scale, span_x, wx, ty, radial, tangential, leaving = film
     if model == SHORT:
         return short_shape(eps, beta, ratio)
-    if model != TABULATED:  # WALL, LONG or LEAVING
+    if model == TABLE_LEAVING:
+        root = math.sqrt(1.0 - eps * eps)
+        squeeze = math.sin(beta)
+        inner = math.atan2(squeeze, root * math.cos(beta))
+        if -math.pi + _LEAVING < inner < -_LEAVING:
+            return _leaving_shape(eps, beta, root, squeeze, leaving)
+    elif model != TABULATED:  # WALL, LONG or LEAVING
         root = math.sqrt(scale)
         wedge, squeeze = root * math.cos(beta), math.sin(beta)
         inner = math.atan2(squeeze, wedge)
@@ -264,7 +273,7 @@ def shape_along(film, beta):
             if model == LONG:
                 return _long_shape(eps, beta, ratio)
             if model == LEAVING:
-                return _leaving_shape(beta, root, squeeze, span_x, wx, leaving)
+                return _leaving_shape(eps, beta, root, squeeze, leaving)
         y = min(max(inner, ty[3]), ty[ty.size - 4])
         size = math.hypot(wedge, squeeze)
         span_y = _interval(ty, y, 3, ty.size - 5)
@@ -283,13 +292,17 @@ def shape_along(film, beta):
 
 
 @njit(cache=True)
-def _leaving_shape(beta, root, squeeze, span_x, wx, leaving):
-    """``G`` of the finite bearing's leaving table (``orbit.wall_shape_scalar``) [-].
+def _leaving_shape(eps, beta, root, squeeze, leaving):
+    """``G`` of the finite bearing's leaving table (``orbit.leaving_shape_scalar``) [-].
 
-    At ``u = asinh(cot beta) / asinh(1 / (3 sqrt(1 - eps^2)))``,
+    At ``s = -log10(1 - eps)`` held at the table's ends and
+    ``u = asinh(cot beta) / asinh(1 / (3 sqrt(1 - eps^2)))``,
     ``G = exp(W) (cos T / sin^2 beta, sin T / |sin beta|)`` (``mobility.from_leaving``).
     """
-    ty, scaled, angle = leaving
+    tx, ty, scaled, angle = leaving
+    x = min(max(-math.log10(max(1.0 - eps, 1e-300)), tx[3]), tx[tx.size - 4])
+    span_x = _interval(tx, x, 3, tx.size - 5)
+    wx = _basis(tx, x, span_x)
     motion = math.asinh(math.cos(beta) / squeeze) / math.asinh(1.0 / (3.0 * root))
     y = min(max(motion, ty[3]), ty[ty.size - 4])
     span_y = _interval(ty, y, 3, ty.size - 5)
@@ -365,11 +378,12 @@ def _newton(start, target, film):
     leaves the wall (its closed form or leaving table there) or it does not settle: the
     bracketing search takes over.
     """
-    model, _, _, scale, span_x, wx, ty, radial, tangential, _ = film
-    if model != TABULATED:
+    model, eps, _, scale, span_x, wx, ty, radial, tangential, _ = film
+    if model not in (TABULATED, TABLE_LEAVING):
         return _wall_newton(start, target, film)
     columns = ty.size - 4
     beta, last = start, 0.0
+    root = math.sqrt(1.0 - eps * eps)
     for _ in range(_NEWTON_STEPS):
         y = min(max(_wrap(beta), ty[3]), ty[ty.size - 4])
         span_y = _interval(ty, y, 3, ty.size - 5)
@@ -386,6 +400,12 @@ def _newton(start, target, film):
         step = _wrap(math.atan2(g_t, g_r) - target) / slope
         beta -= step
         if abs(beta - start) > 1.0:
+            return math.nan, 0.0, 0.0
+        # an iterate on the leaving table: the bracketing search takes over
+        if (
+            model == TABLE_LEAVING
+            and -math.pi + _LEAVING < math.atan2(math.sin(beta), root * math.cos(beta)) < -_LEAVING
+        ):
             return math.nan, 0.0, 0.0
         tolerance = 0.5 * (1e-13 + 1e-15 * abs(beta))
         if abs(step) <= tolerance:
@@ -469,6 +489,7 @@ def direction_of_motion(
     wty,
     wrr,
     wtt,
+    ltx,
     lty,
     lww,
     laa,
@@ -479,7 +500,7 @@ def direction_of_motion(
     ``memory[0]`` holds the last root (NaN: none); returns NaN where none is found.
     """
     film = film_at(
-        eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa
+        eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, ltx, lty, lww, laa
     )
     return direction_along(film, target, memory, nodes)[0]
 
@@ -653,13 +674,13 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
     ``joint = (clearance, roughness, cutoff, mobility_scale, ratio, model, log_gap_max)``,
     ``asperity = (breaks, coefficients)`` of the force's spline over the gap,
     ``tables = (tx, ty, radial, tangential)`` of the tabulated models, the same of
-    their wall tables and the finite bearing's leaving table ``(ty, W, angle)``
+    their wall tables and the finite bearing's leaving table ``(tx, ty, W, angle)``
     (``orbit.OrbitSolver.kernel_arguments``). Returns NaN where no direction of motion
     is found.
     """
     clearance, roughness, cutoff, scale, ratio, model_code, log_gap_max = joint
     model = int(model_code)
-    tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa = tables
+    tx, ty, rr, tt, wtx, wty, wrr, wtt, ltx, lty, lww, laa = tables
     eps, phi = math.hypot(x, y), math.atan2(y, x)
     eps = min(max(eps, 1e-6), _LARGEST)
     cos_phi, sin_phi = math.cos(phi), math.sin(phi)
@@ -671,7 +692,7 @@ def velocity(x, y, load_x, load_y, mean_speed, joint, asperity, memory, tables, 
     if carried > 0.0:
         target = math.atan2(film_y, film_x) - phi + math.pi
         film = film_at(
-            eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, lty, lww, laa
+            eps, model, ratio, log_gap_max, tx, ty, rr, tt, wtx, wty, wrr, wtt, ltx, lty, lww, laa
         )
         beta, g_r, g_t = direction_along(film, target, memory, nodes)
         if math.isnan(beta):

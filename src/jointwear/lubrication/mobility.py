@@ -25,8 +25,10 @@ second-order stencil on a grid uniform in Sommerfeld's angle, which crowds the n
 the smallest film), tabulates ``G`` over the eccentricity and ``beta`` once per ``L/D``
 (cached) and interpolates it with cubic splines: thousands of states per call, any
 ``L/D``. Up to ``eps = 0.995``; beyond, up to ``1 - 1e-5``, a wall table in the variables
-in which the film near the wall is bounded (:func:`to_wall`, :func:`wall_table`). Its
-accuracy against closed forms is in ``docs/lubrication.md``.
+in which the film near the wall is bounded (:func:`to_wall`, :func:`wall_table`); where
+the pin leaves the wall, from ``eps = 0.9`` on, a leaving table on a finer grid
+(:func:`to_leaving`, :func:`leaving_table`). Its accuracy against closed forms is in
+``docs/lubrication.md``.
 
 Booker's mobility method inverts the force law: given the load on the pin, it returns
 the velocity of the pin's centre. In a frame turning at the mean surface speed
@@ -114,6 +116,16 @@ WALL_BLEND = 0.6
 LEAVING_WALL = math.atan(3.0)
 #: directions u of the leaving table over [-1, 1] (:func:`leaving_direction`)
 LEAVING_DIRECTION_NODES = 41
+#: the leaving table: s uniform in [LEAVING_LOG_GAP_MIN, WALL_LOG_GAP_MAX] (eps from 0.9,
+#: where force_table's grid is within 4e-3 of |G| of a finer one there, to 1 - 1e-5)
+LEAVING_LOG_GAP_MIN = 1.0
+LEAVING_LOG_GAP_NODES = 15
+#: the eccentricity beyond which the leaving table takes over where the pin leaves the wall
+LEAVING_START = 1.0 - 10.0**-LEAVING_LOG_GAP_MIN
+#: the leaving table's Reynolds grid with Reynolds' cavitation (its complementarity
+#: problem on WALL_GRID would take minutes; this one is within 4e-3 of |G| of a grid
+#: four times finer along the angle)
+LEAVING_REYNOLDS_GRID = (480, 16)
 #: the leaving table's grid crowds its nodes as a film of gap 1000 (1 - eps) would, but
 #: no more than one of eps = 0.9 (:func:`leaving_crowding`)
 LEAVING_CROWDING = 1000.0
@@ -392,36 +404,44 @@ def from_leaving(values: FloatArray, direction: ArrayLike) -> FloatArray:
 
 
 @cache
-def leaving_values(length_to_diameter: float) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """The leaving table's nodes ``(s, u)`` and values, half-Sommerfeld's film [-].
+def leaving_values(
+    length_to_diameter: float, cavitation: Cavitation = "half-Sommerfeld"
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """The leaving table's nodes ``(s, u)`` and values [-].
 
-    Where the pin leaves the wall (:data:`LEAVING_WALL`) beyond ``eps = 0.995``:
-    ``W, T`` of :func:`to_leaving` over ``s = -log10(1 - eps)`` (the wall table's
-    nodes) and ``u`` (:func:`leaving_direction`), both bounded.
-    Solved on :data:`WALL_GRID` with the grid of :func:`leaving_crowding` (about 1.5 s
-    once per ``L/D``) from ``eps = 0.995`` on: the usual grid and directions of
-    :func:`force_table` are some 1-30 % off there (``docs/lubrication.md``), a step the
-    force takes across 0.995 where the pin leaves the wall.
+    Where the pin leaves the wall (:data:`LEAVING_WALL`) beyond ``eps = 0.9``
+    (:data:`LEAVING_START`): ``W, T`` of :func:`to_leaving` over ``s = -log10(1 - eps)``
+    and ``u`` (:func:`leaving_direction`), both bounded. Half-Sommerfeld's film on
+    :data:`WALL_GRID`, Reynolds' on :data:`LEAVING_REYNOLDS_GRID`, both with the grid of
+    :func:`leaving_crowding` (some 2.5 s and 7 s once per ``L/D``): the usual grid and
+    directions of :func:`force_table` are 1-30 % off there from ``eps = 0.97`` on
+    (``docs/lubrication.md``).
 
     Parameters
     ----------
     length_to_diameter : float
         ``L / D`` [-].
+    cavitation : {"half-Sommerfeld", "Reynolds"}
+        The film's cavitation condition (:mod:`jointwear.lubrication.reynolds`).
 
     Returns
     -------
     tuple of ndarray
         ``s`` [-], ``u`` [-] and the values ``[s, u, (W, T)]`` [-, rad].
     """
-    log_gap = np.linspace(LOG_GAP_MAX, WALL_LOG_GAP_MAX, WALL_LOG_GAP_NODES)
+    log_gap = np.linspace(LEAVING_LOG_GAP_MIN, WALL_LOG_GAP_MAX, LEAVING_LOG_GAP_NODES)
     leaving = np.linspace(-1.0, 1.0, LEAVING_DIRECTION_NODES)
-    values = np.empty((WALL_LOG_GAP_NODES, LEAVING_DIRECTION_NODES, 2))
+    values = np.empty((LEAVING_LOG_GAP_NODES, LEAVING_DIRECTION_NODES, 2))
     for k, s in enumerate(log_gap):
         eps = 1.0 - 10.0**-s
         direction = leaving_motion(eps, leaving)
-        shape = tabulated_forces(
-            eps, length_to_diameter, direction, WALL_GRID, leaving_crowding(eps)
-        )
+        crowding = leaving_crowding(eps)
+        if cavitation == "Reynolds":
+            shape = reynolds_forces(
+                eps, length_to_diameter, direction, False, LEAVING_REYNOLDS_GRID, crowding
+            )
+        else:
+            shape = tabulated_forces(eps, length_to_diameter, direction, WALL_GRID, crowding)
         scaled, angle = to_leaving(shape, direction)
         angle = np.unwrap(angle)
         # one branch of the angle for all rows: the middle direction's in (-pi, pi]
@@ -431,15 +451,19 @@ def leaving_values(length_to_diameter: float) -> tuple[FloatArray, FloatArray, F
 
 
 @cache
-def leaving_table(length_to_diameter: float) -> RegularGridInterpolator:
+def leaving_table(
+    length_to_diameter: float, cavitation: Cavitation = "half-Sommerfeld"
+) -> RegularGridInterpolator:
     """Cubic interpolant of :func:`leaving_values` over ``(s, u)`` [-].
 
     Parameters
     ----------
     length_to_diameter : float
         ``L / D`` [-].
+    cavitation : {"half-Sommerfeld", "Reynolds"}
+        The film's cavitation condition.
     """
-    log_gap, leaving, values = leaving_values(length_to_diameter)
+    log_gap, leaving, values = leaving_values(length_to_diameter, cavitation)
     return RegularGridInterpolator((log_gap, leaving), values, method="cubic")
 
 
@@ -455,23 +479,55 @@ def leaving_the_wall(inner: ArrayLike) -> NDArray[np.bool_]:
     return (-np.pi + LEAVING_WALL < inner) & (inner < -LEAVING_WALL)
 
 
+def leaving_log_gap(eps: ArrayLike) -> FloatArray:
+    """The leaving table's ``s = -log10(1 - eps)``, held at its ends [-].
+
+    Parameters
+    ----------
+    eps : array_like
+        Eccentricity ratio [-].
+    """
+    unclipped = -np.log10(np.maximum(1.0 - np.asarray(eps, float), 1e-300))
+    return np.clip(unclipped, LEAVING_LOG_GAP_MIN, WALL_LOG_GAP_MAX)
+
+
 def wall_finite(
     eps: FloatArray, direction: FloatArray, ratio: float, cavitation: Cavitation
 ) -> FloatArray:
     """``G(eps, beta; L/D)`` of the finite bearing beyond ``eps = 0.995``, shape ``(2, ...)`` [-].
 
-    From :func:`wall_table`, its values held beyond ``1 - 1e-5`` (:func:`to_wall`);
-    half-Sommerfeld's film from :func:`leaving_table` where the pin leaves the wall
-    (:func:`leaving_the_wall`), held beyond ``1 - 1e-5`` in ``W, T`` at the same ``u``.
+    From :func:`wall_table`, its values held beyond ``1 - 1e-5`` (:func:`to_wall`).
     """
     inner, size = wall_direction(eps, direction)
     log_gap = np.clip(-np.log10(np.maximum(1.0 - eps, 1e-300)), LOG_GAP_MAX, WALL_LOG_GAP_MAX)
     values = wall_table(ratio, cavitation)(np.stack([log_gap, inner], axis=-1))
-    out = from_wall(values.T, eps, size)
-    leaving = leaving_the_wall(inner) if cavitation == "half-Sommerfeld" else False
+    return from_wall(values.T, eps, size)
+
+
+def leaving_finite(
+    out: FloatArray, eps: FloatArray, direction: FloatArray, ratio: float, cavitation: Cavitation
+) -> FloatArray:
+    """``out`` with :func:`leaving_table`'s ``G`` where the pin leaves the wall [-].
+
+    Beyond ``eps = 0.9`` (:data:`LEAVING_START`) where :func:`leaving_the_wall`, held
+    beyond ``1 - 1e-5`` in ``W, T`` at the same ``u``; elsewhere ``out`` as it is.
+
+    Parameters
+    ----------
+    out : ndarray
+        ``G`` of the other tables, shape ``(2, ...)``, changed in place [-].
+    eps, direction : ndarray
+        Eccentricity ratio [-] and ``beta`` [rad] of its states.
+    ratio : float
+        ``L / D`` [-].
+    cavitation : {"half-Sommerfeld", "Reynolds"}
+        The film's cavitation condition.
+    """
+    leaving = (eps > LEAVING_START) & leaving_the_wall(wall_direction(eps, direction)[0])
     if np.any(leaving):
         motion = leaving_direction(eps[leaving], direction[leaving])
-        scaled = leaving_table(ratio)(np.stack([log_gap[leaving], motion], axis=-1))
+        at = np.stack([leaving_log_gap(eps[leaving]), motion], axis=-1)
+        scaled = leaving_table(ratio, cavitation)(at)
         out[:, leaving] = from_leaving(scaled.T, direction[leaving])
     return out
 
@@ -565,6 +621,11 @@ def dimensionless_finite(
         wall = (ratio == value) & near_wall
         if np.any(wall):
             out[:, wall] = wall_finite(eps[wall], direction[wall], float(value), cavitation)
+        # where the pin leaves the wall, from eps = 0.9 on, the leaving table
+        here = ratio == value
+        out[:, here] = leaving_finite(
+            out[:, here], eps[here], direction[here], float(value), cavitation
+        )
     return out
 
 

@@ -86,6 +86,7 @@ from jointwear.lubrication.film import long_shape_near_wall, short_shape_scalar
 from jointwear.lubrication.mobility import (
     DIRECTION_NODES,
     FINITE_CAVITATION,
+    LEAVING_START,
     LEAVING_WALL,
     LOG_GAP_MAX,
     LOG_GAP_NODES,
@@ -97,6 +98,7 @@ from jointwear.lubrication.mobility import (
     from_leaving,
     from_wall,
     leaving_direction,
+    leaving_log_gap,
     leaving_the_wall,
     leaving_values,
     to_wall,
@@ -330,22 +332,24 @@ def wall_shape_table(model: str, ratio: float) -> RectBivariateSpline:
 
 
 @cache
-def leaving_shape_table(ratio: float) -> RectBivariateSpline:
+def leaving_shape_table(model: str, ratio: float) -> RectBivariateSpline:
     """Spline of the finite bearing's leaving table over ``(s, u)`` [-].
 
-    Where the pin leaves the wall beyond ``eps = 0.995``
-    (:data:`~jointwear.lubrication.mobility.LEAVING_WALL`): ``W, T``
+    Where the pin leaves the wall beyond ``eps = 0.9``
+    (:data:`~jointwear.lubrication.mobility.LEAVING_WALL`,
+    :data:`~jointwear.lubrication.mobility.LEAVING_START`): ``W, T``
     (:func:`jointwear.lubrication.mobility.to_leaving`) of
-    :func:`jointwear.lubrication.mobility.leaving_values` at
-    its nodes, on the wall table's ``s`` nodes (so the same knots along ``s`` as
-    :func:`wall_shape_table`). One spline per value, as :func:`shape_table`.
+    :func:`jointwear.lubrication.mobility.leaving_values` at its nodes. One spline per
+    value, as :func:`shape_table`.
 
     Parameters
     ----------
+    model : str
+        ``"finite"`` or ``"finite-reynolds"``.
     ratio : float
         ``L / D`` [-].
     """
-    log_gap, leaving, values = leaving_values(ratio)
+    log_gap, leaving, values = leaving_values(ratio, FINITE_CAVITATION[model])
     return (
         RectBivariateSpline(log_gap, leaving, values[..., 0]),
         RectBivariateSpline(log_gap, leaving, values[..., 1]),
@@ -358,7 +362,7 @@ def kernel_tables(model: str, ratio: float) -> tuple[FloatArray, ...]:
 
     Knots and coefficients of :func:`shape_table` and of :func:`wall_shape_table`
     (``tx, ty, radial, tangential`` each), and the finite bearing's
-    :func:`leaving_shape_table` (``ty, W, angle``); placeholders where the model has
+    :func:`leaving_shape_table` (``tx, ty, W, angle``); placeholders where the model has
     none (the short bearing in closed form).
 
     Parameters
@@ -370,16 +374,16 @@ def kernel_tables(model: str, ratio: float) -> tuple[FloatArray, ...]:
     """
     unused = np.zeros(8)
     if model == "short":
-        return (unused,) * 11
+        return (unused,) * 12
     radial, tangential = shape_table(model, ratio)
     tables = (*radial.tck, tangential.tck[2])
     radial, tangential = wall_shape_table(model, ratio)
     tables += (*radial.tck, tangential.tck[2])
-    if model == "finite":  # the leaving table: the wall table's s knots
-        scaled, angle = leaving_shape_table(ratio)
-        tables += (scaled.tck[1], scaled.tck[2], angle.tck[2])
+    if model in FINITE_CAVITATION:  # the leaving table, with its own s knots
+        scaled, angle = leaving_shape_table(model, ratio)
+        tables += (*scaled.tck[:3], angle.tck[2])
     else:
-        tables += (unused,) * 3
+        tables += (unused,) * 4
     return tuple(np.ascontiguousarray(a, dtype=float) for a in tables)
 
 
@@ -413,16 +417,11 @@ def wall_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tupl
 
     The operations of the compiled kernel's ``shape_along`` for the wall's table; where
     the pin leaves the wall (:data:`~jointwear.lubrication.mobility.LEAVING_WALL`) the
-    long bearing in closed form, the finite one (half-Sommerfeld) from
-    :func:`leaving_shape_table`.
+    long bearing in closed form (the finite one's leaving table:
+    :func:`leaving_shape_scalar`).
     """
     knots = [(*spline.tck, *spline.degrees) for spline in wall_shape_table(model, ratio)]
     long = model == "long"
-    leaving = (
-        [(*spline.tck, *spline.degrees) for spline in leaving_shape_table(ratio)]
-        if model == "finite"
-        else None
-    )
 
     def shape(eps: float, beta: float) -> tuple[float, float]:
         log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), LOG_GAP_MAX), WALL_LOG_GAP_MAX)
@@ -430,18 +429,44 @@ def wall_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tupl
         root = math.sqrt(one_minus)
         wedge, squeeze = root * math.cos(beta), math.sin(beta)
         inner = math.atan2(squeeze, wedge)
-        if -math.pi + LEAVING_WALL < inner < -LEAVING_WALL:
-            if long:
-                return long_shape_scalar(eps, beta, ratio)
-            if leaving is not None:
-                edge = math.asinh(1.0 / (3.0 * root))
-                motion = math.asinh(math.cos(beta) / squeeze) / edge
-                scaled, angle = (float(bisplev(log_gap, motion, tck)) for tck in leaving)
-                size = math.exp(scaled) / (squeeze * squeeze)
-                return size * math.cos(angle), -size * squeeze * math.sin(angle)
+        if long and -math.pi + LEAVING_WALL < inner < -LEAVING_WALL:
+            return long_shape_scalar(eps, beta, ratio)
         size = math.hypot(wedge, squeeze)
         radial, tangential = (float(bisplev(log_gap, inner, tck)) for tck in knots)
         return size * radial / (one_minus * root), size * tangential / one_minus
+
+    return shape
+
+
+def leaving_shape_scalar(
+    model: str, ratio: float
+) -> Callable[[float, float], tuple[float, float] | None]:
+    """``G(eps, beta)`` of :func:`leaving_shape_table` for one state, None off its region [-].
+
+    The finite bearing's where the pin leaves the wall beyond ``eps = 0.9`` (the
+    operations of the compiled kernel's ``_leaving_shape``); None everywhere for the
+    long bearing.
+    """
+    leaving = (
+        [(*spline.tck, *spline.degrees) for spline in leaving_shape_table(model, ratio)]
+        if model in FINITE_CAVITATION
+        else None
+    )
+    lowest, highest = leaving[0][0][3] if leaving else 0.0, WALL_LOG_GAP_MAX
+
+    def shape(eps: float, beta: float) -> tuple[float, float] | None:
+        if leaving is None or not eps > LEAVING_START:
+            return None
+        root = math.sqrt(1.0 - eps * eps)
+        squeeze = math.sin(beta)
+        inner = math.atan2(squeeze, root * math.cos(beta))
+        if not -math.pi + LEAVING_WALL < inner < -LEAVING_WALL:
+            return None
+        log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), lowest), highest)
+        motion = math.asinh(math.cos(beta) / squeeze) / math.asinh(1.0 / (3.0 * root))
+        scaled, angle = (float(bisplev(log_gap, motion, tck)) for tck in leaving)
+        size = math.exp(scaled) / (squeeze * squeeze)
+        return size * math.cos(angle), -size * squeeze * math.sin(angle)
 
     return shape
 
@@ -451,8 +476,12 @@ def table_shape_scalar(model: str, ratio: float) -> Callable[[float, float], tup
     splines = shape_table(model, ratio)
     knots = [(*spline.tck, *spline.degrees) for spline in splines]
     near_wall = wall_shape_scalar(model, ratio)
+    leaving = leaving_shape_scalar(model, ratio)
 
     def shape(eps: float, beta: float) -> tuple[float, float]:
+        left = leaving(eps, beta)
+        if left is not None:
+            return left
         if eps > TABLE_EDGE:
             return near_wall(eps, beta)
         log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), 0.0), LOG_GAP_MAX)
@@ -492,6 +521,8 @@ def film_shape(model: str, ratio: float) -> Callable[[ArrayLike, ArrayLike], Flo
         near_wall = eps_ > TABLE_EDGE
         if np.any(near_wall):
             out[:, near_wall] = wall_shape(model, ratio, eps_[near_wall], beta_[near_wall])
+        if model in FINITE_CAVITATION:
+            out = leaving_shape(model, ratio, eps_, beta_, out)
         return out
 
     return tabulated
@@ -503,7 +534,7 @@ def wall_shape(model: str, ratio: float, eps: FloatArray, beta: FloatArray) -> F
     From :func:`wall_shape_table` (the scaling of
     :func:`jointwear.lubrication.mobility.to_wall`); where the pin leaves the wall
     (:data:`~jointwear.lubrication.mobility.LEAVING_WALL`) the long bearing in closed
-    form, the finite one (half-Sommerfeld) from :func:`leaving_shape_table`.
+    form (the finite one's leaving table: :func:`leaving_shape`).
     """
     wall_radial, wall_tangential = wall_shape_table(model, ratio)
     inner, size = wall_direction(eps, beta)
@@ -514,10 +545,19 @@ def wall_shape(model: str, ratio: float, eps: FloatArray, beta: FloatArray) -> F
     if model == "long":
         for k in np.flatnonzero(leaving):
             out[:, k] = long_shape_scalar(float(eps[k]), float(beta[k]), ratio)
-    elif model == "finite" and np.any(leaving):
-        motion = leaving_direction(eps[leaving], beta[leaving])
-        scaled, angle = leaving_shape_table(ratio)
-        at = (log_gap[leaving], motion)
+    return out
+
+
+def leaving_shape(
+    model: str, ratio: float, eps: FloatArray, beta: FloatArray, out: FloatArray
+) -> FloatArray:
+    """``out`` with the finite bearing's :func:`leaving_shape_table` where the pin leaves
+    the wall beyond ``eps = 0.9``, shape ``(2, ...)`` [-] (:func:`leaving_shape_scalar`).
+    """
+    leaving = (eps > LEAVING_START) & leaving_the_wall(wall_direction(eps, beta)[0])
+    if np.any(leaving):
+        scaled, angle = leaving_shape_table(model, ratio)
+        at = (leaving_log_gap(eps[leaving]), leaving_direction(eps[leaving], beta[leaving]))
         out[:, leaving] = from_leaving(np.stack([scaled.ev(*at), angle.ev(*at)]), beta[leaving])
     return out
 
@@ -605,9 +645,9 @@ class OrbitSolver:
 
         ``tables``: knots and coefficients of :func:`shape_table` and of
         :func:`wall_shape_table` (``tx, ty, radial, tangential`` each), and the
-        finite bearing's :func:`leaving_shape_table` (``ty, W, angle``).
+        finite bearing's :func:`leaving_shape_table` (``tx, ty, W, angle``).
         """
-        codes = {"short": 0.0, "long": 3.0, "finite": 4.0, "finite-reynolds": 1.0}
+        codes = {"short": 0.0, "long": 3.0, "finite": 4.0, "finite-reynolds": 4.0}
         joint = (
             self.clearance,
             self.roughness,

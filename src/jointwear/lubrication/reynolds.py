@@ -227,11 +227,13 @@ class BandedFilm:
     ----------
     operator : csc_matrix
         ``A`` of :func:`film_system` [-].
+    grid : tuple of int
+        Its angle nodes and axial cells [-]; ``ANGLE_NODES`` and ``AXIAL_CELLS`` if None.
     """
 
-    def __init__(self, operator: csc_matrix) -> None:
+    def __init__(self, operator: csc_matrix, grid: tuple[int, int] | None = None) -> None:
         self.stiffness = (-operator).tocsr()
-        self.angles, self.cells = ANGLE_NODES, AXIAL_CELLS
+        self.angles, self.cells = grid or (ANGLE_NODES, AXIAL_CELLS)
         angles, cells = self.angles, self.cells
         half = np.ones(cells)
         half[0] = 0.5
@@ -349,7 +351,12 @@ def turned(pressure: FloatArray, theta: FloatArray, turn: float) -> FloatArray:
 
 
 def reynolds_forces(
-    eps: float, half_length: float, directions: ArrayLike, film_start: bool = False
+    eps: float,
+    half_length: float,
+    directions: ArrayLike,
+    film_start: bool = False,
+    grid: tuple[int, int] | None = None,
+    crowding: float | None = None,
 ) -> FloatArray:
     """``G_r, G_t`` of the film with Reynolds' condition, shape ``(2, n)`` [-].
 
@@ -369,16 +376,20 @@ def reynolds_forces(
         ``beta`` of the motion [rad].
     film_start : bool
         Hold ``Pi = 0`` along the largest film (Raimondi and Boyd's full bearing).
+    grid : tuple of int
+        Angle nodes and axial cells [-] (:func:`film_system`; the usual grid if None).
+    crowding : float
+        The grid's Sommerfeld-angle eccentricity [-] (:func:`film_system`).
     """
-    theta, stretch, operator = film_system(eps, half_length)
-    rows, columns = AXIAL_CELLS, ANGLE_NODES
+    theta, stretch, operator = film_system(eps, half_length, grid, crowding)
+    columns, rows = grid or (ANGLE_NODES, AXIAL_CELLS)
     fixed = None
     if film_start:
         fixed = np.zeros(rows * columns, bool)
         fixed[::columns] = True  # theta = 0 of every row
     step = 2.0 * np.pi / columns
     axial = np.linspace(0.0, half_length, rows + 1)
-    film = BandedFilm(operator)
+    film = BandedFilm(operator, grid)
     pressure, previous = None, 0.0
     forces = []
     for beta in np.atleast_1d(np.asarray(directions, float)):
