@@ -21,6 +21,8 @@ short bearing 0.3 Pa s 1.60-1.62, 0.03 Pa s 1.56-1.61, finite length (ISO VG 68 
 1.64-1.67 (3 cycles), long bearing (0.3 Pa s) 1.67-1.69 (10 cycles); ten revolutions 0.44-0.45
 (short) and 1.35-1.36 (finite). The code before in the same period: 1.66-1.83, 1.71-1.87,
 2.00-2.25, 1.88-1.95; 0.52-0.54 and 1.48-1.52.
+On a quiet machine (load 0.4-1.5, 21 repeats) with the finite bearing's leaving table from
+eps = 0.9: 1.62, 1.68, 1.69, 1.75; 0.49 and 1.50.
 
 Run: ``python benchmarks/bench_lubrication.py [--repeats N] [--python-repeats N]``
 """
