@@ -59,9 +59,9 @@ def test_a_config_read_before_is_read_again_without_pint(tmp_path):
 
 
 def test_no_folder_no_memo(tmp_path):
-    # and no seed: with the memo turned off every text goes to pint
-    assert fresh_process(LOAD, "", seed=True)["pint"]
-    assert fresh_process(LOAD, "", seed=True)["pint"]
+    # without the seed, every process sends every text to pint: nothing is kept
+    assert fresh_process(LOAD, "")["pint"]
+    assert fresh_process(LOAD, "")["pint"]
 
 
 def test_a_memo_of_other_code_or_another_pint_is_not_read(tmp_path):
@@ -230,3 +230,29 @@ def test_a_seed_of_another_pint_is_not_used(tmp_path):
         f"quantity_memo.SEED = pathlib.Path({str(tmp_path / 'seed.json')!r})\n"
     )
     assert fresh_process(code + LOAD, tmp_path / "memo", seed=True)["pint"]
+
+
+NEW_UNIT = (
+    "import json, sys\nfrom jointwear.units import to_si\n"
+    "print(json.dumps({'si': to_si('50 um', 'length'), 'pint': 'pint' in sys.modules}))\n"
+)
+
+
+def test_with_the_memo_turned_off_the_seed_is_still_read(tmp_path, monkeypatch):
+    # the seed is the package's data, not the user's cache: a config in its units needs
+    # no pint with the memo off too, to the same numbers; a unit it lacks goes to pint in
+    # every process, and the memo writes nothing
+    if quantity_memo.seed_stamp() != SEED["stamp"]:
+        pytest.skip(f"the seed was made by pint {SEED['stamp']['pint']}; {STALE}")
+    # the user's cache folder and the working folder both inside tmp_path
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    monkeypatch.setenv("HOME", str(tmp_path))
+    monkeypatch.chdir(tmp_path)
+    off = fresh_process(LOAD, "", seed=True)
+    assert not off["pint"]
+    assert off["config"] == fresh_process(LOAD, "")["config"]
+    for _ in range(2):
+        new = fresh_process(NEW_UNIT, "", seed=True)
+        assert new == {"si": pytest.approx(5e-5, rel=1e-15), "pint": True}
+    # (pint keeps a cache of its parsed definitions of its own, under "pint")
+    assert not [p for p in tmp_path.rglob("*") if "pint" not in p.relative_to(tmp_path).parts]

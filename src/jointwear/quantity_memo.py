@@ -28,8 +28,9 @@ used only where the installed pint is the one that made it (its version and its
 definition files, compared byte for byte by digest) and the units module is the one it
 was made for; otherwise the memo begins empty. So a fresh install's first run in these
 units imports no pint (nor the ``dask.base`` that pint imports where dask is
-installed). With the memo turned off (an empty :data:`ENVIRONMENT`) there is no seed
-either: every text goes to pint.
+installed). With the memo turned off (an empty :data:`ENVIRONMENT`) nothing is read
+from or written to a cache folder; the seed, part of the package, is still read: a text
+in a unit the seed holds needs no pint, any other text goes to pint in every process.
 """
 
 from __future__ import annotations
@@ -149,10 +150,10 @@ def _memo() -> dict[str, dict]:
             data = json.loads((where / FILE_NAME).read_text(encoding="utf-8"))
         except (OSError, ValueError):
             data = None
-    if where is not None and (not isinstance(data, dict) or data.get("stamp") != stamp()):
+    # no folder (the memo turned off), no file yet, or a file of other code: the seed,
+    # which is the package's data, not the user's cache, and is never written back
+    if not isinstance(data, dict) or data.get("stamp") != stamp():
         data = {"units": _seed_units()}
-    elif not isinstance(data, dict):
-        data = {}
     return {
         part: data[part] if isinstance(data.get(part), dict) else {} for part in ("texts", "units")
     }
