@@ -90,9 +90,15 @@ def folder() -> Path | None:
 
 
 @cache
+def _units_source() -> bytes:
+    """The source of :mod:`jointwear.units` (both stamps hash it)."""
+    return UNITS_SOURCE.read_bytes()
+
+
+@cache
 def stamp() -> str:
     """What pint's answers depend on: the units module's source and pint's installed files."""
-    digest = hashlib.sha256(UNITS_SOURCE.read_bytes())
+    digest = hashlib.sha256(_units_source())
     spec = find_spec("pint")
     origin = Path(spec.origin) if spec is not None and spec.origin else None
     if origin is not None:
@@ -120,7 +126,7 @@ def seed_stamp() -> dict[str, str]:
             definitions.update((Path(spec.origin).parent / name).read_bytes())
     except (OSError, metadata.PackageNotFoundError):
         return {}
-    units = hashlib.sha256(UNITS_SOURCE.read_bytes()).hexdigest()[:32]
+    units = hashlib.sha256(_units_source()).hexdigest()[:32]
     return {"units": units, "pint": version, "definitions": definitions.hexdigest()[:32]}
 
 

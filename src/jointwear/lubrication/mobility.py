@@ -479,6 +479,23 @@ def leaving_the_wall(inner: ArrayLike) -> NDArray[np.bool_]:
     return (-np.pi + LEAVING_WALL < inner) & (inner < -LEAVING_WALL)
 
 
+def leaving_states(eps: FloatArray, direction: FloatArray) -> NDArray[np.bool_]:
+    """Which states lie on the leaving table: beyond ``eps = 0.9``
+    (:data:`LEAVING_START`) where the pin leaves the wall (:func:`leaving_the_wall`).
+
+    Parameters
+    ----------
+    eps : ndarray
+        Eccentricity ratio [-].
+    direction : ndarray
+        ``beta`` of the motion [rad].
+    """
+    leaving = eps > LEAVING_START
+    if np.any(leaving):
+        leaving[leaving] = leaving_the_wall(wall_direction(eps[leaving], direction[leaving])[0])
+    return leaving
+
+
 def leaving_log_gap(eps: ArrayLike) -> FloatArray:
     """The leaving table's ``s = -log10(1 - eps)``, held at its ends [-].
 
@@ -523,7 +540,7 @@ def leaving_finite(
     cavitation : {"half-Sommerfeld", "Reynolds"}
         The film's cavitation condition.
     """
-    leaving = (eps > LEAVING_START) & leaving_the_wall(wall_direction(eps, direction)[0])
+    leaving = leaving_states(eps, direction)
     if np.any(leaving):
         motion = leaving_direction(eps[leaving], direction[leaving])
         at = np.stack([leaving_log_gap(eps[leaving]), motion], axis=-1)

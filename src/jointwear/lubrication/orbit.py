@@ -86,6 +86,7 @@ from jointwear.lubrication.film import long_shape_near_wall, short_shape_scalar
 from jointwear.lubrication.mobility import (
     DIRECTION_NODES,
     FINITE_CAVITATION,
+    LEAVING_LOG_GAP_MIN,
     LEAVING_START,
     LEAVING_WALL,
     LOG_GAP_MAX,
@@ -99,6 +100,7 @@ from jointwear.lubrication.mobility import (
     from_wall,
     leaving_direction,
     leaving_log_gap,
+    leaving_states,
     leaving_the_wall,
     leaving_values,
     to_wall,
@@ -452,7 +454,6 @@ def leaving_shape_scalar(
         if model in FINITE_CAVITATION
         else None
     )
-    lowest, highest = leaving[0][0][3] if leaving else 0.0, WALL_LOG_GAP_MAX
 
     def shape(eps: float, beta: float) -> tuple[float, float] | None:
         if leaving is None or not eps > LEAVING_START:
@@ -462,7 +463,8 @@ def leaving_shape_scalar(
         inner = math.atan2(squeeze, root * math.cos(beta))
         if not -math.pi + LEAVING_WALL < inner < -LEAVING_WALL:
             return None
-        log_gap = min(max(-math.log10(max(1.0 - eps, 1e-300)), lowest), highest)
+        log_gap = -math.log10(max(1.0 - eps, 1e-300))
+        log_gap = min(max(log_gap, LEAVING_LOG_GAP_MIN), WALL_LOG_GAP_MAX)
         motion = math.asinh(math.cos(beta) / squeeze) / math.asinh(1.0 / (3.0 * root))
         scaled, angle = (float(bisplev(log_gap, motion, tck)) for tck in leaving)
         size = math.exp(scaled) / (squeeze * squeeze)
@@ -554,7 +556,7 @@ def leaving_shape(
     """``out`` with the finite bearing's :func:`leaving_shape_table` where the pin leaves
     the wall beyond ``eps = 0.9``, shape ``(2, ...)`` [-] (:func:`leaving_shape_scalar`).
     """
-    leaving = (eps > LEAVING_START) & leaving_the_wall(wall_direction(eps, beta)[0])
+    leaving = leaving_states(eps, beta)
     if np.any(leaving):
         scaled, angle = leaving_shape_table(model, ratio)
         at = (leaving_log_gap(eps[leaving]), leaving_direction(eps[leaving], beta[leaving]))
